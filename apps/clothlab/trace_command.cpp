@@ -1,0 +1,57 @@
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "apps/clothlab/commands.hpp"
+#include "sim/scene/scene_parser.hpp"
+#include "sim/solver.hpp"
+#include "sim/trace/trace_run.hpp"
+
+namespace clothlab::app {
+
+std::string replay_command(const std::string& scene, const std::vector<std::string>& overrides,
+                           double duration) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", duration);
+  std::string cmd = "clothlab trace '" + scene + "' --duration " + buf + " --out replay.csv";
+  for (const auto& o : overrides) cmd += " --set '" + o + "'";
+  return cmd;
+}
+
+int run_trace_command(const TraceArgs& args) {
+  Scene scene;
+  try {
+    scene = parse_scene_file(args.scene, args.overrides);
+  } catch (const SceneError& e) {
+    std::fprintf(stderr, "clothlab trace: %s\n", e.what());
+    return 2;
+  }
+  const auto solver = make_solver(scene);
+  const TraceSpec spec = scene.trace ? *scene.trace : default_trace(scene);
+  const bool doubles = scene.solver.precision == Precision::f64;
+  TraceRunResult r;
+  try {
+    r = run_trace(*solver, spec, scene.multi_cloth, doubles, args.duration, args.out);
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "clothlab trace: %s\n", e.what());
+    return 1;
+  }
+  if (r.divergence) {
+    std::fprintf(stderr, "clothlab trace: %s\n  no trace written; replay with: %s\n",
+                 r.divergence->message().c_str(),
+                 replay_command(args.scene, args.overrides, r.divergence->time).c_str());
+    return 1;
+  }
+  const double ms_per_step = r.steps > 0 ? 1e3 * r.step_seconds / r.steps : 0.0;
+  std::printf(
+      "trace: %.6g s simulated in %ld steps of %g s, %.4g ms/step (%s, %s, %d thread(s), %zu "
+      "vertices), final energy %.6g J (kinetic %.4g, elastic %.4g, gravity %.6g); wrote %s "
+      "(%ld steps)\n",
+      r.simulated_time, r.steps, solver->dt(), ms_per_step, to_string(scene.solver.integrator),
+      doubles ? "double" : "float", solver->threads(), solver->vertex_count(),
+      r.final_energy.total(), r.final_energy.kinetic, r.final_energy.elastic,
+      r.final_energy.gravity, args.out.c_str(), r.rows);
+  return 0;
+}
+
+}  // namespace clothlab::app

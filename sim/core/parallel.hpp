@@ -1,0 +1,41 @@
+// Deterministic OpenMP helpers. Work is cut into blocks of a fixed size that does not depend on
+// the thread count, and every vertex is computed by the same code path in the same order, so a
+// result is bit-identical for any number of threads (design.md: "same trace, bit for bit").
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+
+namespace clothlab {
+
+// Vertices per block: small enough that a block and its grid neighbours stay in L1/L2.
+inline constexpr std::size_t kBlockSize = 512;
+
+inline std::size_t block_count(std::size_t n) {
+  return (n + kBlockSize - 1) / kBlockSize;
+}
+
+// Calls fn(begin, end) for each block of [0, n); blocks run in parallel on `threads` threads.
+template <class Fn>
+void for_each_block(std::size_t n, int threads, Fn&& fn) {
+  const long blocks = static_cast<long>(block_count(n));
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1 && blocks > 1)
+  for (long b = 0; b < blocks; ++b) {
+    const std::size_t begin = static_cast<std::size_t>(b) * kBlockSize;
+    fn(begin, std::min(n, begin + kBlockSize));
+  }
+}
+
+// Calls fn(block, begin, end); used for reductions that write one partial result per block and
+// are summed afterwards in block order (deterministic, unlike an OpenMP reduction clause).
+template <class Fn>
+void for_each_block_indexed(std::size_t n, int threads, Fn&& fn) {
+  const long blocks = static_cast<long>(block_count(n));
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1 && blocks > 1)
+  for (long b = 0; b < blocks; ++b) {
+    const std::size_t begin = static_cast<std::size_t>(b) * kBlockSize;
+    fn(static_cast<std::size_t>(b), begin, std::min(n, begin + kBlockSize));
+  }
+}
+
+}  // namespace clothlab

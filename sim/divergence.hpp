@@ -1,0 +1,49 @@
+// Divergence detection: a run stops with a report instead of writing NaN. Two tests after every
+// step, both one pass over the vertices:
+//  - every position and velocity component is finite;
+//  - kinetic energy stays below kLimitFactor times the scene's energy scale: the initial
+//    mechanical energy plus what gravity, wind and pushes can plausibly feed in (a blow-up of the
+//    lattice shows up in kinetic energy first; elastic energy follows it).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sim/integrators/integrator.hpp"
+
+namespace clothlab {
+
+struct VertexRef {
+  int cloth = 0, i = 0, j = 0;
+};
+
+struct Divergence {
+  long step = 0;         // the step after which it was detected (1-based)
+  double time = 0.0;     // s, simulated time at that step
+  VertexRef vertex;      // the offending (or fastest) vertex
+  std::string quantity;  // e.g. "velocity.y = nan", "kinetic energy = 3.1e+09 J"
+  std::string message() const;
+};
+
+template <class T>
+class DivergenceMonitor {
+ public:
+  static constexpr double kLimitFactor = 1e3;
+
+  DivergenceMonitor(const Model<T>& m, const State<T>& initial, double initial_energy);
+  // Energy fed in from outside (a push): raises the allowance.
+  void add_energy(double joules) { scale_ += joules; }
+  double energy_scale() const { return scale_; }
+
+  // Returns true and fills `out` when the state has diverged. Allocates only on failure.
+  bool check(const Model<T>& m, const State<T>& s, long step, double time, int threads,
+             Divergence& out);
+
+ private:
+  double scale_ = 0.0;
+  std::vector<double> partials_;  // per-block: sum of coordinates, kinetic energy
+};
+
+VertexRef vertex_ref_of(const std::vector<ClothRange>& cloths, int index);
+
+}  // namespace clothlab

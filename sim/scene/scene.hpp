@@ -1,0 +1,104 @@
+// Scene: the plain data a scene file (TOML, version 1) is parsed into. Objects are built from it
+// afterwards (see sim/solver.hpp). Layout and keys: ../shared/design/design.md, README.md.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace clothlab {
+
+using Vec3d = std::array<double, 3>;
+
+// Where a value came from: a scene file position, or a --set argument (line 0, file holds the
+// argument text). Used by every error that names a value.
+struct SourceLoc {
+  std::string file;
+  int line = 0;
+  int column = 0;
+};
+
+struct SpringSpec {
+  std::string rule = "seed";  // the only rule so far: design.md "seed" rule
+  double stiffness = 800.0;   // N/m, k = stiffness * edge / rest_length
+  double damping = 0.0;       // N*s/m, along-spring damping
+};
+
+struct ClothSpec {
+  std::string shape = "grid";
+  std::array<double, 2> size{2.0, 2.0};   // metres along u and v
+  std::array<int, 2> resolution{32, 32};  // vertices along u and v, each >= 1
+  Vec3d origin{-1.0, 2.5, 0.0};           // world position of vertex (0, 0)
+  Vec3d u_axis{1.0, 0.0, 0.0};            // direction of increasing i (normalised on build)
+  Vec3d v_axis{0.0, -1.0, 0.0};           // direction of increasing j (normalised on build)
+  double mass = 1.0;                      // total kg, spread evenly over all vertices
+  std::vector<std::array<int, 2>> pins;   // (i, j) vertices held fixed
+  std::optional<SpringSpec> springs;      // per-cloth springs; else Scene::springs applies
+  std::string key;                        // key path prefix for messages: "cloth" or "cloth[1]"
+};
+
+struct WindSpec {
+  bool enabled = false;
+  Vec3d velocity{0.0, 0.0, 0.0};  // m/s, mean wind
+  double gust = 0.0;              // relative gust amplitude, >= 0 (0.5 = +-50 %)
+  std::uint64_t seed = 0;         // noise seed: the same seed gives the same gusts
+  double gust_period = 1.0;       // s, time scale of the gust noise, > 0
+  double coefficient = 1.0;       // kg/(m^2 s): F = coefficient * area * ((w - v) . n) n
+};
+
+struct ForceSpec {
+  Vec3d gravity{0.0, -9.81, 0.0};  // m/s^2
+  double drag = 0.0;               // N*s/m per vertex, F = -drag * v
+  WindSpec wind;
+};
+
+enum class IntegratorKind { explicit_euler, symplectic_euler, seed_hack, verlet, rk4 };
+enum class Precision { f32, f64 };
+
+struct SolverSpec {
+  IntegratorKind integrator = IntegratorKind::symplectic_euler;
+  double dt = 0.001;  // s, fixed step, > 0
+  int threads = 0;    // 0 = all cores
+  Precision precision = Precision::f32;
+};
+
+// A traced vertex: (cloth, i, j). cloth is 0 in the one-cloth form.
+struct TraceVertex {
+  int cloth = 0;
+  int i = 0;
+  int j = 0;
+};
+
+struct TraceSpec {
+  std::vector<TraceVertex> vertices;
+  bool position = true;
+  bool velocity = true;
+  bool force = true;
+  bool energy = true;
+  int every = 1;  // write every N steps, >= 1
+};
+
+struct Scene {
+  std::string file;  // path the scene was read from ("<string>" for in-memory text)
+  std::vector<ClothSpec> cloths;
+  bool multi_cloth = false;  // true for the [[cloth]] form: traces then name (cloth, i, j)
+  SpringSpec springs;
+  ForceSpec forces;
+  SolverSpec solver;
+  std::optional<TraceSpec> trace;  // absent: `clothlab trace` uses its documented default
+  // Source location of every value read, by key path ("solver.dt", "cloth[1].pins[2]").
+  std::map<std::string, SourceLoc> locations;
+
+  // The springs that apply to cloth c.
+  const SpringSpec& springs_of(std::size_t c) const {
+    return cloths[c].springs ? *cloths[c].springs : springs;
+  }
+};
+
+const char* to_string(IntegratorKind kind);
+std::optional<IntegratorKind> integrator_from_string(const std::string& name);
+
+}  // namespace clothlab

@@ -1,0 +1,605 @@
+// Scene parser: TOML text -> (apply --set overrides) -> typed read into Scene -> validate_scene.
+// The TOML layer (toml++) checks syntax; this file checks keys and types and records where each
+// value came from; validate.cpp checks ranges. Errors are SceneError, never a crash.
+#include "sim/scene/scene_parser.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <optional>
+#include <span>
+#include <sstream>
+#include <string>
+#include <utility>
+
+// GCC 12 at -O3 reports a false -Wrestrict inside std::string for `"text" + std::string(...)`
+// (GCC bug 105329); the message texts below are built that way throughout.
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ == 12
+#pragma GCC diagnostic ignored "-Wrestrict"
+#endif
+
+namespace clothlab {
+
+namespace {
+
+// Key paths whose value came from a --set argument, mapped to that argument ("--set k=v").
+using OverrideOrigins = std::map<std::string, std::string>;
+
+std::string join_key(const std::string& prefix, std::string_view name) {
+  return prefix.empty() ? std::string(name) : prefix + "." + std::string(name);
+}
+
+std::string trim(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string_view::npos) return {};
+  const auto last = text.find_last_not_of(" \t\r\n");
+  return std::string(text.substr(first, last - first + 1));
+}
+
+// ---------------------------------------------------------------------------------------------
+// --set overrides
+
+struct PathStep {
+  std::string name;
+  std::optional<std::size_t> index;  // "cloth[1]" -> name "cloth", index 1
+};
+
+bool is_bare_key_char(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+         c == '-';
+}
+
+// One dotted segment: a bare TOML key, optionally followed by one [N].
+std::optional<PathStep> parse_step(std::string_view text) {
+  PathStep step;
+  const auto bracket = text.find('[');
+  step.name = std::string(text.substr(0, bracket));
+  if (step.name.empty()) return std::nullopt;
+  for (char c : step.name)
+    if (!is_bare_key_char(c)) return std::nullopt;
+  if (bracket == std::string_view::npos) return step;
+  const std::string_view digits = text.substr(bracket + 1);
+  if (digits.size() < 2 || digits.back() != ']') return std::nullopt;
+  std::size_t index = 0;
+  for (char c : digits.substr(0, digits.size() - 1)) {
+    if (c < '0' || c > '9' || index > 1'000'000'000) return std::nullopt;
+    index = index * 10 + static_cast<std::size_t>(c - '0');
+  }
+  step.index = index;
+  return step;
+}
+
+std::vector<PathStep> parse_override_path(const std::string& path, const SourceLoc& loc) {
+  std::vector<PathStep> steps;
+  std::size_t start = 0;
+  while (true) {
+    const auto dot = path.find('.', start);
+    const auto segment = std::string_view(path).substr(start, dot - start);
+    auto step = parse_step(segment);
+    if (!step)
+      throw SceneError(loc, path,
+                       "malformed key path (expected names like solver.dt or cloth[1].mass)");
+    steps.push_back(std::move(*step));
+    if (dot == std::string::npos) return steps;
+    start = dot + 1;
+  }
+}
+
+// The value text as TOML ("0.002", "[1, 2]", "{ velocity = [1, 0, 0] }"); anything that does not
+// parse as one TOML value is taken as a plain string, so "--set solver.integrator=rk4" works.
+toml::table parse_override_value(const std::string& text) {
+  try {
+    toml::table parsed = toml::parse("v = " + text);
+    if (parsed.size() == 1 && parsed.contains("v")) return parsed;
+  } catch (const toml::parse_error&) {
+    // not TOML: fall through to a string
+  }
+  toml::table as_string;
+  as_string.insert("v", text);
+  return as_string;
+}
+
+// Records that key (and everything below it) now comes from arg.
+void record_origin(OverrideOrigins& origins, const std::string& key, const std::string& arg) {
+  for (auto it = origins.lower_bound(key); it != origins.end();) {
+    const std::string& k = it->first;
+    if (k.compare(0, key.size(), key) != 0) break;
+    const bool below = k.size() == key.size() || k[key.size()] == '.' || k[key.size()] == '[';
+    it = below ? origins.erase(it) : std::next(it);
+  }
+  origins[key] = arg;
+}
+
+class OverrideApplier {
+ public:
+  OverrideApplier(toml::table& root, OverrideOrigins& origins) : root_(root), origins_(origins) {}
+
+  void apply(const std::string& arg) {
+    const std::string origin = "--set " + arg;
+    const SourceLoc loc{origin, 0, 0};
+    const auto eq = arg.find('=');
+    if (eq == std::string::npos)
+      throw SceneError(loc, "", "expected key.path=value (e.g. solver.dt=0.0005)");
+    const std::string path = trim(std::string_view(arg).substr(0, eq));
+    if (path.empty()) throw SceneError(loc, "", "empty key path before '='");
+    const std::vector<PathStep> steps = parse_override_path(path, loc);
+    toml::table value = parse_override_value(trim(std::string_view(arg).substr(eq + 1)));
+    assign(steps, std::move(*value.get("v")), origin, loc);
+  }
+
+ private:
+  // Walks the path, creating missing tables (an unknown key so created is then rejected by the
+  // reader's unknown-key check, located at this --set), and stores the value at its end.
+  void assign(const std::vector<PathStep>& steps, toml::node&& value, const std::string& origin,
+              const SourceLoc& loc) {
+    toml::table* table = &root_;
+    std::string key;
+    for (std::size_t n = 0; n < steps.size(); ++n) {
+      const PathStep& step = steps[n];
+      const bool last = n + 1 == steps.size();
+      key = join_key(key, step.name);
+      toml::node* node = table->get(step.name);
+      if (!step.index) {
+        if (last) {
+          table->insert_or_assign(step.name, std::move(value));
+          record_origin(origins_, key, origin);
+          return;
+        }
+        if (!node) {
+          node = table->insert(step.name, toml::table{}).first->second.as_table();
+          record_origin(origins_, key, origin);
+        }
+        if (node->is_array())
+          throw SceneError(loc, key, "is an array; name one element as " + key + "[N]");
+        table = node->as_table();
+        if (!table) throw SceneError(loc, key, "is a single value, not a table");
+        continue;
+      }
+      toml::array* array = node ? node->as_array() : nullptr;
+      if (!array)
+        throw SceneError(loc, key,
+                         node && node->is_table()
+                             ? "is a single table, not an array; write " + key + ".name"
+                             : "is not an array in this scene, so [N] cannot index it");
+      const std::size_t index = *step.index;
+      if (index >= array->size())
+        throw SceneError(loc, key + "[" + std::to_string(index) + "]",
+                         "index out of range (" + key + " has " + std::to_string(array->size()) +
+                             " element" + (array->size() == 1 ? "" : "s") + ")");
+      key += "[" + std::to_string(index) + "]";
+      if (last) {
+        array->replace(array->cbegin() + static_cast<std::ptrdiff_t>(index), std::move(value));
+        record_origin(origins_, key, origin);
+        return;
+      }
+      table = array->get(index)->as_table();
+      if (!table) throw SceneError(loc, key, "is not a table");
+    }
+  }
+
+  toml::table& root_;
+  OverrideOrigins& origins_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Reading the TOML tree into a Scene
+
+std::string describe(const toml::node& node) {
+  switch (node.type()) {
+    case toml::node_type::string:
+      return "string \"" + *node.value<std::string>() + "\"";
+    case toml::node_type::integer:
+      return "integer " + std::to_string(*node.value<std::int64_t>());
+    case toml::node_type::floating_point: {
+      // "16.0", not "16": the point is what makes it a float.
+      std::string text = format_number(*node.value<double>());
+      if (text.find_first_not_of("-0123456789") == std::string::npos) text += ".0";
+      return "float " + text;
+    }
+    case toml::node_type::boolean:
+      return *node.value<bool>() ? "boolean true" : "boolean false";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::table:
+      return "a table";
+    default:
+      return "a date/time";
+  }
+}
+
+// A fixed list of key or value names.
+using Names = std::span<const std::string_view>;
+
+std::string list_names(Names names) {
+  std::string text;
+  for (std::string_view name : names) text += (text.empty() ? "" : ", ") + std::string(name);
+  return text;
+}
+
+constexpr std::string_view kTopKeys[] = {"cloth", "springs", "forces", "solver", "trace"};
+constexpr std::string_view kPlannedTopKeys[] = {"colliders", "render", "music", "mannequin"};
+constexpr std::string_view kClothKeys[] = {"shape",  "size", "resolution", "origin", "u_axis",
+                                           "v_axis", "mass", "pins",       "springs"};
+constexpr std::string_view kSpringKeys[] = {"rule", "stiffness", "damping"};
+constexpr std::string_view kForceKeys[] = {"gravity", "drag", "wind"};
+constexpr std::string_view kWindKeys[] = {"velocity", "gust", "seed", "gust_period", "coefficient"};
+constexpr std::string_view kSolverKeys[] = {"integrator", "dt", "threads", "precision", "backend"};
+constexpr std::string_view kTraceKeys[] = {"vertices", "fields", "every"};
+constexpr std::string_view kTraceFields[] = {"position", "velocity", "force", "energy"};
+
+class Reader {
+ public:
+  Reader(const OverrideOrigins& origins, Scene& scene) : origins_(origins), scene_(scene) {}
+
+  void read(const toml::table& root) {
+    check_top_keys(root);
+    if (const toml::node* node = root.get("springs"))
+      scene_.springs = read_springs(table(*node, "springs"), "springs", SpringSpec{});
+    read_cloths(root);
+    if (const toml::node* node = root.get("forces")) read_forces(table(*node, "forces"));
+    if (const toml::node* node = root.get("solver")) read_solver(table(*node, "solver"));
+    if (const toml::node* node = root.get("trace")) scene_.trace = read_trace(*node);
+  }
+
+ private:
+  // --- locations and errors ---
+
+  SourceLoc loc(const std::string& key, const toml::node& node) const {
+    for (std::string k = key; !k.empty();) {
+      if (auto it = origins_.find(k); it != origins_.end()) return SourceLoc{it->second, 0, 0};
+      const auto cut = k.find_last_of(".[");
+      if (cut == std::string::npos) break;
+      k.resize(cut);
+    }
+    const toml::source_position begin = node.source().begin;
+    return SourceLoc{scene_.file, static_cast<int>(begin.line), static_cast<int>(begin.column)};
+  }
+
+  void note(const std::string& key, const toml::node& node) {
+    scene_.locations[key] = loc(key, node);
+  }
+
+  [[noreturn]] void fail(const std::string& key, const toml::node& node,
+                         const std::string& message) const {
+    throw SceneError(loc(key, node), key, message);
+  }
+
+  // Calls read(node, key) for t[name] when present, after recording its location.
+  template <class F>
+  void field(const toml::table& t, const std::string& prefix, std::string_view name, F&& read) {
+    if (const toml::node* node = t.get(name)) {
+      const std::string key = join_key(prefix, name);
+      note(key, *node);
+      read(*node, key);
+    }
+  }
+
+  // For a key that should not be there, point at the key itself rather than at its value.
+  [[noreturn]] void fail_key(const std::string& path, const toml::key& name, const toml::node& node,
+                             const std::string& message) const {
+    SourceLoc where = loc(path, node);
+    const toml::source_position begin = name.source().begin;
+    if (where.line > 0 && begin.line > 0) {  // line 0: the key came from a --set
+      where.line = static_cast<int>(begin.line);
+      where.column = static_cast<int>(begin.column);
+    }
+    throw SceneError(where, path, message);
+  }
+
+  static bool contains(Names names, std::string_view name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+  }
+
+  void check_keys(const toml::table& t, const std::string& prefix, Names allowed) const {
+    for (const auto& [name, node] : t)
+      if (!contains(allowed, name.str()))
+        fail_key(join_key(prefix, name.str()), name, node,
+                 "unknown key (valid keys in " + prefix + ": " + list_names(allowed) + ")");
+  }
+
+  void check_top_keys(const toml::table& root) const {
+    for (const auto& [name, node] : root) {
+      const std::string key(name.str());
+      if (contains(kPlannedTopKeys, key))
+        fail_key(key, name, node,
+                 "is not supported yet (planned for a later version of the scene format)");
+      if (!contains(kTopKeys, key))
+        fail_key(key, name, node, "unknown top-level key (valid: " + list_names(kTopKeys) + ")");
+    }
+  }
+
+  // --- typed values ---
+
+  double number(const toml::node& node, const std::string& key) const {
+    double value = 0.0;
+    if (const auto* i = node.as_integer())
+      value = static_cast<double>(i->get());
+    else if (const auto* f = node.as_floating_point())
+      value = f->get();
+    else
+      fail(key, node, "expected a number, got " + describe(node));
+    if (!std::isfinite(value)) fail(key, node, "must be finite (got " + format_number(value) + ")");
+    return value;
+  }
+
+  // Floats are refused where an integer is meant (a resolution of 32.5 is a mistake).
+  std::int64_t integer(const toml::node& node, const std::string& key) const {
+    const auto* i = node.as_integer();
+    if (!i) fail(key, node, "expected an integer, got " + describe(node));
+    return i->get();
+  }
+
+  int small_integer(const toml::node& node, const std::string& key) const {
+    const std::int64_t value = integer(node, key);
+    if (value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max())
+      fail(key, node, "out of range (got " + std::to_string(value) + ")");
+    return static_cast<int>(value);
+  }
+
+  std::string text(const toml::node& node, const std::string& key) const {
+    const auto* s = node.as_string();
+    if (!s) fail(key, node, "expected a string, got " + describe(node));
+    return s->get();
+  }
+
+  const toml::table& table(const toml::node& node, const std::string& key) const {
+    const auto* t = node.as_table();
+    if (!t) fail(key, node, "expected a table, got " + describe(node));
+    return *t;
+  }
+
+  const toml::array& array(const toml::node& node, const std::string& key,
+                           std::optional<std::size_t> size = std::nullopt,
+                           std::string_view what = "") const {
+    const auto* a = node.as_array();
+    if (!a) fail(key, node, "expected an array" + std::string(what) + ", got " + describe(node));
+    if (size && a->size() != *size)
+      fail(key, node,
+           "expected " + std::to_string(*size) + " elements" + std::string(what) + ", got " +
+               std::to_string(a->size()));
+    return *a;
+  }
+
+  template <std::size_t N>
+  std::array<double, N> numbers(const toml::node& node, const std::string& key) const {
+    const toml::array& a = array(node, key, N, " (numbers)");
+    std::array<double, N> out{};
+    for (std::size_t n = 0; n < N; ++n)
+      out[n] = number(*a.get(n), key + "[" + std::to_string(n) + "]");
+    return out;
+  }
+
+  // [i, j] pairs, and [c, i, j] triples for trace vertices.
+  std::vector<int> index_tuple(const toml::node& node, const std::string& key, std::size_t min,
+                               std::size_t max, std::string_view form) const {
+    const auto* a = node.as_array();
+    if (!a || a->size() < min || a->size() > max)
+      fail(key, node,
+           "expected " + std::string(form) + ", got " + describe(node) +
+               (a ? " of " + std::to_string(a->size()) : std::string()));
+    std::vector<int> out;
+    for (std::size_t n = 0; n < a->size(); ++n)
+      out.push_back(small_integer(*a->get(n), key + "[" + std::to_string(n) + "]"));
+    return out;
+  }
+
+  // --- sections ---
+
+  void read_cloths(const toml::table& root) {
+    const toml::node* node = root.get("cloth");
+    if (!node) return;  // validate_scene reports the missing cloth
+    note("cloth", *node);
+    if (const toml::table* one = node->as_table()) {
+      scene_.multi_cloth = false;
+      scene_.cloths.push_back(read_cloth(*one, "cloth"));
+      return;
+    }
+    const toml::array& many = array(*node, "cloth", std::nullopt, " of tables ([[cloth]])");
+    if (many.empty()) fail("cloth", *node, "the scene has no cloth; [[cloth]] list is empty");
+    scene_.multi_cloth = true;
+    for (std::size_t c = 0; c < many.size(); ++c) {
+      const std::string key = "cloth[" + std::to_string(c) + "]";
+      note(key, *many.get(c));
+      scene_.cloths.push_back(read_cloth(table(*many.get(c), key), key));
+    }
+  }
+
+  ClothSpec read_cloth(const toml::table& t, const std::string& key) {
+    check_keys(t, key, kClothKeys);
+    ClothSpec cloth;
+    cloth.key = key;
+    field(t, key, "shape", [&](auto& n, auto& k) { cloth.shape = text(n, k); });
+    field(t, key, "size", [&](auto& n, auto& k) { cloth.size = numbers<2>(n, k); });
+    field(t, key, "resolution", [&](auto& n, auto& k) {
+      const toml::array& a = array(n, k, 2, " (integers)");
+      for (std::size_t d = 0; d < 2; ++d)
+        cloth.resolution[d] = small_integer(*a.get(d), k + "[" + std::to_string(d) + "]");
+    });
+    field(t, key, "origin", [&](auto& n, auto& k) { cloth.origin = numbers<3>(n, k); });
+    field(t, key, "u_axis", [&](auto& n, auto& k) { cloth.u_axis = numbers<3>(n, k); });
+    field(t, key, "v_axis", [&](auto& n, auto& k) { cloth.v_axis = numbers<3>(n, k); });
+    field(t, key, "mass", [&](auto& n, auto& k) { cloth.mass = number(n, k); });
+    field(t, key, "pins", [&](auto& n, auto& k) { cloth.pins = read_pins(n, k); });
+    // A cloth's own springs start from the top-level [springs], so they need name only what
+    // differs.
+    field(t, key, "springs",
+          [&](auto& n, auto& k) { cloth.springs = read_springs(table(n, k), k, scene_.springs); });
+    return cloth;
+  }
+
+  std::vector<std::array<int, 2>> read_pins(const toml::node& node, const std::string& key) {
+    const toml::array& a = array(node, key, std::nullopt, " of [i, j] pairs");
+    std::vector<std::array<int, 2>> pins;
+    for (std::size_t n = 0; n < a.size(); ++n) {
+      const std::string k = key + "[" + std::to_string(n) + "]";
+      note(k, *a.get(n));
+      const std::vector<int> ij = index_tuple(*a.get(n), k, 2, 2, "an [i, j] pair of integers");
+      pins.push_back({ij[0], ij[1]});
+    }
+    return pins;
+  }
+
+  SpringSpec read_springs(const toml::table& t, const std::string& key, SpringSpec springs) {
+    check_keys(t, key, kSpringKeys);
+    field(t, key, "rule", [&](auto& n, auto& k) { springs.rule = text(n, k); });
+    field(t, key, "stiffness", [&](auto& n, auto& k) { springs.stiffness = number(n, k); });
+    field(t, key, "damping", [&](auto& n, auto& k) { springs.damping = number(n, k); });
+    return springs;
+  }
+
+  void read_forces(const toml::table& t) {
+    const std::string key = "forces";
+    check_keys(t, key, kForceKeys);
+    ForceSpec& f = scene_.forces;
+    field(t, key, "gravity", [&](auto& n, auto& k) { f.gravity = numbers<3>(n, k); });
+    field(t, key, "drag", [&](auto& n, auto& k) { f.drag = number(n, k); });
+    field(t, key, "wind", [&](auto& n, auto& k) { f.wind = read_wind(table(n, k), k); });
+  }
+
+  WindSpec read_wind(const toml::table& t, const std::string& key) {
+    check_keys(t, key, kWindKeys);
+    WindSpec wind;
+    wind.enabled = true;
+    if (!t.contains("velocity"))
+      fail(key + ".velocity", t, "missing (wind needs velocity = [x, y, z] in m/s)");
+    field(t, key, "velocity", [&](auto& n, auto& k) { wind.velocity = numbers<3>(n, k); });
+    field(t, key, "gust", [&](auto& n, auto& k) { wind.gust = number(n, k); });
+    field(t, key, "seed", [&](auto& n, auto& k) {
+      const std::int64_t seed = integer(n, k);
+      if (seed < 0) fail(k, n, "must be >= 0 (got " + std::to_string(seed) + ")");
+      wind.seed = static_cast<std::uint64_t>(seed);
+    });
+    field(t, key, "gust_period", [&](auto& n, auto& k) { wind.gust_period = number(n, k); });
+    field(t, key, "coefficient", [&](auto& n, auto& k) { wind.coefficient = number(n, k); });
+    return wind;
+  }
+
+  void read_solver(const toml::table& t) {
+    const std::string key = "solver";
+    check_keys(t, key, kSolverKeys);
+    SolverSpec& s = scene_.solver;
+    field(t, key, "integrator", [&](auto& n, auto& k) { s.integrator = read_integrator(n, k); });
+    field(t, key, "dt", [&](auto& n, auto& k) { s.dt = number(n, k); });
+    field(t, key, "threads", [&](auto& n, auto& k) { s.threads = small_integer(n, k); });
+    field(t, key, "precision", [&](auto& n, auto& k) {
+      const std::string p = text(n, k);
+      if (p != "float" && p != "double")
+        fail(k, n, "unknown precision \"" + p + "\" (valid: float, double)");
+      s.precision = p == "float" ? Precision::f32 : Precision::f64;
+    });
+    field(t, key, "backend", [&](auto& n, auto& k) {
+      const std::string b = text(n, k);
+      if (b == "gpu") fail(k, n, "backend \"gpu\" is not supported yet (valid: cpu)");
+      if (b != "cpu") fail(k, n, "unknown backend \"" + b + "\" (valid: cpu)");
+    });
+  }
+
+  IntegratorKind read_integrator(const toml::node& node, const std::string& key) const {
+    const std::string name = text(node, key);
+    if (auto kind = integrator_from_string(name)) return *kind;
+    std::string valid;
+    for (auto k = IntegratorKind::explicit_euler; k <= IntegratorKind::rk4;
+         k = static_cast<IntegratorKind>(static_cast<int>(k) + 1))
+      valid += (valid.empty() ? "" : ", ") + std::string(to_string(k));
+    fail(key, node, "unknown integrator \"" + name + "\" (valid: " + valid + ")");
+  }
+
+  TraceSpec read_trace(const toml::node& node) {
+    const std::string key = "trace";
+    note(key, node);
+    const toml::table& t = table(node, key);
+    check_keys(t, key, kTraceKeys);
+    TraceSpec trace;
+    field(t, key, "vertices",
+          [&](auto& n, auto& k) { trace.vertices = read_trace_vertices(n, k); });
+    field(t, key, "fields", [&](auto& n, auto& k) { read_trace_fields(n, k, trace); });
+    field(t, key, "every", [&](auto& n, auto& k) { trace.every = small_integer(n, k); });
+    return trace;
+  }
+
+  // [i, j] names a vertex of cloth 0; [c, i, j] one of cloth c (the multi-cloth form).
+  std::vector<TraceVertex> read_trace_vertices(const toml::node& node, const std::string& key) {
+    const bool multi = scene_.multi_cloth;
+    const std::string_view form = multi ? "[c, i, j] or [i, j]" : "[i, j]";
+    const toml::array& a = array(node, key, std::nullopt, " of " + std::string(form) + " vertices");
+    std::vector<TraceVertex> vertices;
+    for (std::size_t n = 0; n < a.size(); ++n) {
+      const std::string k = key + "[" + std::to_string(n) + "]";
+      note(k, *a.get(n));
+      const std::vector<int> v =
+          index_tuple(*a.get(n), k, 2, multi ? 3 : 2, std::string(form) + " of integers");
+      vertices.push_back(v.size() == 2 ? TraceVertex{0, v[0], v[1]}
+                                       : TraceVertex{v[0], v[1], v[2]});
+    }
+    return vertices;
+  }
+
+  void read_trace_fields(const toml::node& node, const std::string& key, TraceSpec& trace) {
+    const toml::array& a = array(node, key, std::nullopt, " of field names");
+    if (a.empty()) fail(key, node, "name at least one of " + list_names(kTraceFields));
+    trace.position = trace.velocity = trace.force = trace.energy = false;
+    for (std::size_t n = 0; n < a.size(); ++n) {
+      const std::string k = key + "[" + std::to_string(n) + "]";
+      const std::string name = text(*a.get(n), k);
+      bool* flag = name == "position"   ? &trace.position
+                   : name == "velocity" ? &trace.velocity
+                   : name == "force"    ? &trace.force
+                   : name == "energy"   ? &trace.energy
+                                        : nullptr;
+      if (!flag)
+        fail(k, *a.get(n),
+             "unknown field \"" + name + "\" (valid: " + list_names(kTraceFields) + ")");
+      if (*flag) fail(k, *a.get(n), "field \"" + name + "\" is listed twice");
+      *flag = true;
+    }
+  }
+
+  const OverrideOrigins& origins_;
+  Scene& scene_;
+};
+
+}  // namespace
+
+Scene parse_scene_string(std::string_view toml_text, const std::string& name,
+                         const std::vector<std::string>& overrides) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, name);
+  } catch (const toml::parse_error& error) {
+    const toml::source_position at = error.source().begin;
+    throw SceneError(SourceLoc{name, static_cast<int>(at.line), static_cast<int>(at.column)}, "",
+                     "TOML syntax error: " + std::string(error.description()));
+  }
+  OverrideOrigins origins;
+  OverrideApplier applier(root, origins);
+  for (const std::string& arg : overrides) applier.apply(arg);
+
+  Scene scene;
+  scene.file = name;
+  Reader(origins, scene).read(root);
+  validate_scene(scene);
+  return scene;
+}
+
+Scene parse_scene_file(const std::string& path, const std::vector<std::string>& overrides) {
+  const SourceLoc loc{path, 0, 0};
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw SceneError(loc, "", "is a directory, not a scene file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw SceneError(loc, "", std::string("cannot open scene file (") + std::strerror(errno) + ")");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw SceneError(loc, "", "cannot read scene file");
+  return parse_scene_string(text.str(), path, overrides);
+}
+
+}  // namespace clothlab

@@ -1,0 +1,214 @@
+// Range and consistency checks on a Scene. Types were checked by the parser; this file holds the
+// rules on values, so that a Scene built in code (tests, benchmarks) is checked the same way.
+#include "sim/scene/validate.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <set>
+#include <string>
+#include <tuple>
+#include <utility>
+
+// GCC 12 at -O3 reports a false -Wrestrict inside std::string for `"text" + std::string(...)`
+// (GCC bug 105329); the message texts below are built that way throughout.
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ == 12
+#pragma GCC diagnostic ignored "-Wrestrict"
+#endif
+
+namespace clothlab {
+
+namespace {
+
+constexpr std::int64_t kMaxVertices = 16'000'000;
+constexpr int kMaxThreads = 1024;
+constexpr double kMaxDt = 1.0;
+constexpr double kOrthogonalityTolerance = 1e-6;
+
+class Validator {
+ public:
+  explicit Validator(const Scene& scene) : scene_(scene) {}
+
+  void run() {
+    check_cloth_count();
+    check_springs(scene_.springs, "springs");
+    for (const ClothSpec& cloth : scene_.cloths) check_cloth(cloth);
+    check_forces();
+    check_solver();
+    if (scene_.trace) check_trace(*scene_.trace);
+  }
+
+ private:
+  // The location of key, or of its nearest parent that has one ("forces.wind.gust" falls back
+  // to "forces.wind" when gust took its default).
+  SourceLoc where(std::string key) const {
+    while (!key.empty()) {
+      if (auto it = scene_.locations.find(key); it != scene_.locations.end()) return it->second;
+      const auto cut = key.find_last_of(".[");
+      if (cut == std::string::npos) break;
+      key.resize(cut);
+    }
+    return SourceLoc{scene_.file, 0, 0};
+  }
+
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const {
+    throw SceneError(where(key), key, message);
+  }
+
+  void finite(const std::string& key, double value) const {
+    if (!std::isfinite(value)) fail(key, "must be finite (got " + format_number(value) + ")");
+  }
+  void positive(const std::string& key, double value) const {
+    finite(key, value);
+    if (!(value > 0.0)) fail(key, "must be > 0 (got " + format_number(value) + ")");
+  }
+  void non_negative(const std::string& key, double value) const {
+    finite(key, value);
+    if (!(value >= 0.0)) fail(key, "must be >= 0 (got " + format_number(value) + ")");
+  }
+  void finite3(const std::string& key, const Vec3d& v) const {
+    for (double x : v) finite(key, x);
+  }
+
+  void check_cloth_count() const {
+    if (scene_.cloths.empty())
+      fail("cloth", "the scene has no cloth; add a [cloth] table or [[cloth]] tables");
+    if (!scene_.multi_cloth && scene_.cloths.size() != 1)
+      fail("cloth", "the one-cloth form ([cloth]) holds exactly one cloth");
+  }
+
+  void check_springs(const SpringSpec& springs, const std::string& key) const {
+    if (springs.rule != "seed")
+      fail(key + ".rule", "unknown spring rule \"" + springs.rule + "\" (valid: seed)");
+    non_negative(key + ".stiffness", springs.stiffness);
+    non_negative(key + ".damping", springs.damping);
+  }
+
+  void check_cloth(const ClothSpec& cloth) const {
+    const std::string& k = cloth.key;
+    if (cloth.shape != "grid") {
+      const bool planned = cloth.shape == "tube" || cloth.shape == "mesh";
+      fail(k + ".shape", "shape \"" + cloth.shape + "\" is " +
+                             (planned ? "not supported yet" : "unknown") + " (valid: grid)");
+    }
+    for (double s : cloth.size) positive(k + ".size", s);
+    check_resolution(cloth);
+    check_axes(cloth);
+    positive(k + ".mass", cloth.mass);
+    check_pins(cloth);
+    if (cloth.springs) check_springs(*cloth.springs, k + ".springs");
+  }
+
+  void check_resolution(const ClothSpec& cloth) const {
+    const auto [nu, nv] = cloth.resolution;
+    const std::string key = cloth.key + ".resolution";
+    if (nu < 1 || nv < 1)
+      fail(key, "each count must be >= 1 (got [" + std::to_string(nu) + ", " + std::to_string(nv) +
+                    "])");
+    const std::int64_t vertices = std::int64_t{nu} * nv;
+    if (vertices > kMaxVertices)
+      fail(key, std::to_string(nu) + " x " + std::to_string(nv) + " = " + std::to_string(vertices) +
+                    " vertices; at most " + std::to_string(kMaxVertices) + " are allowed");
+  }
+
+  void check_axes(const ClothSpec& cloth) const {
+    finite3(cloth.key + ".origin", cloth.origin);
+    finite3(cloth.key + ".u_axis", cloth.u_axis);
+    finite3(cloth.key + ".v_axis", cloth.v_axis);
+    const double lu = length(cloth.u_axis);
+    const double lv = length(cloth.v_axis);
+    if (lu == 0.0) fail(cloth.key + ".u_axis", "must not be the zero vector");
+    if (lv == 0.0) fail(cloth.key + ".v_axis", "must not be the zero vector");
+    const Vec3d& u = cloth.u_axis;
+    const Vec3d& v = cloth.v_axis;
+    const double cosine = (u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) / (lu * lv);
+    if (!(std::abs(cosine) < kOrthogonalityTolerance))
+      fail(cloth.key + ".v_axis",
+           "must be orthogonal to u_axis (cos angle = " + format_number(cosine) + ")");
+  }
+
+  static double length(const Vec3d& v) {
+    return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  }
+
+  // Pins name vertices inside the grid, once each, and leave at least one vertex free (a fully
+  // pinned cloth has nothing to simulate and is almost certainly a typo).
+  void check_pins(const ClothSpec& cloth) const {
+    const auto [nu, nv] = cloth.resolution;
+    std::set<std::pair<int, int>> seen;
+    for (std::size_t n = 0; n < cloth.pins.size(); ++n) {
+      const auto [i, j] = cloth.pins[n];
+      const std::string key = cloth.key + ".pins[" + std::to_string(n) + "]";
+      const std::string pin = "[" + std::to_string(i) + ", " + std::to_string(j) + "]";
+      if (i < 0 || i >= nu || j < 0 || j >= nv)
+        fail(key, "pin " + pin + " is outside the " + std::to_string(nu) + " x " +
+                      std::to_string(nv) + " grid (0 <= i < " + std::to_string(nu) + ", 0 <= j < " +
+                      std::to_string(nv) + ")");
+      if (!seen.emplace(i, j).second) fail(key, "pin " + pin + " is listed twice");
+    }
+    if (static_cast<std::int64_t>(seen.size()) >= std::int64_t{nu} * nv)
+      fail(cloth.key + ".pins", "every vertex is pinned; leave at least one free");
+  }
+
+  void check_forces() const {
+    const ForceSpec& f = scene_.forces;
+    finite3("forces.gravity", f.gravity);
+    non_negative("forces.drag", f.drag);
+    if (!f.wind.enabled) return;
+    finite3("forces.wind.velocity", f.wind.velocity);
+    non_negative("forces.wind.gust", f.wind.gust);
+    positive("forces.wind.gust_period", f.wind.gust_period);
+    non_negative("forces.wind.coefficient", f.wind.coefficient);
+  }
+
+  void check_solver() const {
+    const SolverSpec& s = scene_.solver;
+    if (!to_string_known(s.integrator)) fail("solver.integrator", "unknown integrator");
+    positive("solver.dt", s.dt);
+    if (s.dt > kMaxDt)
+      fail("solver.dt",
+           "must be <= " + format_number(kMaxDt) + " s (got " + format_number(s.dt) + ")");
+    if (s.threads < 0 || s.threads > kMaxThreads)
+      fail("solver.threads", "must be between 0 (all cores) and " + std::to_string(kMaxThreads) +
+                                 " (got " + std::to_string(s.threads) + ")");
+    if (s.precision != Precision::f32 && s.precision != Precision::f64)
+      fail("solver.precision", "must be \"float\" or \"double\"");
+  }
+
+  static bool to_string_known(IntegratorKind kind) {
+    return integrator_from_string(to_string(kind)).has_value();
+  }
+
+  void check_trace(const TraceSpec& trace) const {
+    std::set<std::tuple<int, int, int>> seen;
+    for (std::size_t n = 0; n < trace.vertices.size(); ++n)
+      check_trace_vertex(trace.vertices[n], "trace.vertices[" + std::to_string(n) + "]", seen);
+    if (!(trace.position || trace.velocity || trace.force || trace.energy))
+      fail("trace.fields", "name at least one of position, velocity, force, energy");
+    if (trace.every < 1)
+      fail("trace.every", "must be >= 1 (got " + std::to_string(trace.every) + ")");
+  }
+
+  void check_trace_vertex(const TraceVertex& v, const std::string& key,
+                          std::set<std::tuple<int, int, int>>& seen) const {
+    const int cloths = static_cast<int>(scene_.cloths.size());
+    if (v.cloth < 0 || v.cloth >= cloths)
+      fail(key, "cloth index " + std::to_string(v.cloth) + " is out of range (the scene has " +
+                    std::to_string(cloths) + " cloth" + (cloths == 1 ? "" : "s") + ")");
+    const auto [nu, nv] = scene_.cloths[static_cast<std::size_t>(v.cloth)].resolution;
+    if (v.i < 0 || v.i >= nu || v.j < 0 || v.j >= nv)
+      fail(key, "vertex [" + std::to_string(v.i) + ", " + std::to_string(v.j) +
+                    "] is outside the " + std::to_string(nu) + " x " + std::to_string(nv) +
+                    " grid of " + scene_.cloths[static_cast<std::size_t>(v.cloth)].key);
+    if (!seen.emplace(v.cloth, v.i, v.j).second) fail(key, "vertex is listed twice");
+  }
+
+  const Scene& scene_;
+};
+
+}  // namespace
+
+void validate_scene(const Scene& scene) {
+  Validator(scene).run();
+}
+
+}  // namespace clothlab

@@ -1,0 +1,171 @@
+#include "sim/solver.hpp"
+
+#include <omp.h>
+
+#include <cmath>
+
+#include "sim/solver_impl.hpp"
+
+namespace clothlab {
+namespace {
+
+int resolve_threads(int requested) {
+  return requested > 0 ? requested : omp_get_max_threads();
+}
+
+template <class T>
+State<T> initial_state(const Model<T>& m) {
+  State<T> s;
+  s.pos = m.rest_positions;
+  s.vel.resize(m.n);
+  return s;
+}
+
+template <class T>
+double initial_energy(const Model<T>& m) {
+  std::vector<double> partials;
+  return compute_energy(m, initial_state(m), partials, 1).total();
+}
+
+}  // namespace
+
+template <class T>
+SolverT<T>::SolverT(const Scene& scene)
+    : model_(build_model<T>(scene)),
+      state_(initial_state(model_)),
+      dt_(scene.solver.dt),
+      threads_(resolve_threads(scene.solver.threads)),
+      integrator_(make_integrator<T>(scene.solver.integrator, model_.n)),
+      monitor_(model_, state_, initial_energy(model_)) {
+  workspace_.resize(model_);
+  force_field_.resize(model_.n);
+}
+
+template <class T>
+AdvanceResult SolverT<T>::advance(double duration) {
+  const double wanted = pending_ + duration;
+  // The relative margin absorbs round-off in wanted / dt (1.0 / 0.001 is 999.99...).
+  const auto count = static_cast<long>(std::floor(wanted / dt_ * (1.0 + 1e-12)));
+  pending_ = std::max(0.0, wanted - static_cast<double>(count) * dt_);
+  return step(count);
+}
+
+template <class T>
+AdvanceResult SolverT<T>::step(long count) {
+  AdvanceResult result;
+  if (diverged_) {
+    result.divergence = diverged_;
+    return result;
+  }
+  const System<T> sys{model_, workspace_, threads_};
+  const T dt = static_cast<T>(dt_);
+  Divergence report;
+  for (long k = 0; k < count; ++k) {
+    integrator_->step(sys, state_, time(), dt);
+    ++steps_;
+    ++result.steps;
+    if (monitor_.check(model_, state_, steps_, time(), threads_, report)) {
+      diverged_ = report;
+      result.divergence = report;
+      break;
+    }
+  }
+  return result;
+}
+
+template <class T>
+int SolverT<T>::vertex_index(const VertexRef& v) const {
+  const ClothRange& c = model_.cloths[static_cast<std::size_t>(v.cloth)];
+  return c.offset + v.i + v.j * c.nu;
+}
+
+template <class T>
+void SolverT<T>::update_force_field() {
+  compute_forces(model_, time(), state_.pos, state_.vel, force_field_, workspace_, threads_);
+}
+
+template <class T>
+Energy SolverT<T>::energy() {
+  return compute_energy(model_, state_, energy_partials_, threads_);
+}
+
+template <class T>
+void SolverT<T>::apply_impulse(const Vec3d& center, double radius, const Vec3d& impulse) {
+  double weight_mass = 0.0;  // sum of w_i m_i
+  const double r2max = radius * radius;
+  auto weight = [&](std::size_t i) {
+    if (model_.inv_mass[i] == T(0)) return 0.0;
+    const Vec3d p = get(state_.pos, static_cast<int>(i));
+    const double r2 = (p[0] - center[0]) * (p[0] - center[0]) +
+                      (p[1] - center[1]) * (p[1] - center[1]) +
+                      (p[2] - center[2]) * (p[2] - center[2]);
+    if (r2 >= r2max) return 0.0;
+    const double q = 1.0 - r2 / r2max;
+    return q * q;
+  };
+  for (std::size_t i = 0; i < model_.n; ++i) weight_mass += weight(i) * double(model_.mass[i]);
+
+  std::vector<double> w(model_.n, 0.0);
+  if (weight_mass > 0.0) {
+    for (std::size_t i = 0; i < model_.n; ++i) w[i] = weight(i);
+  } else {  // nothing in reach: the nearest free vertex takes the whole impulse
+    double best = INFINITY;
+    std::size_t nearest = model_.n;
+    for (std::size_t i = 0; i < model_.n; ++i) {
+      if (model_.inv_mass[i] == T(0)) continue;
+      const Vec3d p = get(state_.pos, static_cast<int>(i));
+      const double r2 = (p[0] - center[0]) * (p[0] - center[0]) +
+                        (p[1] - center[1]) * (p[1] - center[1]) +
+                        (p[2] - center[2]) * (p[2] - center[2]);
+      if (r2 < best) best = r2, nearest = i;
+    }
+    if (nearest == model_.n) return;
+    w[nearest] = 1.0;
+    weight_mass = double(model_.mass[nearest]);
+  }
+  // dv_i = J w_i / sum(w m): sum m_i dv_i = J. The energy it adds raises the divergence allowance.
+  double added = 0.0;
+  for (std::size_t i = 0; i < model_.n; ++i) {
+    if (w[i] == 0.0) continue;
+    for (int a = 0; a < 3; ++a) {
+      const double dv = impulse[a] * w[i] / weight_mass;
+      const double v0 = state_.vel.axis(a)[i];
+      state_.vel.axis(a)[i] = static_cast<T>(v0 + dv);
+      added += 0.5 * double(model_.mass[i]) * ((v0 + dv) * (v0 + dv) - v0 * v0);
+    }
+  }
+  monitor_.add_energy(std::abs(added));
+  integrator_->invalidate();
+}
+
+template <class T>
+void SolverT<T>::set_threads(int threads) {
+  threads_ = resolve_threads(threads);
+}
+
+template <class T>
+void SolverT<T>::reset() {
+  state_ = initial_state(model_);
+  steps_ = 0;
+  pending_ = 0.0;
+  diverged_.reset();
+  integrator_->invalidate();
+}
+
+template <class T>
+void SolverT<T>::state_changed() {
+  integrator_->invalidate();
+  // Whatever was written is the caller's input: its energy joins the divergence allowance.
+  const Energy e = energy();
+  monitor_.add_energy(std::abs(e.kinetic) + std::abs(e.elastic));
+}
+
+template class SolverT<float>;
+template class SolverT<double>;
+
+std::unique_ptr<Solver> make_solver(const Scene& scene) {
+  if (scene.solver.precision == Precision::f64) return std::make_unique<SolverT<double>>(scene);
+  return std::make_unique<SolverT<float>>(scene);
+}
+
+}  // namespace clothlab

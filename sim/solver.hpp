@@ -1,0 +1,60 @@
+// The solver as the rest of ClothLab sees it: built from a validated Scene, advanced by a
+// simulated duration (never by wall-clock time), read through plain values. The scalar type
+// (float or double, the scene's solver.precision) is hidden behind this interface.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "sim/divergence.hpp"
+#include "sim/energy.hpp"
+#include "sim/scene/scene.hpp"
+
+namespace clothlab {
+
+struct AdvanceResult {
+  long steps = 0;                        // steps taken by this call
+  std::optional<Divergence> divergence;  // set when the run stopped on divergence
+  bool ok() const { return !divergence; }
+};
+
+class Solver {
+ public:
+  virtual ~Solver() = default;
+
+  // Runs every whole step that fits into the time asked for plus the remainder carried from the
+  // previous call, and carries the new remainder: calling advance(1/30) thirty times and
+  // advance(1) once take the same steps. Stops early on divergence.
+  virtual AdvanceResult advance(double duration) = 0;
+  // Runs exactly `count` steps (or until divergence).
+  virtual AdvanceResult step(long count) = 0;
+
+  virtual double time() const = 0;  // s: steps taken * dt
+  virtual long step_count() const = 0;
+  virtual double dt() const = 0;
+  virtual std::size_t vertex_count() const = 0;
+  virtual std::size_t spring_count() const = 0;
+  virtual int vertex_index(const VertexRef& v) const = 0;
+  virtual VertexRef vertex_ref(int index) const = 0;
+
+  virtual Vec3d position(int vertex) const = 0;
+  virtual Vec3d velocity(int vertex) const = 0;
+  // Fills the force field at the current state; only called when something displays, probes or
+  // traces forces, so a plain run never pays for it.
+  virtual void update_force_field() = 0;
+  virtual Vec3d force(int vertex) const = 0;  // from the last update_force_field()
+  virtual Energy energy() = 0;
+
+  // A push (the window's P key): adds momentum `impulse` (N*s) to the free vertices within
+  // `radius` of `center`, weighted by (1 - r^2/R^2)^2 and normalised so the total momentum
+  // change is exactly `impulse`; with no free vertex in reach the nearest free vertex takes it.
+  virtual void apply_impulse(const Vec3d& center, double radius, const Vec3d& impulse) = 0;
+
+  virtual void set_threads(int threads) = 0;  // 0 = all cores
+  virtual int threads() const = 0;
+  virtual void reset() = 0;  // back to the built state at t = 0
+};
+
+std::unique_ptr<Solver> make_solver(const Scene& scene);
+
+}  // namespace clothlab

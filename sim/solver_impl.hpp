@@ -1,0 +1,64 @@
+// SolverT<T>: the Solver for one scalar type. Exposed (rather than hidden in solver.cpp) so tests
+// and benchmarks can reach the state arrays directly.
+#pragma once
+
+#include <vector>
+
+#include "sim/solver.hpp"
+
+namespace clothlab {
+
+template <class T>
+class SolverT final : public Solver {
+ public:
+  explicit SolverT(const Scene& scene);
+
+  AdvanceResult advance(double duration) override;
+  AdvanceResult step(long count) override;
+  double time() const override { return static_cast<double>(steps_) * dt_; }
+  long step_count() const override { return steps_; }
+  double dt() const override { return dt_; }
+  std::size_t vertex_count() const override { return model_.n; }
+  std::size_t spring_count() const override { return model_.springs.size(); }
+  int vertex_index(const VertexRef& v) const override;
+  VertexRef vertex_ref(int index) const override { return vertex_ref_of(model_.cloths, index); }
+  Vec3d position(int vertex) const override { return get(state_.pos, vertex); }
+  Vec3d velocity(int vertex) const override { return get(state_.vel, vertex); }
+  void update_force_field() override;
+  Vec3d force(int vertex) const override { return get(force_field_, vertex); }
+  Energy energy() override;
+  void apply_impulse(const Vec3d& center, double radius, const Vec3d& impulse) override;
+  void set_threads(int threads) override;
+  int threads() const override { return threads_; }
+  void reset() override;
+
+  // Direct access for tests and benchmarks. Call state_changed() after writing the state.
+  const Model<T>& model() const { return model_; }
+  State<T>& state() { return state_; }
+  const Vec3Array<T>& force_field() const { return force_field_; }
+  void state_changed();
+
+ private:
+  static Vec3d get(const Vec3Array<T>& a, int i) {
+    const auto k = static_cast<std::size_t>(i);
+    return {double(a.x[k]), double(a.y[k]), double(a.z[k])};
+  }
+
+  Model<T> model_;
+  State<T> state_;
+  double dt_ = 0.0;
+  long steps_ = 0;
+  double pending_ = 0.0;  // s of requested time not yet stepped (less than one dt)
+  int threads_ = 1;
+  std::unique_ptr<Integrator<T>> integrator_;
+  ForceWorkspace<T> workspace_;
+  Vec3Array<T> force_field_;
+  std::vector<double> energy_partials_;
+  DivergenceMonitor<T> monitor_;
+  std::optional<Divergence> diverged_;
+};
+
+extern template class SolverT<float>;
+extern template class SolverT<double>;
+
+}  // namespace clothlab

@@ -1,0 +1,83 @@
+# Command-line tests: `clothlab check` on bad scenes and bad --set values must exit with status
+# exactly 2 and print a message naming the file, line and key (design.md, "Command line").
+# Included from tests/CMakeLists.txt; each test runs expect_exit.cmake.
+
+set(CLOTHLAB_BAD_SCENES ${CMAKE_CURRENT_LIST_DIR}/bad_scenes)
+set(CLOTHLAB_DEFAULT_SCENE ${PROJECT_SOURCE_DIR}/scenes/default.toml)
+
+# clothlab_cli_test(NAME RC REGEX ARGS...): runs `clothlab ARGS...`, expects status RC and output
+# matching REGEX. ARGS must not contain '|' (expect_exit.cmake's separator).
+function(clothlab_cli_test name rc regex)
+  string(JOIN "|" args ${ARGN})
+  add_test(NAME cli.${name}
+    COMMAND ${CMAKE_COMMAND}
+      "-DCOMMAND=$<TARGET_FILE:clothlab>|${args}"
+      "-DEXPECT_RC=${rc}"
+      "-DEXPECT_REGEX=${regex}"
+      -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
+  set_tests_properties(cli.${name} PROPERTIES TIMEOUT 60)
+endfunction()
+
+# clothlab_bad_scene(FILE LINE KEY_REGEX MESSAGE_REGEX): `clothlab check bad_scenes/FILE.toml`
+# must exit 2 with "FILE.toml:LINE:COL: KEY: MESSAGE".
+function(clothlab_bad_scene file line key message)
+  clothlab_cli_test(check.${file} 2 "${file}\\.toml:${line}:[0-9]+: ${key}: ${message}"
+    check ${CLOTHLAB_BAD_SCENES}/${file}.toml)
+endfunction()
+
+clothlab_bad_scene(syntax_error 6 "TOML syntax error" "")
+clothlab_bad_scene(unknown_top_key 5 "physics" "unknown top-level key")
+clothlab_bad_scene(unknown_nested_key 6 "solver\\.dtt" "unknown key")
+clothlab_bad_scene(wrong_type 4 "cloth\\.mass" "expected a number, got string")
+clothlab_bad_scene(float_resolution 3 "cloth\\.resolution.0." "expected an integer, got float")
+clothlab_bad_scene(non_finite 6 "springs\\.stiffness" "must be finite")
+clothlab_bad_scene(negative_dt 6 "solver\\.dt" "must be > 0")
+clothlab_bad_scene(zero_mass 4 "cloth\\.mass" "must be > 0")
+clothlab_bad_scene(pin_outside 4 "cloth\\.pins.1." "pin .8, 0. is outside the 8 x 8 grid")
+clothlab_bad_scene(duplicate_pin 4 "cloth\\.pins.2." "pin .0, 0. is listed twice")
+clothlab_bad_scene(all_pinned 4 "cloth\\.pins" "every vertex is pinned")
+clothlab_bad_scene(unknown_integrator 6 "solver\\.integrator" "unknown integrator .leapfrog.")
+clothlab_bad_scene(gpu_backend 6 "solver\\.backend" ".*not supported yet")
+clothlab_bad_scene(colliders 5 "colliders" "is not supported yet")
+clothlab_bad_scene(skewed_axes 5 "cloth\\.v_axis" "must be orthogonal")
+clothlab_bad_scene(wind_without_velocity 6 "forces\\.wind\\.velocity" "missing")
+clothlab_bad_scene(trace_outside 7 "trace\\.vertices.1." "vertex .8, 2. is outside")
+clothlab_bad_scene(multi_cloth_bad_mass 9 "cloth.1.\\.mass" "must be > 0")
+
+clothlab_cli_test(check.missing_file 2 "no_such_scene\\.toml: cannot open scene file"
+  check ${CLOTHLAB_BAD_SCENES}/no_such_scene.toml)
+
+# --set overrides on the good default scene go through the same checks; the message names the
+# --set argument instead of a file position.
+function(clothlab_bad_set name regex)
+  clothlab_cli_test(set.${name} 2 "${regex}" check ${CLOTHLAB_DEFAULT_SCENE} ${ARGN})
+endfunction()
+
+clothlab_bad_set(negative_dt "--set solver\\.dt=-1: solver\\.dt: must be > 0 \\(got -1\\)"
+  --set solver.dt=-1)
+clothlab_bad_set(dt_not_a_number "--set solver\\.dt=fast: solver\\.dt: expected a number"
+  --set solver.dt=fast)
+clothlab_bad_set(nan_drag "--set forces\\.drag=nan: forces\\.drag: must be finite"
+  --set forces.drag=nan)
+clothlab_bad_set(unknown_key "--set solver\\.dtt=0\\.1: solver\\.dtt: unknown key"
+  --set solver.dtt=0.1)
+clothlab_bad_set(unknown_table "--set physics\\.dt=1: physics: unknown top-level key"
+  --set physics.dt=1)
+clothlab_bad_set(not_supported "--set render\\.mode=3: render: is not supported yet"
+  --set render.mode=3)
+clothlab_bad_set(unknown_integrator "solver\\.integrator: unknown integrator .rk5."
+  --set solver.integrator=rk5)
+clothlab_bad_set(resolution_type "cloth\\.resolution: expected an array"
+  --set cloth.resolution=8)
+clothlab_bad_set(index_single_cloth "--set cloth.1.\\.mass=2: cloth: is a single table"
+  --set cloth[1].mass=2)
+clothlab_bad_set(no_equals "--set solver\\.dt: expected key\\.path=value" --set solver.dt)
+clothlab_bad_set(empty_path "--set =3: empty key path" --set =3)
+# A later bad override is caught even when an earlier one is fine.
+clothlab_bad_set(second_override "--set solver\\.threads=-2: solver\\.threads: must be between"
+  --set solver.dt=0.0005 --set solver.threads=-2)
+
+# The good cases: the default scene and valid overrides exit 0.
+clothlab_cli_test(check.default_scene 0 "" check ${CLOTHLAB_DEFAULT_SCENE})
+clothlab_cli_test(set.valid 0 "" check ${CLOTHLAB_DEFAULT_SCENE}
+  --set solver.integrator=rk4 --set solver.dt=0.0002 --set "solver.precision=double")

@@ -1,0 +1,77 @@
+// Momentum balance: internal spring and damping forces cancel pairwise (Newton's third law), so
+// without gravity, drag, wind and pins the total momentum is conserved to round-off; a push adds
+// exactly the impulse asked for.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "sim/solver_impl.hpp"
+#include "test_scenes.hpp"
+
+namespace clothlab {
+namespace {
+
+std::array<double, 3> momentum(SolverT<double>& s) {
+  std::array<double, 3> p{0, 0, 0};
+  const auto& m = s.model();
+  for (std::size_t i = 0; i < m.n; ++i)
+    for (int a = 0; a < 3; ++a) p[a] += m.mass[i] * s.state().vel.axis(a)[i];
+  return p;
+}
+
+Scene free_sheet(IntegratorKind kind) {
+  // dt = 1e-4 s: omega_max dt = 0.1, so even explicit Euler (energy x (1 + 0.01) per step on the
+  // highest mode) stays far below the divergence limit over the run.
+  Scene scene = testing::sheet(8, 1.0, 0.3, 500.0, kind, 1e-4);
+  scene.forces.gravity = {0.0, 0.0, 0.0};
+  scene.springs.damping = 0.05;
+  scene.solver.precision = Precision::f64;
+  return scene;
+}
+
+class MomentumConservation : public ::testing::TestWithParam<IntegratorKind> {};
+
+TEST_P(MomentumConservation, RandomVelocitiesKeepTotalMomentum) {
+  SolverT<double> s(free_sheet(GetParam()));
+  std::mt19937 rng(42);
+  std::normal_distribution<double> normal(0.0, 0.5);
+  double speed_sum = 0.0;
+  for (std::size_t i = 0; i < s.model().n; ++i) {
+    for (int a = 0; a < 3; ++a) {
+      s.state().vel.axis(a)[i] = normal(rng);
+      s.state().pos.axis(a)[i] += 0.01 * normal(rng);  // start stretched and sheared
+    }
+    speed_sum += s.model().mass[i] * std::abs(s.state().vel.x[i]);
+  }
+  s.state_changed();
+  const auto p0 = momentum(s);
+  ASSERT_TRUE(s.step(500).ok());
+  const auto p1 = momentum(s);
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(p1[a], p0[a], 1e-12 * speed_sum) << "axis " << a;
+  // The test is not trivially true: the velocities did change.
+  EXPECT_GT(std::abs(s.state().vel.x[0] - 0.0), 0.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(AllIntegrators, MomentumConservation,
+                         ::testing::ValuesIn(testing::kAllIntegrators), [](const auto& param_info) {
+                           return std::string(to_string(param_info.param));
+                         });
+
+TEST(Push, AddsExactlyTheImpulseToFreeVertices) {
+  Scene scene = free_sheet(IntegratorKind::symplectic_euler);
+  scene.cloths[0].pins = {{0, 0}, {7, 0}};
+  SolverT<double> s(scene);
+  const auto p0 = momentum(s);
+  s.apply_impulse({0.0, 0.0, 0.0}, 0.3, {0.02, -0.01, 0.05});
+  const auto p1 = momentum(s);
+  EXPECT_NEAR(p1[0] - p0[0], 0.02, 1e-15);
+  EXPECT_NEAR(p1[1] - p0[1], -0.01, 1e-15);
+  EXPECT_NEAR(p1[2] - p0[2], 0.05, 1e-15);
+  EXPECT_EQ(s.velocity(0)[2], 0.0);  // pinned vertices do not move
+  // Far from every vertex: the nearest free vertex takes it all.
+  s.apply_impulse({5.0, 0.0, 0.0}, 0.1, {0.0, 0.0, 0.01});
+  EXPECT_NEAR(momentum(s)[2] - p1[2], 0.01, 1e-15);
+}
+
+}  // namespace
+}  // namespace clothlab

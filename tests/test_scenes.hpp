@@ -1,0 +1,58 @@
+// Scenes built in code for the physics tests (no parser involved).
+#pragma once
+
+#include <cmath>
+
+#include "sim/scene/scene.hpp"
+
+namespace clothlab::testing {
+
+// Two vertices, the top one pinned, the spring hanging along gravity: the closed-form case.
+// Each vertex has mass m (kg); the spring has stiffness k (N/m) and rest length L (m).
+inline Scene single_spring(double m, double k, double L, IntegratorKind integrator, double dt) {
+  Scene s;
+  ClothSpec c;
+  c.size = {1.0, L};
+  c.resolution = {1, 2};
+  c.origin = {0.0, 0.0, 0.0};
+  c.u_axis = {1.0, 0.0, 0.0};
+  c.v_axis = {0.0, -1.0, 0.0};
+  c.mass = 2.0 * m;
+  c.pins = {{0, 0}};
+  c.key = "cloth";
+  s.cloths.push_back(c);
+  s.springs.stiffness = k;  // k = stiffness * edge / rest = stiffness for one spring
+  s.springs.damping = 0.0;
+  s.forces.gravity = {0.0, -9.81, 0.0};
+  s.solver.integrator = integrator;
+  s.solver.dt = dt;
+  s.solver.threads = 1;
+  s.solver.precision = Precision::f64;
+  return s;
+}
+
+// A square sheet in the x-y plane hanging down from y = 0.
+inline Scene sheet(int res, double size, double mass, double stiffness, IntegratorKind integrator,
+                   double dt) {
+  Scene s;
+  ClothSpec c;
+  c.size = {size, size};
+  c.resolution = {res, res};
+  c.origin = {-0.5 * size, 0.0, 0.0};
+  c.u_axis = {1.0, 0.0, 0.0};
+  c.v_axis = {0.0, -1.0, 0.0};
+  c.mass = mass;
+  c.key = "cloth";
+  s.cloths.push_back(c);
+  s.springs.stiffness = stiffness;
+  s.solver.integrator = integrator;
+  s.solver.dt = dt;
+  s.solver.threads = 1;
+  return s;
+}
+
+inline constexpr IntegratorKind kAllIntegrators[] = {
+    IntegratorKind::explicit_euler, IntegratorKind::symplectic_euler, IntegratorKind::seed_hack,
+    IntegratorKind::verlet, IntegratorKind::rk4};
+
+}  // namespace clothlab::testing
