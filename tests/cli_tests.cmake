@@ -81,3 +81,27 @@ clothlab_bad_set(second_override "--set solver\\.threads=-2: solver\\.threads: m
 clothlab_cli_test(check.default_scene 0 "" check ${CLOTHLAB_DEFAULT_SCENE})
 clothlab_cli_test(set.valid 0 "" check ${CLOTHLAB_DEFAULT_SCENE}
   --set solver.integrator=rk4 --set solver.dt=0.0002 --set "solver.precision=double")
+
+# `clothlab trace`: a good run prints the one-line summary and writes the CSV; a diverging run
+# exits 1 naming step, time, vertex and quantity plus the command that replays it; bad
+# arguments exit 2 naming the argument.
+set(CLOTHLAB_TRACE_OUT ${CMAKE_CURRENT_BINARY_DIR}/cli_trace)
+file(MAKE_DIRECTORY ${CLOTHLAB_TRACE_OUT})
+clothlab_cli_test(trace.default 0
+  "trace: 0\\.5 s simulated in 1000 steps of 0\\.0005 s, .* ms/step .*final energy .* J"
+  trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.5 --out ${CLOTHLAB_TRACE_OUT}/default.csv)
+clothlab_cli_test(trace.diverges 1
+  "diverged at step [0-9]+ \\(t = [0-9.e-]+ s\\): vertex \\(cloth 0, i [0-9]+, j [0-9]+\\), .*replay with: clothlab trace .*--set 'solver.dt=0.002'"
+  trace ${CLOTHLAB_DEFAULT_SCENE} --duration 1 --out ${CLOTHLAB_TRACE_OUT}/diverged.csv
+  --set solver.dt=0.002)
+clothlab_cli_test(trace.bad_duration 2 "--duration: must be a finite number"
+  trace ${CLOTHLAB_DEFAULT_SCENE} --duration -1 --out ${CLOTHLAB_TRACE_OUT}/bad.csv)
+clothlab_cli_test(trace.nan_duration 2 "--duration: must be a finite number"
+  trace ${CLOTHLAB_DEFAULT_SCENE} --duration nan --out ${CLOTHLAB_TRACE_OUT}/bad.csv)
+clothlab_cli_test(trace.missing_out 2 "--out is required"
+  trace ${CLOTHLAB_DEFAULT_SCENE} --duration 1)
+clothlab_cli_test(trace.bad_set 2 "--set cloth\\.resolution=\\[0,4\\]: cloth\\.resolution"
+  trace ${CLOTHLAB_DEFAULT_SCENE} --duration 1 --out ${CLOTHLAB_TRACE_OUT}/bad.csv
+  --set cloth.resolution=[0,4])
+clothlab_cli_test(trace.unwritable_out 1 "cannot write trace file"
+  trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.01 --out /nonexistent-dir/x.csv)

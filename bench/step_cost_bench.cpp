@@ -1,0 +1,89 @@
+// How many nanoseconds does one spring cost per symplectic Euler step, by grid size and thread
+// count? (Issue: foundation, "Numbers to put in the closing note".) A step here is the whole
+// step the solver takes: force pass, integration and the divergence check.
+//
+//   build/release/bench/step_cost_bench [--benchmark_out=step_cost.csv --benchmark_out_format=csv]
+//
+// Counters: per_spring_step in seconds (lower is better) and springs. The "physics" argument
+// selects springs only (0: Hooke + along-spring damping + gravity) or the default scene's full set
+// (1: also drag and gusty wind on the surface normals).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "sim/solver_impl.hpp"
+
+namespace clothlab {
+namespace {
+
+Scene bench_scene(int res, int threads, bool full_physics) {
+  Scene s;
+  ClothSpec c;
+  c.size = {2.0, 2.0};
+  c.resolution = {res, res};
+  c.origin = {-1.0, 2.5, 0.0};
+  c.u_axis = {1.0, 0.0, 0.0};
+  c.v_axis = {0.0, -1.0, 0.0};
+  c.mass = 1.0;
+  c.pins = {{0, 0}, {res - 1, 0}};
+  s.cloths.push_back(c);
+  s.springs.stiffness = 800.0;
+  // The default sheet's damping (0.05 N*s/m at 32 x 32) scaled with the vertex mass, so every
+  // grid has the same damping rate c / m; a fixed c would make fine grids unstable
+  // (dt^2 w^2 + 2 dt gamma < 4, design.md).
+  s.springs.damping = 0.05 * (32.0 * 32.0) / (res * res);
+  if (full_physics) {
+    s.forces.drag = 0.001;
+    s.forces.wind = {true, {3.0, 0.0, 1.0}, 0.5, 7, 1.0, 1.0};
+  }
+  // Half the symplectic Euler limit 0.654 sqrt(m / k0) (design.md), so the run stays physical.
+  s.solver.dt = 0.5 * 0.654 * std::sqrt(c.mass / (res * res) / s.springs.stiffness);
+  s.solver.threads = threads;
+  s.solver.integrator = IntegratorKind::symplectic_euler;
+  return s;
+}
+
+void BM_SymplecticEulerStep(benchmark::State& state) {
+  const int res = static_cast<int>(state.range(0));
+  const int threads = static_cast<int>(state.range(1));
+  SolverT<float> solver(bench_scene(res, threads, state.range(2) != 0));
+  solver.step(20);  // warm caches and the thread pool
+  for (auto _ : state) {
+    if (!solver.step(1).ok()) {
+      state.SkipWithError("diverged");
+      break;
+    }
+  }
+  const double springs = static_cast<double>(solver.spring_count());
+  state.counters["springs"] = springs;
+  // Seconds per spring-step (printed with an SI prefix: "2.5n" is 2.5 ns).
+  state.counters["per_spring_step"] =
+      benchmark::Counter(springs * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+BENCHMARK(BM_SymplecticEulerStep)
+    ->ArgNames({"res", "threads", "physics"})
+    ->ArgsProduct({{64, 128, 256}, {1, 2}, {0, 1}})
+    ->Unit(benchmark::kMicrosecond)
+    ->MinTime(0.5);
+
+// Foreign load spoils 2-thread numbers (design.md, performance notes): record it with the run.
+void add_load_context() {
+  std::ifstream in("/proc/loadavg");
+  std::string one_minute;
+  in >> one_minute;
+  benchmark::AddCustomContext("loadavg_1min_before_run", one_minute);
+}
+
+}  // namespace
+}  // namespace clothlab
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  clothlab::add_load_context();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
