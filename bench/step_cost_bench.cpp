@@ -47,7 +47,8 @@ Scene bench_scene(int res, int threads, bool full_physics) {
 void BM_SymplecticEulerStep(benchmark::State& state) {
   const int res = static_cast<int>(state.range(0));
   const int threads = static_cast<int>(state.range(1));
-  SolverT<float> solver(bench_scene(res, threads, state.range(2) != 0));
+  const auto kernel = state.range(3) == 0 ? SpringKernel::row_sweep : SpringKernel::neighbour_list;
+  SolverT<float> solver(bench_scene(res, threads, state.range(2) != 0), kernel);
   solver.step(20);  // warm caches and the thread pool
   for (auto _ : state) {
     if (!solver.step(1).ok()) {
@@ -63,9 +64,11 @@ void BM_SymplecticEulerStep(benchmark::State& state) {
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
+// Springs only, both kernels; then the default scene's full physics with the default kernel.
 BENCHMARK(BM_SymplecticEulerStep)
-    ->ArgNames({"res", "threads", "physics"})
-    ->ArgsProduct({{64, 128, 256}, {1, 2}, {0, 1}})
+    ->ArgNames({"res", "threads", "physics", "kernel"})
+    ->ArgsProduct({{64, 128, 256}, {1, 2}, {0}, {0, 1}})
+    ->ArgsProduct({{64, 128, 256}, {1, 2}, {1}, {0}})
     ->Unit(benchmark::kMicrosecond)
     ->MinTime(0.5);
 

@@ -30,8 +30,8 @@ double initial_energy(const Model<T>& m) {
 }  // namespace
 
 template <class T>
-SolverT<T>::SolverT(const Scene& scene)
-    : model_(build_model<T>(scene)),
+SolverT<T>::SolverT(const Scene& scene, SpringKernel kernel)
+    : model_(build_model<T>(scene, kernel)),
       state_(initial_state(model_)),
       dt_(scene.solver.dt),
       threads_(resolve_threads(scene.solver.threads)),

@@ -11,7 +11,8 @@ namespace clothlab {
 template <class T>
 class SolverT final : public Solver {
  public:
-  explicit SolverT(const Scene& scene);
+  // kernel: the spring kernel (tests and benchmarks compare both; the default is the fast one).
+  explicit SolverT(const Scene& scene, SpringKernel kernel = SpringKernel::row_sweep);
 
   AdvanceResult advance(double duration) override;
   AdvanceResult step(long count) override;
@@ -19,7 +20,7 @@ class SolverT final : public Solver {
   long step_count() const override { return steps_; }
   double dt() const override { return dt_; }
   std::size_t vertex_count() const override { return model_.n; }
-  std::size_t spring_count() const override { return model_.springs.size(); }
+  std::size_t spring_count() const override { return model_.spring_count; }
   int vertex_index(const VertexRef& v) const override;
   VertexRef vertex_ref(int index) const override { return vertex_ref_of(model_.cloths, index); }
   Vec3d position(int vertex) const override { return get(state_.pos, vertex); }

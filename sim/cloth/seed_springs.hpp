@@ -15,6 +15,19 @@ struct Spring {
   double stiffness = 0.0;    // N/m
 };
 
+// One neighbour offset of the seed rule on a regular grid: vertex (i, j) is joined to
+// (i + di, j + dj) wherever both lie in the grid. The same offset has the same rest length and
+// stiffness everywhere on the grid.
+struct GridOffset {
+  int di = 0, dj = 0;
+  double rest_length = 0.0;  // m
+  double stiffness = 0.0;    // N/m
+};
+
+// The offsets joined by the seed rule with dj > 0, or dj == 0 and di > 0 (each pair once),
+// sorted by (dj, di), i.e. by the neighbour's vertex index.
+std::vector<GridOffset> seed_stencil_half(const GridCloth& grid, double stiffness);
+
 // True when two vertices at squared distance dist2 are joined. The pair at exactly
 // 2*sqrt(2)*edge (offset (2, 2) on a square grid) is not "closer than" and stays unjoined; the
 // relative margin keeps that decision immune to round-off in the positions.

@@ -38,4 +38,12 @@ void for_each_block_indexed(std::size_t n, int threads, Fn&& fn) {
   }
 }
 
+// Calls fn(k) for k in [0, count) in parallel; for work items (grid rows) whose result does not
+// depend on which thread runs them.
+template <class Fn>
+void for_each_index(int count, int threads, Fn&& fn) {
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1 && count > 1)
+  for (int k = 0; k < count; ++k) fn(k);
+}
+
 }  // namespace clothlab

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "sim/core/parallel.hpp"
+#include "sim/forces/grid_spring_forces.hpp"
 #include "sim/forces/spring_forces.hpp"
 #include "sim/forces/wind.hpp"
 
@@ -23,72 +24,107 @@ void add_body_forces(const Model<T>& m, const Vec3Array<T>& v, Vec3Array<T>& f, 
 }
 
 template <class T>
-void compute_face_cross(const Model<T>& m, const Vec3Array<T>& x, Vec3Array<T>& out, std::size_t b,
-                        std::size_t e) {
+void compute_faces(const Model<T>& m, const Vec3Array<T>& x, ForceWorkspace<T>& ws, std::size_t b,
+                   std::size_t e) {
   for (std::size_t t = b; t < e; ++t) {
     const auto [i0, i1, i2] = m.triangles[t];
     const T ax = x.x[i1] - x.x[i0], ay = x.y[i1] - x.y[i0], az = x.z[i1] - x.z[i0];
     const T bx = x.x[i2] - x.x[i0], by = x.y[i2] - x.y[i0], bz = x.z[i2] - x.z[i0];
-    out.set(t, ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx);
+    const T cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
+    ws.face_cross.set(t, cx, cy, cz);
+    ws.face_area[t] = T(0.5) * std::sqrt(cx * cx + cy * cy + cz * cz);
+  }
+}
+
+// Area-weighted vertex normals (Max 1999 compares the weightings; area weighting is the cheap
+// one that is exact for the sum of incident face normals) and vertex areas A_i = sum(area) / 3.
+template <class T>
+void compute_vertex_normals(const Model<T>& m, ForceWorkspace<T>& ws, std::size_t b,
+                            std::size_t e) {
+  const T* cx = ws.face_cross.x.data();
+  const T* cy = ws.face_cross.y.data();
+  const T* cz = ws.face_cross.z.data();
+  const T* area = ws.face_area.data();
+  const std::int32_t* tri = m.incident_triangle.data();
+  const std::size_t n = m.n;
+  const int slots = m.incident_slots;
+#pragma omp simd
+  for (std::size_t i = b; i < e; ++i) {
+    T nx = 0, ny = 0, nz = 0, sum_area = 0;
+    for (int s = 0; s < slots; ++s) {
+      const auto t = static_cast<std::size_t>(tri[static_cast<std::size_t>(s) * n + i]);
+      nx += cx[t];
+      ny += cy[t];
+      nz += cz[t];
+      sum_area += area[t];
+    }
+    const T len = std::sqrt(nx * nx + ny * ny + nz * nz);
+    const T inv = len > T(0) ? T(1) / len : T(0);  // a vertex with no area gets no wind
+    ws.normal.set(i, nx * inv, ny * inv, nz * inv);
+    ws.vertex_area[i] = sum_area * (T(1) / T(3));
   }
 }
 
 template <class T>
-void add_wind_forces(const Model<T>& m, double t, const Vec3Array<T>& x, const Vec3Array<T>& v,
-                     const Vec3Array<T>& cross, Vec3Array<T>& f, std::size_t b, std::size_t e) {
+void add_wind_forces(const WindField& wind, double t, const Vec3Array<T>& x, const Vec3Array<T>& v,
+                     ForceWorkspace<T>& ws, Vec3Array<T>& f, std::size_t b, std::size_t e) {
+  // The gust factor per vertex: a scalar sweep (noise hashing does not vectorise), cheap because
+  // the cache hashes only when the lattice cell changes.
+  GustCache cache;
+  for (std::size_t i = b; i < e; ++i)
+    ws.gust_factor[i] = static_cast<T>(wind.factor(t, x.x[i], x.y[i], x.z[i], cache));
+  const T wx = static_cast<T>(wind.spec().velocity[0]);
+  const T wy = static_cast<T>(wind.spec().velocity[1]);
+  const T wz = static_cast<T>(wind.spec().velocity[2]);
+  const T coefficient = static_cast<T>(wind.spec().coefficient);
+#pragma omp simd
   for (std::size_t i = b; i < e; ++i) {
-    double nx = 0, ny = 0, nz = 0, twice_area = 0;
-    for (int k = m.incident_offset[i]; k < m.incident_offset[i + 1]; ++k) {
-      const auto tri = static_cast<std::size_t>(m.incident_triangle[static_cast<std::size_t>(k)]);
-      nx += cross.x[tri];
-      ny += cross.y[tri];
-      nz += cross.z[tri];
-      twice_area +=
-          std::sqrt(double(cross.x[tri]) * cross.x[tri] + double(cross.y[tri]) * cross.y[tri] +
-                    double(cross.z[tri]) * cross.z[tri]);
-    }
-    const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
-    if (len == 0.0) continue;
-    nx /= len, ny /= len, nz /= len;
-    const Vec3d w = wind_velocity(m.wind, t, {double(x.x[i]), double(x.y[i]), double(x.z[i])});
-    const double normal_speed = (w[0] - v.x[i]) * nx + (w[1] - v.y[i]) * ny + (w[2] - v.z[i]) * nz;
-    const double scale = m.wind.coefficient * (twice_area / 6.0) * normal_speed;
-    f.x[i] += static_cast<T>(scale * nx);
-    f.y[i] += static_cast<T>(scale * ny);
-    f.z[i] += static_cast<T>(scale * nz);
+    const T k = ws.gust_factor[i];
+    const T nx = ws.normal.x[i], ny = ws.normal.y[i], nz = ws.normal.z[i];
+    const T normal_speed = (wx * k - v.x[i]) * nx + (wy * k - v.y[i]) * ny + (wz * k - v.z[i]) * nz;
+    const T scale = coefficient * ws.vertex_area[i] * normal_speed;
+    f.x[i] += scale * nx;
+    f.y[i] += scale * ny;
+    f.z[i] += scale * nz;
   }
 }
 
 }  // namespace
 
-Vec3d wind_velocity(const WindSpec& wind, double t, const Vec3d& p) {
-  const Vec3d& W = wind.velocity;
-  const double speed = std::sqrt(W[0] * W[0] + W[1] * W[1] + W[2] * W[2]);
-  if (speed == 0.0) return {0.0, 0.0, 0.0};
-  const double along = (p[0] * W[0] + p[1] * W[1] + p[2] * W[2]) / speed;
-  const double factor =
-      1.0 + wind.gust * gust_noise(wind.seed, (t - along / speed) / wind.gust_period);
-  return {W[0] * factor, W[1] * factor, W[2] * factor};
-}
-
 template <class T>
 void compute_forces(const Model<T>& m, double t, const Vec3Array<T>& x, const Vec3Array<T>& v,
                     Vec3Array<T>& f, ForceWorkspace<T>& ws, int threads) {
   const bool damped = m.has_damping;
-  for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) {
-    add_body_forces(m, v, f, b, e);
-    if (damped) {
-      add_spring_forces<T, true>(m, x, v, f, b, e);
-    } else {
-      add_spring_forces<T, false>(m, x, v, f, b, e);
+  if (m.kernel == SpringKernel::row_sweep) {
+    for (const GridStencil<T>& g : m.grids) {
+      for_each_index(g.nv, threads, [&](int j) {
+        const std::size_t row =
+            static_cast<std::size_t>(g.offset) + static_cast<std::size_t>(j) * g.nu;
+        add_body_forces(m, v, f, row, row + static_cast<std::size_t>(g.nu));
+        if (damped) {
+          add_grid_row_spring_forces<T, true>(g, x, v, f, j);
+        } else {
+          add_grid_row_spring_forces<T, false>(g, x, v, f, j);
+        }
+      });
     }
-  });
-  if (!m.wind.enabled || m.triangles.empty()) return;
-  for_each_block(m.triangles.size(), threads, [&](std::size_t b, std::size_t e) {
-    compute_face_cross(m, x, ws.face_cross, b, e);
-  });
+  } else {
+    for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) {
+      add_body_forces(m, v, f, b, e);
+      if (damped) {
+        add_spring_forces<T, true>(m, x, v, f, b, e);
+      } else {
+        add_spring_forces<T, false>(m, x, v, f, b, e);
+      }
+    });
+  }
+  const WindField wind(m.wind);
+  if (!m.wind.enabled || wind.calm() || m.triangles.empty()) return;
+  for_each_block(m.triangles.size(), threads,
+                 [&](std::size_t b, std::size_t e) { compute_faces(m, x, ws, b, e); });
   for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) {
-    add_wind_forces(m, t, x, v, ws.face_cross, f, b, e);
+    compute_vertex_normals(m, ws, b, e);
+    add_wind_forces(wind, t, x, v, ws, f, b, e);
   });
 }
 

@@ -8,16 +8,25 @@ namespace clothlab {
 // Scratch space for a force evaluation, allocated once so the step loop never allocates.
 template <class T>
 struct ForceWorkspace {
-  Vec3Array<T> face_cross;  // (b - a) x (c - a) per triangle: twice the area times the normal
-  void resize(const Model<T>& m) { face_cross.resize(m.triangles.size()); }
+  // Per triangle, plus one zero dummy at the end for the padded incidence table.
+  Vec3Array<T> face_cross;     // (b - a) x (c - a): twice the area times the normal
+  AlignedVector<T> face_area;  // m^2
+  // Per vertex: unit area-weighted normal and a third of the surrounding area (m^2).
+  Vec3Array<T> normal;
+  AlignedVector<T> vertex_area;
+  AlignedVector<T> gust_factor;  // the wind's (1 + gust g) at each vertex
+  void resize(const Model<T>& m) {
+    face_cross.resize(m.triangles.size() + 1);
+    face_area.assign(m.triangles.size() + 1, T(0));
+    normal.resize(m.n);
+    vertex_area.assign(m.n, T(0));
+    gust_factor.assign(m.n, T(0));
+  }
 };
 
 // f = F(t, x, v) on all vertices (pinned ones included: their force is the support reaction).
 template <class T>
 void compute_forces(const Model<T>& m, double t, const Vec3Array<T>& x, const Vec3Array<T>& v,
                     Vec3Array<T>& f, ForceWorkspace<T>& ws, int threads);
-
-// The wind velocity at time t at position p (design: sim/forces/wind.hpp).
-Vec3d wind_velocity(const WindSpec& wind, double t, const Vec3d& p);
 
 }  // namespace clothlab

@@ -30,8 +30,9 @@ std::vector<std::vector<Link>> links_per_vertex(std::size_t n, const std::vector
 }
 
 template <class T>
-void fill_neighbour_table(Model<T>& m, const std::vector<double>& damping) {
-  const auto links = links_per_vertex(m.n, m.springs, damping);
+void fill_neighbour_table(Model<T>& m, const std::vector<Spring>& springs,
+                          const std::vector<double>& damping) {
+  const auto links = links_per_vertex(m.n, springs, damping);
   std::size_t slots = 0;
   for (const auto& l : links) slots = std::max(slots, l.size());
   m.slots = static_cast<int>(slots);
@@ -49,7 +50,6 @@ void fill_neighbour_table(Model<T>& m, const std::vector<double>& damping) {
         m.stiffness[e] = static_cast<T>(l.stiffness);
         m.rest_length[e] = static_cast<T>(l.rest);
         m.damping[e] = static_cast<T>(l.damping);
-        m.has_damping = m.has_damping || l.damping != 0.0;
       } else {
         m.neighbour[e] = static_cast<std::int32_t>(i);
       }
@@ -58,23 +58,52 @@ void fill_neighbour_table(Model<T>& m, const std::vector<double>& damping) {
 }
 
 template <class T>
+GridStencil<T> grid_stencil(const GridCloth& g, int offset, const SpringSpec& spec) {
+  GridStencil<T> st;
+  st.offset = offset;
+  st.nu = g.nu;
+  st.nv = g.nv;
+  for (const GridOffset& o : seed_stencil_half(g, spec.stiffness)) {
+    for (int sign : {-1, 1}) {
+      typename GridStencil<T>::Entry e;
+      e.di = sign * o.di;
+      e.dj = sign * o.dj;
+      e.shift = e.di + static_cast<long>(e.dj) * g.nu;
+      e.stiffness = static_cast<T>(o.stiffness);
+      e.rest_length = static_cast<T>(o.rest_length);
+      e.damping = static_cast<T>(spec.damping);
+      e.first_half = sign > 0;
+      st.entries.push_back(e);
+    }
+  }
+  std::sort(st.entries.begin(), st.entries.end(),
+            [](const auto& a, const auto& b) { return a.shift < b.shift; });
+  return st;
+}
+
+template <class T>
 void fill_incident_triangles(Model<T>& m) {
-  m.incident_offset.assign(m.n + 1, 0);
-  for (const auto& t : m.triangles)
-    for (int v : t) ++m.incident_offset[static_cast<std::size_t>(v) + 1];
-  for (std::size_t i = 0; i < m.n; ++i) m.incident_offset[i + 1] += m.incident_offset[i];
-  m.incident_triangle.assign(static_cast<std::size_t>(m.incident_offset[m.n]), 0);
-  std::vector<int> fill(m.incident_offset.begin(), m.incident_offset.end() - 1);
+  std::vector<std::vector<std::int32_t>> around(m.n);
   for (std::size_t t = 0; t < m.triangles.size(); ++t)
     for (int v : m.triangles[t])
-      m.incident_triangle[static_cast<std::size_t>(fill[v]++)] = static_cast<int>(t);
+      around[static_cast<std::size_t>(v)].push_back(static_cast<std::int32_t>(t));
+  std::size_t slots = 0;
+  for (const auto& a : around) slots = std::max(slots, a.size());
+  m.incident_slots = static_cast<int>(slots);
+  const auto dummy = static_cast<std::int32_t>(m.triangles.size());
+  m.incident_triangle.assign(slots * m.n, dummy);
+  for (std::size_t i = 0; i < m.n; ++i)
+    for (std::size_t s = 0; s < around[i].size(); ++s)
+      m.incident_triangle[s * m.n + i] = around[i][s];
 }
 
 }  // namespace
 
 template <class T>
-Model<T> build_model(const Scene& scene) {
+Model<T> build_model(const Scene& scene, SpringKernel kernel) {
   Model<T> m;
+  m.kernel = kernel;
+  std::vector<Spring> springs;  // neighbour_list only: 24 bytes a spring
   std::vector<double> spring_damping;
   std::vector<Vec3d> positions;
   std::vector<double> masses;
@@ -86,11 +115,20 @@ Model<T> build_model(const Scene& scene) {
     positions.insert(positions.end(), g.positions.begin(), g.positions.end());
     masses.insert(masses.end(), g.positions.size(), g.vertex_mass);
     for (int p : g.pinned) m.pinned.push_back(offset + p);
-    for (Spring s : seed_springs_grid(g, spec.stiffness)) {
-      s.a += offset;
-      s.b += offset;
-      m.springs.push_back(s);
-      spring_damping.push_back(spec.damping);
+    m.has_damping = m.has_damping || spec.damping != 0.0;
+    if (kernel == SpringKernel::row_sweep) {
+      m.grids.push_back(grid_stencil<T>(g, offset, spec));
+      for (const GridOffset& o : seed_stencil_half(g, spec.stiffness))
+        m.spring_count +=
+            static_cast<std::size_t>(g.nu - std::abs(o.di)) * static_cast<std::size_t>(g.nv - o.dj);
+    } else {
+      for (Spring s : seed_springs_grid(g, spec.stiffness)) {
+        s.a += offset;
+        s.b += offset;
+        springs.push_back(s);
+        spring_damping.push_back(spec.damping);
+      }
+      m.spring_count = springs.size();
     }
     for (auto t : g.triangles) m.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
   }
@@ -107,7 +145,7 @@ Model<T> build_model(const Scene& scene) {
   }
   for (int p : m.pinned) m.inv_mass[static_cast<std::size_t>(p)] = T(0);
 
-  fill_neighbour_table(m, spring_damping);
+  if (kernel == SpringKernel::neighbour_list) fill_neighbour_table(m, springs, spring_damping);
   fill_incident_triangles(m);
   for (int a = 0; a < 3; ++a) m.gravity[a] = static_cast<T>(scene.forces.gravity[a]);
   m.drag = static_cast<T>(scene.forces.drag);
@@ -115,7 +153,7 @@ Model<T> build_model(const Scene& scene) {
   return m;
 }
 
-template Model<float> build_model<float>(const Scene&);
-template Model<double> build_model<double>(const Scene&);
+template Model<float> build_model<float>(const Scene&, SpringKernel);
+template Model<double> build_model<double>(const Scene&, SpringKernel);
 
 }  // namespace clothlab

@@ -1,7 +1,12 @@
 // Model<T>: everything the force kernels read that does not change during a step, in the
-// solver's scalar type. Springs are stored as a padded per-vertex neighbour table ("ELL" layout,
-// slot-major): slot s of vertex i is entry s * n + i. Each vertex gathers its own spring forces,
-// so the force pass needs no atomics and is deterministic for any thread count.
+// solver's scalar type. Each vertex gathers the forces of its own springs (no atomics, the same
+// result for any thread count) from one of two equivalent descriptions of its neighbours:
+//  - row_sweep (default): a grid cloth's springs are one stencil of offsets (di, dj) with the
+//    same rest length and stiffness everywhere; for one offset and one grid row the neighbours
+//    are a contiguous run of memory, so the kernel streams rows with no index array or gather.
+//  - neighbour_list: a padded per-vertex neighbour table ("ELL" layout, slot-major: slot s of
+//    vertex i is entry s * n + i) that any topology can use; the reference for the row sweep.
+// Both add a vertex's springs in the order of the neighbour's index.
 #pragma once
 
 #include <array>
@@ -20,23 +25,45 @@ struct ClothRange {
   int nu = 0, nv = 0;
 };
 
+enum class SpringKernel { row_sweep, neighbour_list };
+
+// One grid cloth's spring stencil for the row-sweep kernel.
+template <class T>
+struct GridStencil {
+  struct Entry {
+    int di = 0, dj = 0;
+    long shift = 0;  // di + dj * nu: the neighbour's index minus the vertex's
+    T stiffness = 0, rest_length = 0, damping = 0;
+    bool first_half = false;  // dj > 0, or dj == 0 and di > 0: counts each spring once
+  };
+  int offset = 0, nu = 0, nv = 0;
+  std::vector<Entry> entries;  // both signs of every offset, sorted by shift
+};
+
 template <class T>
 struct Model {
   std::size_t n = 0;                // vertices, all cloths
   AlignedVector<T> mass, inv_mass;  // kg and 1/kg; inv_mass is 0 for pinned vertices
   std::vector<int> pinned;          // global indices
 
-  // Neighbour table: `slots` entries per vertex; unused entries point at the vertex itself with
+  SpringKernel kernel = SpringKernel::row_sweep;
+  std::size_t spring_count = 0;
+  bool has_damping = false;
+  std::vector<GridStencil<T>> grids;  // row_sweep: one per cloth
+
+  // neighbour_list: `slots` entries per vertex; unused entries point at the vertex itself with
   // zero stiffness, damping and rest length, which the kernel turns into zero force.
   int slots = 0;
   std::vector<std::int32_t> neighbour;
   AlignedVector<T> stiffness, rest_length, damping;
-  bool has_damping = false;
-  std::vector<Spring> springs;  // the unique springs (double), for counts and tests
 
   // Surface for the wind force and normals.
   std::vector<std::array<int, 3>> triangles;
-  std::vector<int> incident_offset, incident_triangle;  // CSR: triangles around each vertex
+  // Triangles around each vertex, padded to `incident_slots` per vertex (slot-major, like the
+  // neighbour table); padding points at index triangles.size(), a zero-area dummy the wind pass
+  // keeps in its face arrays, so the gather loop has a fixed trip count and vectorises.
+  int incident_slots = 0;
+  std::vector<std::int32_t> incident_triangle;
 
   std::array<T, 3> gravity{0, 0, 0};
   T drag = 0;
@@ -47,6 +74,6 @@ struct Model {
 };
 
 template <class T>
-Model<T> build_model(const Scene& scene);
+Model<T> build_model(const Scene& scene, SpringKernel kernel = SpringKernel::row_sweep);
 
 }  // namespace clothlab
