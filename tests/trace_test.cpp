@@ -91,19 +91,22 @@ TEST(Trace, ReadsBackTheSolverValues) {
 }
 
 TEST(Trace, ThreadCountDoesNotChangeTheTraceByteForByte) {
-  std::string contents[2];
-  for (int threads : {1, 2}) {
-    Scene scene = busy_scene();
-    scene.solver.threads = threads;
-    SolverT<float> s(scene);
-    ASSERT_EQ(s.threads(), threads);
-    const std::string path = temp_file("threads" + std::to_string(threads) + ".csv");
-    ASSERT_FALSE(run_trace(s, *scene.trace, false, false, 0.3, path).divergence);
-    contents[threads - 1] = slurp(path);
-    fs::remove(path);
+  for (SpringKernel kernel : {SpringKernel::row_sweep, SpringKernel::neighbour_list}) {
+    std::string contents[2];
+    for (int threads : {1, 2}) {
+      Scene scene = busy_scene();
+      scene.solver.threads = threads;
+      SolverT<float> s(scene, kernel);
+      ASSERT_EQ(s.threads(), threads);
+      const std::string path = temp_file("threads" + std::to_string(threads) + ".csv");
+      ASSERT_FALSE(run_trace(s, *scene.trace, false, false, 0.3, path).divergence);
+      contents[threads - 1] = slurp(path);
+      fs::remove(path);
+    }
+    ASSERT_GT(contents[0].size(), 1000u);
+    EXPECT_TRUE(contents[0] == contents[1])
+        << "1- and 2-thread traces differ (kernel " << int(kernel) << ")";
   }
-  ASSERT_GT(contents[0].size(), 1000u);
-  EXPECT_TRUE(contents[0] == contents[1]) << "1- and 2-thread traces differ";
 }
 
 TEST(Trace, DivergedRunLeavesNoFile) {
