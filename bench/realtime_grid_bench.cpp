@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_scenes.hpp"
 #include "sim/solver_impl.hpp"
 
 namespace clothlab {
@@ -17,33 +18,10 @@ namespace {
 
 constexpr double kBudgetSeconds = 1e-3;  // dt = 1 ms of simulated time per 1 ms of wall time
 
-Scene grid_scene(int res, int threads, bool full_physics) {
-  Scene s;
-  ClothSpec c;
-  c.size = {2.0, 2.0};
-  c.resolution = {res, res};
-  c.origin = {-1.0, 2.5, 0.0};
-  c.u_axis = {1.0, 0.0, 0.0};
-  c.v_axis = {0.0, -1.0, 0.0};
-  c.mass = 1.0;
-  c.pins = {{0, 0}, {res - 1, 0}};
-  s.cloths.push_back(c);
-  s.springs.stiffness = 800.0;
-  s.springs.damping = 0.05 * (32.0 * 32.0) / (res * res);  // the default sheet's damping rate
-  if (full_physics) {
-    s.forces.drag = 0.001;
-    s.forces.wind = {true, {3.0, 0.0, 1.0}, 0.5, 7, 1.0, 1.0};
-  }
-  // The cost of a step does not depend on dt; a stable dt keeps the run physical.
-  s.solver.dt = 0.5 * 0.654 * std::sqrt(c.mass / (res * res) / s.springs.stiffness);
-  s.solver.threads = threads;
-  return s;
-}
-
 // Median wall time of one step, over batches of steps lasting about 0.2 s in all.
 double step_seconds(int res, int threads, bool full_physics) {
   using Clock = std::chrono::steady_clock;
-  SolverT<float> solver(grid_scene(res, threads, full_physics));
+  SolverT<float> solver(bench::sheet_scene(res, threads, full_physics));
   solver.step(10);
   std::vector<double> samples;
   const auto start = Clock::now();
@@ -81,7 +59,7 @@ int main(int argc, char** argv) {
         (step_seconds(mid, threads, full) <= kBudgetSeconds ? lo : hi) = mid;
       }
       const double seconds = step_seconds(lo, threads, full);
-      SolverT<float> probe(grid_scene(lo, threads, full));
+      SolverT<float> probe(bench::sheet_scene(lo, threads, full));
       const char* name = full ? "full" : "springs";
       std::printf("%-9s %-8d %4d^2    %-10zu %-10zu %.3f\n", name, threads, lo,
                   probe.vertex_count(), probe.spring_count(), 1e3 * seconds);

@@ -6,49 +6,24 @@
 //
 // Counters: per_spring_step in seconds (lower is better) and springs. The "physics" argument
 // selects springs only (0: Hooke + along-spring damping + gravity) or the default scene's full set
-// (1: also drag and gusty wind on the surface normals).
+// (1: also drag and gusty wind on the surface normals); "kernel" the spring kernel (0: row sweep,
+// the default; 1: neighbour list, the general gather).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <fstream>
 
+#include "bench/bench_scenes.hpp"
 #include "sim/solver_impl.hpp"
 
 namespace clothlab {
 namespace {
 
-Scene bench_scene(int res, int threads, bool full_physics) {
-  Scene s;
-  ClothSpec c;
-  c.size = {2.0, 2.0};
-  c.resolution = {res, res};
-  c.origin = {-1.0, 2.5, 0.0};
-  c.u_axis = {1.0, 0.0, 0.0};
-  c.v_axis = {0.0, -1.0, 0.0};
-  c.mass = 1.0;
-  c.pins = {{0, 0}, {res - 1, 0}};
-  s.cloths.push_back(c);
-  s.springs.stiffness = 800.0;
-  // The default sheet's damping (0.05 N*s/m at 32 x 32) scaled with the vertex mass, so every
-  // grid has the same damping rate c / m; a fixed c would make fine grids unstable
-  // (dt^2 w^2 + 2 dt gamma < 4, design.md).
-  s.springs.damping = 0.05 * (32.0 * 32.0) / (res * res);
-  if (full_physics) {
-    s.forces.drag = 0.001;
-    s.forces.wind = {true, {3.0, 0.0, 1.0}, 0.5, 7, 1.0, 1.0};
-  }
-  // Half the symplectic Euler limit 0.654 sqrt(m / k0) (design.md), so the run stays physical.
-  s.solver.dt = 0.5 * 0.654 * std::sqrt(c.mass / (res * res) / s.springs.stiffness);
-  s.solver.threads = threads;
-  s.solver.integrator = IntegratorKind::symplectic_euler;
-  return s;
-}
-
 void BM_SymplecticEulerStep(benchmark::State& state) {
   const int res = static_cast<int>(state.range(0));
   const int threads = static_cast<int>(state.range(1));
   const auto kernel = state.range(3) == 0 ? SpringKernel::row_sweep : SpringKernel::neighbour_list;
-  SolverT<float> solver(bench_scene(res, threads, state.range(2) != 0), kernel);
+  SolverT<float> solver(bench::sheet_scene(res, threads, state.range(2) != 0), kernel);
   solver.step(20);  // warm caches and the thread pool
   for (auto _ : state) {
     if (!solver.step(1).ok()) {

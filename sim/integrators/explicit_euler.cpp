@@ -1,42 +1,23 @@
 // Forward (explicit) Euler: x' = x + dt v, v' = v + dt a(t, x, v). First order; adds energy on
 // every oscillation (|1 + i w dt| > 1), so it is unstable without damping. Kept as the baseline.
-#include "sim/core/parallel.hpp"
-#include "sim/integrators/integrator.hpp"
+#include "sim/integrators/single_evaluation.hpp"
 
 namespace clothlab {
 namespace {
 
-template <class T>
-class ExplicitEuler final : public Integrator<T> {
- public:
-  explicit ExplicitEuler(std::size_t n) { f_.resize(n); }
-
-  void step(const System<T>& sys, State<T>& s, double t, T dt) override {
-    sys.forces(t, s.pos, s.vel, f_);
-    const T* inv_m = sys.model.inv_mass.data();
-    for_each_block(s.pos.size(), sys.threads, [&](std::size_t b, std::size_t e) {
-      for (int a = 0; a < 3; ++a) {
-        T* x = s.pos.axis(a).data();
-        T* v = s.vel.axis(a).data();
-        const T* f = f_.axis(a).data();
-#pragma omp simd
-        for (std::size_t i = b; i < e; ++i) {
-          x[i] += dt * v[i];
-          v[i] += dt * f[i] * inv_m[i];
-        }
-      }
-    });
+struct ExplicitEulerRule {
+  template <class T>
+  static void apply(T& x, T& v, T a, T dt) {
+    x += dt * v;
+    v += dt * a;
   }
-
- private:
-  Vec3Array<T> f_;
 };
 
 }  // namespace
 
 template <class T>
 std::unique_ptr<Integrator<T>> make_explicit_euler(std::size_t n) {
-  return std::make_unique<ExplicitEuler<T>>(n);
+  return std::make_unique<SingleEvaluation<T, ExplicitEulerRule>>(n);
 }
 CLOTHLAB_INSTANTIATE_FACTORY(make_explicit_euler)
 

@@ -1,0 +1,34 @@
+// The skeleton shared by the one-stage integrators (explicit Euler, symplectic Euler, seed_hack):
+// evaluate the force once at the start of the step, then update every vertex independently with
+// the integrator's Rule:  Rule::apply(x, v, a, dt)  for each coordinate, a = f / m.
+#pragma once
+
+#include "sim/core/parallel.hpp"
+#include "sim/integrators/integrator.hpp"
+
+namespace clothlab {
+
+template <class T, class Rule>
+class SingleEvaluation final : public Integrator<T> {
+ public:
+  explicit SingleEvaluation(std::size_t n) { f_.resize(n); }
+
+  void step(const System<T>& sys, State<T>& s, double t, T dt) override {
+    sys.forces(t, s.pos, s.vel, f_);
+    const T* inv_m = sys.model.inv_mass.data();
+    for_each_block(s.pos.size(), sys.threads, [&](std::size_t b, std::size_t e) {
+      for (int a = 0; a < 3; ++a) {
+        T* x = s.pos.axis(a).data();
+        T* v = s.vel.axis(a).data();
+        const T* f = f_.axis(a).data();
+#pragma omp simd
+        for (std::size_t i = b; i < e; ++i) Rule::apply(x[i], v[i], f[i] * inv_m[i], dt);
+      }
+    });
+  }
+
+ private:
+  Vec3Array<T> f_;
+};
+
+}  // namespace clothlab
