@@ -15,7 +15,7 @@ function(clothlab_cli_test name rc regex)
       "-DEXPECT_RC=${rc}"
       "-DEXPECT_REGEX=${regex}"
       -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
-  set_tests_properties(cli.${name} PROPERTIES TIMEOUT 60)
+  set_tests_properties(cli.${name} PROPERTIES TIMEOUT 60 ENVIRONMENT "${CLOTHLAB_TEST_ENVIRONMENT}")
 endfunction()
 
 # clothlab_bad_scene(FILE LINE KEY_REGEX MESSAGE_REGEX): `clothlab check bad_scenes/FILE.toml`
