@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "sim/solver_impl.hpp"
 
@@ -136,6 +137,31 @@ void SolverT<T>::apply_impulse(const Vec3d& center, double radius, const Vec3d& 
   }
   monitor_.add_energy(std::abs(added));
   integrator_->invalidate();
+}
+
+template <class T>
+void SolverT<T>::load_state(const Solver& other) {
+  if (other.vertex_count() != model_.n)
+    throw std::invalid_argument("load_state: the solvers have different vertex counts");
+  for (std::size_t i = 0; i < model_.n; ++i) {
+    const Vec3d p = other.position(static_cast<int>(i)), v = other.velocity(static_cast<int>(i));
+    for (int a = 0; a < 3; ++a) {
+      state_.pos.axis(a)[i] = static_cast<T>(p[a]);
+      state_.vel.axis(a)[i] = model_.inv_mass[i] == T(0) ? T(0) : static_cast<T>(v[a]);
+    }
+  }
+  steps_ = other.step_count();
+  // Keep the simulated time: with another dt the step count is rescaled.
+  if (other.dt() != dt_) steps_ = static_cast<long>(std::llround(other.time() / dt_));
+  pending_ = 0.0;
+  diverged_.reset();
+  state_changed();
+}
+
+template <class T>
+void SolverT<T>::copy_normals(float* xyz) {
+  compute_surface(model_, state_.pos, workspace_, threads_);
+  copy(workspace_.normal, xyz);
 }
 
 template <class T>

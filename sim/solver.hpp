@@ -50,6 +50,18 @@ class Solver {
   // change is exactly `impulse`; with no free vertex in reach the nearest free vertex takes it.
   virtual void apply_impulse(const Vec3d& center, double radius, const Vec3d& impulse) = 0;
 
+  // Read-only views for renderers and exporters (vis/ reads the state, never changes physics).
+  virtual void copy_positions(float* xyz) const = 0;       // 3 floats per vertex
+  virtual void copy_rest_positions(float* xyz) const = 0;  // the built positions
+  virtual void copy_normals(float* xyz) = 0;  // unit area-weighted normals of the current state
+  virtual const std::vector<std::array<int, 3>>& triangles() const = 0;
+  virtual std::vector<std::array<int, 2>> spring_pairs() const = 0;  // every spring once
+  virtual const std::vector<ClothRange>& cloths() const = 0;
+  virtual void copy_velocities(float* xyz) const = 0;
+  // Takes over another solver's positions, velocities, time and step count (same vertex
+  // count), e.g. when a view changes a parameter without restarting the motion.
+  virtual void load_state(const Solver& other) = 0;
+
   virtual void set_threads(int threads) = 0;  // 0 = all cores
   virtual int threads() const = 0;
   virtual void reset() = 0;  // back to the built state at t = 0

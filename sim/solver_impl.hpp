@@ -29,6 +29,16 @@ class SolverT final : public Solver {
   Vec3d force(int vertex) const override { return get(force_field_, vertex); }
   Energy energy() override;
   void apply_impulse(const Vec3d& center, double radius, const Vec3d& impulse) override;
+  void copy_positions(float* xyz) const override { copy(state_.pos, xyz); }
+  void copy_rest_positions(float* xyz) const override { copy(model_.rest_positions, xyz); }
+  void copy_normals(float* xyz) override;
+  const std::vector<std::array<int, 3>>& triangles() const override { return model_.triangles; }
+  std::vector<std::array<int, 2>> spring_pairs() const override {
+    return clothlab::spring_pairs(model_);
+  }
+  const std::vector<ClothRange>& cloths() const override { return model_.cloths; }
+  void copy_velocities(float* xyz) const override { copy(state_.vel, xyz); }
+  void load_state(const Solver& other) override;
   void set_threads(int threads) override;
   int threads() const override { return threads_; }
   void reset() override;
@@ -40,6 +50,13 @@ class SolverT final : public Solver {
   void state_changed();
 
  private:
+  static void copy(const Vec3Array<T>& a, float* xyz) {
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      xyz[3 * i] = static_cast<float>(a.x[i]);
+      xyz[3 * i + 1] = static_cast<float>(a.y[i]);
+      xyz[3 * i + 2] = static_cast<float>(a.z[i]);
+    }
+  }
   static Vec3d get(const Vec3Array<T>& a, int i) {
     const auto k = static_cast<std::size_t>(i);
     return {double(a.x[k]), double(a.y[k]), double(a.z[k])};

@@ -13,6 +13,10 @@ namespace {
 std::atomic<long> g_allocations{0};
 }
 
+// These replacements allocate with malloc, so free is the matching release; GCC cannot see that
+// and warns at every inlined delete.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+
 void* operator new(std::size_t size) {
   ++g_allocations;
   if (void* p = std::malloc(size ? size : 1)) return p;

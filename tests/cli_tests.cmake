@@ -8,6 +8,10 @@ set(CLOTHLAB_DEFAULT_SCENE ${PROJECT_SOURCE_DIR}/scenes/default.toml)
 # clothlab_cli_test(NAME RC REGEX ARGS...): runs `clothlab ARGS...`, expects status RC and output
 # matching REGEX. ARGS must not contain '|' (expect_exit.cmake's separator).
 function(clothlab_cli_test name rc regex)
+  set(environment "${CLOTHLAB_TEST_ENVIRONMENT}")
+  if(name MATCHES "^(render|view)\\.")
+    set(environment "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
+  endif()
   string(JOIN "|" args ${ARGN})
   add_test(NAME cli.${name}
     COMMAND ${CMAKE_COMMAND}
@@ -15,7 +19,7 @@ function(clothlab_cli_test name rc regex)
       "-DEXPECT_RC=${rc}"
       "-DEXPECT_REGEX=${regex}"
       -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
-  set_tests_properties(cli.${name} PROPERTIES TIMEOUT 60 ENVIRONMENT "${CLOTHLAB_TEST_ENVIRONMENT}")
+  set_tests_properties(cli.${name} PROPERTIES TIMEOUT 60 ENVIRONMENT "${environment}")
 endfunction()
 
 # clothlab_bad_scene(FILE LINE KEY_REGEX MESSAGE_REGEX): `clothlab check bad_scenes/FILE.toml`
@@ -105,3 +109,28 @@ clothlab_cli_test(trace.bad_set 2 "--set cloth\\.resolution=\\[0,4\\]: cloth\\.r
   --set cloth.resolution=[0,4])
 clothlab_cli_test(trace.unwritable_out 1 "cannot write trace file"
   trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.01 --out /nonexistent-dir/x.csv)
+
+# `clothlab render` and `clothlab view` (headless EGL on CI). They open OpenGL, so under the
+# sanitizers they run with the GL tests' environment (tests/CMakeLists.txt); render re-executes
+# itself with a passive OpenMP wait policy.
+clothlab_cli_test(render.small 0
+  "render: 3 frames of 64x48 \\(mode 1\\) on .*ms/frame simulation .*ms/frame rendering"
+  render ${CLOTHLAB_DEFAULT_SCENE} --frames 3 --size 64x48 --mode 1 --quiet
+  --out ${CLOTHLAB_TRACE_OUT}/render_small)
+clothlab_cli_test(render.bad_size 2 "--size: must be WxH"
+  render ${CLOTHLAB_DEFAULT_SCENE} --size 64 --out ${CLOTHLAB_TRACE_OUT}/render_bad)
+clothlab_cli_test(render.bad_mode 2 "--mode: Value 7 not in range"
+  render ${CLOTHLAB_DEFAULT_SCENE} --mode 7 --out ${CLOTHLAB_TRACE_OUT}/render_bad)
+clothlab_cli_test(render.bad_video 1 "ffmpeg (failed to write|stopped accepting frames for) '/nonexistent-dir/x.mp4'"
+  render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 32x32 --quiet
+  --out ${CLOTHLAB_TRACE_OUT}/render_video --video /nonexistent-dir/x.mp4)
+# Without a display, view says so in one line, suggests render and exits 1 (DISPLAY is removed
+# so the test never opens a window on a developer's desktop).
+add_test(NAME cli.view.no_display
+  COMMAND ${CMAKE_COMMAND}
+    "-DCOMMAND=${CMAKE_COMMAND}|-E|env|--unset=DISPLAY|--unset=WAYLAND_DISPLAY|$<TARGET_FILE:clothlab>|view"
+    "-DEXPECT_RC=1"
+    "-DEXPECT_REGEX=clothlab view: no display available.*clothlab render"
+    -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
+set_tests_properties(cli.view.no_display PROPERTIES TIMEOUT 60
+  ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")

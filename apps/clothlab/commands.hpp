@@ -19,7 +19,26 @@ struct TraceArgs {
   std::string out;
 };
 
+struct RenderArgs {
+  std::string scene;
+  std::vector<std::string> overrides;
+  int frames = 60;
+  int mode = 3;  // display mode, keys 1-3
+  int width = 1280, height = 720;
+  double fps = 60.0;   // simulated time per frame = 1 / fps
+  std::string out;     // directory for frame_00000.png, ...
+  std::string video;   // optional MP4 through ffmpeg
+  bool quiet = false;  // no progress bar
+};
+
+struct ViewArgs {
+  std::string scene;  // empty: the default scene
+  std::vector<std::string> overrides;
+};
+
 int run_check(const CheckArgs& args);
+int run_render(const RenderArgs& args);
+int run_view(const ViewArgs& args);
 int run_trace_command(const TraceArgs& args);
 
 // The command line that replays a run, printed with runtime failures (pbrt's habit).

@@ -120,14 +120,24 @@ void compute_forces(const Model<T>& m, double t, const Vec3Array<T>& x, const Ve
   }
   const WindField wind(m.wind);
   if (!m.wind.enabled || wind.calm() || m.triangles.empty()) return;
-  for_each_block(m.triangles.size(), threads,
-                 [&](std::size_t b, std::size_t e) { compute_faces(m, x, ws, b, e); });
+  compute_surface(m, x, ws, threads);
   for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) {
-    compute_vertex_normals(m, ws, b, e);
     add_wind_forces(wind, t, x, v, ws, f, b, e);
   });
 }
 
+template <class T>
+void compute_surface(const Model<T>& m, const Vec3Array<T>& x, ForceWorkspace<T>& ws, int threads) {
+  for_each_block(m.triangles.size(), threads,
+                 [&](std::size_t b, std::size_t e) { compute_faces(m, x, ws, b, e); });
+  for_each_block(m.n, threads,
+                 [&](std::size_t b, std::size_t e) { compute_vertex_normals(m, ws, b, e); });
+}
+
+template void compute_surface<float>(const Model<float>&, const Vec3Array<float>&,
+                                     ForceWorkspace<float>&, int);
+template void compute_surface<double>(const Model<double>&, const Vec3Array<double>&,
+                                      ForceWorkspace<double>&, int);
 template void compute_forces<float>(const Model<float>&, double, const Vec3Array<float>&,
                                     const Vec3Array<float>&, Vec3Array<float>&,
                                     ForceWorkspace<float>&, int);

@@ -29,4 +29,9 @@ template <class T>
 void compute_forces(const Model<T>& m, double t, const Vec3Array<T>& x, const Vec3Array<T>& v,
                     Vec3Array<T>& f, ForceWorkspace<T>& ws, int threads);
 
+// Fills ws.normal (unit, area-weighted) and ws.vertex_area for the positions x; used by the wind
+// force and by renderers (Solver::copy_normals), so both see the same surface.
+template <class T>
+void compute_surface(const Model<T>& m, const Vec3Array<T>& x, ForceWorkspace<T>& ws, int threads);
+
 }  // namespace clothlab

@@ -153,6 +153,35 @@ Model<T> build_model(const Scene& scene, SpringKernel kernel) {
   return m;
 }
 
+template <class T>
+std::vector<std::array<int, 2>> spring_pairs(const Model<T>& m) {
+  std::vector<std::array<int, 2>> pairs;
+  pairs.reserve(m.spring_count);
+  for (const GridStencil<T>& g : m.grids) {
+    for (int j = 0; j < g.nv; ++j) {
+      for (int i = 0; i < g.nu; ++i) {
+        for (const auto& e : g.entries) {
+          if (!e.first_half || i + e.di < 0 || i + e.di >= g.nu || j + e.dj >= g.nv) continue;
+          const int a = g.offset + i + j * g.nu;
+          pairs.push_back({a, a + static_cast<int>(e.shift)});
+        }
+      }
+    }
+  }
+  for (std::size_t i = 0; i < m.n && m.kernel == SpringKernel::neighbour_list; ++i) {
+    for (int s = 0; s < m.slots; ++s) {
+      const std::size_t k = static_cast<std::size_t>(s) * m.n + i;
+      const int j = m.neighbour[k];
+      if (static_cast<std::size_t>(j) > i && m.stiffness[k] != T(0))
+        pairs.push_back({static_cast<int>(i), j});
+    }
+  }
+  return pairs;
+}
+
+template std::vector<std::array<int, 2>> spring_pairs<float>(const Model<float>&);
+template std::vector<std::array<int, 2>> spring_pairs<double>(const Model<double>&);
+
 template Model<float> build_model<float>(const Scene&, SpringKernel);
 template Model<double> build_model<double>(const Scene&, SpringKernel);
 

@@ -73,6 +73,10 @@ struct Model {
   Vec3Array<T> rest_positions;  // the built (initial) positions
 };
 
+// Every spring once, as (a, b) with a < b, whichever kernel the model uses (for drawing springs).
+template <class T>
+std::vector<std::array<int, 2>> spring_pairs(const Model<T>& m);
+
 template <class T>
 Model<T> build_model(const Scene& scene, SpringKernel kernel = SpringKernel::row_sweep);
 

@@ -1,0 +1,40 @@
+// `clothlab view [SCENE] [--set k=v]...`: parses the scene, then hands it to the interactive
+// window (vis/window/view_app.hpp). Only wiring and the mapping of errors to exit statuses.
+#include <cstdio>
+#include <exception>
+
+#include "apps/clothlab/commands.hpp"
+#include "sim/scene/scene_parser.hpp"
+#include "vis/gl/gl_error.hpp"
+#include "vis/window/view_app.hpp"
+
+namespace clothlab::app {
+
+int run_view(const ViewArgs& args) {
+  const std::string path = args.scene.empty() ? std::string(CLOTHLAB_DEFAULT_SCENE) : args.scene;
+  Scene scene;
+  try {
+    scene = parse_scene_file(path, args.overrides);
+  } catch (const SceneError& e) {
+    std::fprintf(stderr, "clothlab view: %s\n", e.what());
+    return 2;
+  }
+  try {
+    vis::ViewApp app(std::move(scene), vis::ViewHooks::from_environment());
+    return app.run();
+  } catch (const SceneError& e) {  // the scene parsed but the solver could not be built from it
+    std::fprintf(stderr, "clothlab view: %s\n", e.what());
+    return 2;
+  } catch (const vis::GlUnavailable& e) {
+    std::fprintf(stderr, "clothlab view: %s\n", e.what());
+    return 1;
+  } catch (const vis::ShaderError& e) {
+    std::fprintf(stderr, "clothlab view: %s\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {  // e.g. a screenshot that could not be written
+    std::fprintf(stderr, "clothlab view: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace clothlab::app

@@ -1,0 +1,117 @@
+// Golden images of display modes 1, 2 and 3 (320 x 240) of a fixed scene after a fixed number of
+// steps, rendered headless (EGL; Mesa llvmpipe on CI) and compared with tests/golden/modeK.png.
+// Tolerance: at most 0.5 % of the pixels may differ by more than 8/255 in any channel, and the
+// mean absolute difference over all channels must stay below 1/255. On failure the actual image
+// and a difference image (|actual - golden| x 8) are written next to the test's output.
+// Regenerate on purpose with scripts/update-golden (CLOTHLAB_UPDATE_GOLDEN=1).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+
+#include "sim/solver_impl.hpp"
+#include "test_scenes.hpp"
+#include "vis/render/headless_renderer.hpp"
+#include "vis/textures/image.hpp"
+
+namespace clothlab {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr int kWidth = 320, kHeight = 240;
+
+// A 1.2 m sheet pinned at its top corners, 0.3 s after release: folds, stretch near the pins.
+Scene golden_scene() {
+  Scene s = testing::sheet(24, 1.2, 0.3, 600.0, IntegratorKind::symplectic_euler, 5e-4);
+  s.cloths[0].origin = {-0.6, 1.6, 0.0};
+  s.cloths[0].pins = {{0, 0}, {23, 0}};
+  s.springs.damping = 0.01;
+  s.forces.wind = {true, {0.0, 0.0, 1.5}, 0.0, 0, 1.0, 1.0};
+  return s;
+}
+
+struct Comparison {
+  double fraction_over = 0.0;  // pixels with a channel off by more than 8/255
+  double mean_abs = 0.0;       // mean |difference| over all channels, in 1/255
+};
+
+Comparison compare(const Image& actual, const Image& golden, Image& diff) {
+  Comparison c;
+  long over = 0;
+  double sum = 0.0;
+  diff = Image(actual.width, actual.height);
+  for (int y = 0; y < actual.height; ++y) {
+    for (int x = 0; x < actual.width; ++x) {
+      int worst = 0;
+      for (int ch = 0; ch < 3; ++ch) {
+        const int d = std::abs(int(actual.at(x, y)[ch]) - int(golden.at(x, y)[ch]));
+        worst = std::max(worst, d);
+        sum += d;
+        diff.at(x, y)[ch] = static_cast<std::uint8_t>(std::min(255, 8 * d));
+      }
+      over += worst > 8;
+    }
+  }
+  const double pixels = double(actual.width) * actual.height;
+  c.fraction_over = over / pixels;
+  c.mean_abs = sum / (3.0 * pixels);
+  return c;
+}
+
+class GoldenImage : public ::testing::TestWithParam<int> {
+ protected:
+  static void SetUpTestSuite() {
+    renderer_ = std::make_unique<vis::HeadlessRenderer>(kWidth, kHeight);
+    solver_ = std::make_unique<SolverT<float>>(golden_scene());
+    ASSERT_TRUE(solver_->step(600).ok());
+    renderer_->set_cloth(*solver_);
+  }
+  static void TearDownTestSuite() {
+    solver_.reset();
+    renderer_.reset();
+  }
+  static std::unique_ptr<vis::HeadlessRenderer> renderer_;
+  static std::unique_ptr<SolverT<float>> solver_;
+};
+std::unique_ptr<vis::HeadlessRenderer> GoldenImage::renderer_;
+std::unique_ptr<SolverT<float>> GoldenImage::solver_;
+
+TEST_P(GoldenImage, MatchesTheStoredImage) {
+  const int mode = GetParam();
+  vis::ViewSettings view = vis::default_view(*solver_);
+  view.mode = static_cast<vis::DisplayMode>(mode);
+  Image actual(kWidth, kHeight);
+  actual.rgba = renderer_->render(*solver_, view);
+
+  const std::string name = "mode" + std::to_string(mode);
+  const fs::path golden_path = fs::path(CLOTHLAB_SOURCE_DIR) / "tests" / "golden" / (name + ".png");
+  if (const char* update = std::getenv("CLOTHLAB_UPDATE_GOLDEN"); update && *update == '1') {
+    write_png(actual, golden_path.string());
+    GTEST_SKIP() << "regenerated " << golden_path;
+  }
+  ASSERT_TRUE(fs::exists(golden_path)) << golden_path << " is missing: run scripts/update-golden";
+  const Image golden = read_png(golden_path.string());
+  ASSERT_EQ(golden.width, kWidth);
+  ASSERT_EQ(golden.height, kHeight);
+  Image diff;
+  const Comparison c = compare(actual, golden, diff);
+  const bool ok = c.fraction_over <= 0.005 && c.mean_abs < 1.0;
+  if (!ok) {
+    const fs::path out = fs::current_path() / "golden_out";
+    fs::create_directories(out);
+    write_png(actual, (out / (name + "_actual.png")).string());
+    write_png(diff, (out / (name + "_diff.png")).string());
+    ADD_FAILURE() << name << ": " << 100.0 * c.fraction_over
+                  << " % of pixels differ by more than 8/255 (limit 0.5 %), mean absolute "
+                  << "difference " << c.mean_abs << "/255 (limit 1/255); see " << out;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, GoldenImage, ::testing::Values(1, 2, 3),
+                         [](const auto& param_info) {
+                           return "mode" + std::to_string(param_info.param);
+                         });
+
+}  // namespace
+}  // namespace clothlab

@@ -1,0 +1,98 @@
+// Move-only RAII owners of GL objects (style.md: "GL objects are move-only RAII types under
+// vis/gl/"). Each wraps one name and deletes it with the matching glDelete* call.
+#pragma once
+
+#include <utility>
+
+#include "vis/gl/gl.hpp"
+
+namespace clothlab::vis {
+
+template <void (*Delete)(GLuint)>
+class GlName {
+ public:
+  GlName() = default;
+  explicit GlName(GLuint name) : name_(name) {}
+  GlName(GlName&& other) noexcept : name_(std::exchange(other.name_, 0)) {}
+  GlName& operator=(GlName&& other) noexcept {
+    if (this != &other) {
+      reset();
+      name_ = std::exchange(other.name_, 0);
+    }
+    return *this;
+  }
+  GlName(const GlName&) = delete;
+  GlName& operator=(const GlName&) = delete;
+  ~GlName() { reset(); }
+
+  GLuint get() const { return name_; }
+  explicit operator bool() const { return name_ != 0; }
+  void reset() {
+    if (name_) Delete(name_);
+    name_ = 0;
+  }
+
+ private:
+  GLuint name_ = 0;
+};
+
+namespace detail {
+inline void delete_buffer(GLuint n) {
+  glDeleteBuffers(1, &n);
+}
+inline void delete_vertex_array(GLuint n) {
+  glDeleteVertexArrays(1, &n);
+}
+inline void delete_texture(GLuint n) {
+  glDeleteTextures(1, &n);
+}
+inline void delete_framebuffer(GLuint n) {
+  glDeleteFramebuffers(1, &n);
+}
+inline void delete_renderbuffer(GLuint n) {
+  glDeleteRenderbuffers(1, &n);
+}
+inline void delete_program(GLuint n) {
+  glDeleteProgram(n);
+}
+inline void delete_shader(GLuint n) {
+  glDeleteShader(n);
+}
+}  // namespace detail
+
+using Buffer = GlName<detail::delete_buffer>;
+using VertexArray = GlName<detail::delete_vertex_array>;
+using Texture = GlName<detail::delete_texture>;
+using Framebuffer = GlName<detail::delete_framebuffer>;
+using Renderbuffer = GlName<detail::delete_renderbuffer>;
+using Program = GlName<detail::delete_program>;
+using Shader = GlName<detail::delete_shader>;
+
+// Creation helpers (direct state access, GL 4.5).
+inline Buffer make_buffer() {
+  GLuint n = 0;
+  glCreateBuffers(1, &n);
+  return Buffer(n);
+}
+inline VertexArray make_vertex_array() {
+  GLuint n = 0;
+  glCreateVertexArrays(1, &n);
+  return VertexArray(n);
+}
+inline Texture make_texture(GLenum target) {
+  GLuint n = 0;
+  glCreateTextures(target, 1, &n);
+  return Texture(n);
+}
+inline Framebuffer make_framebuffer() {
+  GLuint n = 0;
+  glCreateFramebuffers(1, &n);
+  return Framebuffer(n);
+}
+inline Renderbuffer make_renderbuffer() {
+  GLuint n = 0;
+  glCreateRenderbuffers(1, &n);
+  return Renderbuffer(n);
+}
+
+}  // namespace clothlab::vis

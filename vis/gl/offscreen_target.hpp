@@ -1,0 +1,31 @@
+// A framebuffer to render into without a window: multisampled colour and depth, resolved into a
+// plain RGBA8 framebuffer that is read back to memory.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "vis/gl/objects.hpp"
+
+namespace clothlab::vis {
+
+class OffscreenTarget {
+ public:
+  OffscreenTarget(int width, int height, int samples = 4);
+
+  // Binds the multisampled framebuffer and sets the viewport.
+  void bind() const;
+  GLuint framebuffer() const { return msaa_fbo_.get(); }
+  // Resolves and reads the image: RGBA8, row 0 at the top.
+  std::vector<std::uint8_t> read_rgba();
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+ private:
+  int width_, height_;
+  Framebuffer msaa_fbo_, resolve_fbo_;
+  Renderbuffer msaa_color_, msaa_depth_, resolve_color_;
+  std::vector<std::uint8_t> rows_;
+};
+
+}  // namespace clothlab::vis

@@ -1,0 +1,172 @@
+#include "vis/render/renderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "sim/solver.hpp"
+#include "vis/gl/program.hpp"
+#include "vis/textures/fabric_texture.hpp"
+#include "vis/textures/floor_texture.hpp"
+
+namespace clothlab::vis {
+namespace {
+
+// std140 layout of the Frame block in shaders/frame.glsl.
+struct FrameBlock {
+  glm::mat4 view_proj;
+  glm::vec4 eye;
+  glm::vec4 light_position;
+  glm::vec4 light_color;  // rgb intensity, a ambient
+  glm::vec4 params;       // x strain range, y floor height
+};
+
+Texture upload_texture(const Image& image) {
+  Texture t = make_texture(GL_TEXTURE_2D);
+  const int levels = 1 + static_cast<int>(std::log2(std::max(image.width, image.height)));
+  glTextureStorage2D(t.get(), levels, GL_SRGB8_ALPHA8, image.width, image.height);
+  glTextureSubImage2D(t.get(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                      image.rgba.data());
+  glGenerateTextureMipmap(t.get());
+  glTextureParameteri(t.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(t.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(t.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(t.get(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+  glTextureParameterf(t.get(), GL_TEXTURE_MAX_ANISOTROPY, 8.0f);
+  return t;
+}
+
+void attribute(GLuint vao, GLuint index, GLuint binding, int components) {
+  glEnableVertexArrayAttrib(vao, index);
+  glVertexArrayAttribFormat(vao, index, components, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(vao, index, binding);
+}
+
+}  // namespace
+
+Renderer::Renderer()
+    : cloth_program_(build_program({"cloth.vert", "cloth.frag"})),
+      floor_program_(build_program({"floor.vert", "floor.frag"})),
+      springs_program_(build_program({"springs.vert", "springs.geom", "springs.frag"})),
+      fabric_(upload_texture(make_fabric_texture())),
+      tiles_(upload_texture(make_floor_texture())),
+      frame_ubo_(make_buffer()),
+      empty_vao_(make_vertex_array()) {
+  glNamedBufferStorage(frame_ubo_.get(), sizeof(FrameBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glObjectLabel(GL_TEXTURE, fabric_.get(), -1, "fabric albedo");
+  glObjectLabel(GL_TEXTURE, tiles_.get(), -1, "floor tiles");
+}
+
+void Renderer::set_cloth(Solver& solver) {
+  vertices_ = solver.vertex_count();
+  const std::size_t n = vertices_;
+  // Static attributes: UV (i / (nu - 1), j / (nv - 1)) per cloth, then rest positions.
+  std::vector<float> fixed(5 * n);
+  for (const ClothRange& c : solver.cloths()) {
+    for (int j = 0; j < c.nv; ++j) {
+      for (int i = 0; i < c.nu; ++i) {
+        const std::size_t v = static_cast<std::size_t>(c.offset + i + j * c.nu);
+        fixed[2 * v] = c.nu > 1 ? float(i) / float(c.nu - 1) : 0.0f;
+        fixed[2 * v + 1] = c.nv > 1 ? float(j) / float(c.nv - 1) : 0.0f;
+      }
+    }
+  }
+  solver.copy_rest_positions(fixed.data() + 2 * n);
+  std::vector<std::uint32_t> triangles;
+  for (const auto& t : solver.triangles())
+    for (int v : t) triangles.push_back(static_cast<std::uint32_t>(v));
+  std::vector<std::uint32_t> lines;
+  for (const auto& s : solver.spring_pairs())
+    for (int v : s) lines.push_back(static_cast<std::uint32_t>(v));
+  triangle_indices_ = static_cast<GLsizei>(triangles.size());
+  line_indices_ = static_cast<GLsizei>(lines.size());
+
+  dynamic_vbo_ = make_buffer();
+  static_vbo_ = make_buffer();
+  triangle_ebo_ = make_buffer();
+  line_ebo_ = make_buffer();
+  auto bytes = [](const auto& v) {
+    return static_cast<GLsizeiptr>(std::max<std::size_t>(1, v.size() * sizeof(v[0])));
+  };
+  glNamedBufferStorage(dynamic_vbo_.get(), static_cast<GLsizeiptr>(6 * n * sizeof(float)), nullptr,
+                       GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(static_vbo_.get(), bytes(fixed), fixed.data(), 0);
+  glNamedBufferStorage(triangle_ebo_.get(), bytes(triangles), triangles.data(), 0);
+  glNamedBufferStorage(line_ebo_.get(), bytes(lines), lines.data(), 0);
+
+  // Two vertex arrays over the same vertex buffers: triangles and spring lines.
+  cloth_vao_ = make_vertex_array();
+  line_vao_ = make_vertex_array();
+  for (GLuint vao : {cloth_vao_.get(), line_vao_.get()}) {
+    const auto n_bytes = static_cast<GLintptr>(3 * n * sizeof(float));
+    glVertexArrayVertexBuffer(vao, 0, dynamic_vbo_.get(), 0, 3 * sizeof(float));        // position
+    glVertexArrayVertexBuffer(vao, 1, dynamic_vbo_.get(), n_bytes, 3 * sizeof(float));  // normal
+    glVertexArrayVertexBuffer(vao, 2, static_vbo_.get(), 0, 2 * sizeof(float));         // uv
+    glVertexArrayVertexBuffer(vao, 3, static_vbo_.get(),
+                              static_cast<GLintptr>(2 * n * sizeof(float)),
+                              3 * sizeof(float));  // rest position
+    for (GLuint a = 0; a < 4; ++a) attribute(vao, a, a, a == 2 ? 2 : 3);
+  }
+  glVertexArrayElementBuffer(cloth_vao_.get(), triangle_ebo_.get());
+  glVertexArrayElementBuffer(line_vao_.get(), line_ebo_.get());
+  staging_.resize(6 * n);
+}
+
+void Renderer::update_cloth(Solver& solver) {
+  solver.copy_positions(staging_.data());
+  solver.copy_normals(staging_.data() + 3 * vertices_);
+  glNamedBufferSubData(dynamic_vbo_.get(), 0,
+                       static_cast<GLsizeiptr>(staging_.size() * sizeof(float)), staging_.data());
+}
+
+void Renderer::draw(const ViewSettings& view, int width, int height) {
+  FrameBlock frame;
+  const float aspect = height > 0 ? float(width) / float(height) : 1.0f;
+  frame.view_proj = view.camera.projection(aspect) * view.camera.view();
+  frame.eye = glm::vec4(view.camera.eye(), 1.0f);
+  frame.light_position = glm::vec4(view.light_position, 1.0f);
+  frame.light_color = glm::vec4(view.light_color * view.light_intensity, view.ambient);
+  frame.params = glm::vec4(view.strain_range, view.floor_height, 0.0f, 0.0f);
+  glNamedBufferSubData(frame_ubo_.get(), 0, sizeof frame, &frame);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, frame_ubo_.get());
+
+  glEnable(GL_FRAMEBUFFER_SRGB);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_MULTISAMPLE);
+  glDisable(GL_CULL_FACE);  // cloth is two-sided
+  const glm::vec3 bg = view.background;
+  const float clear[4] = {bg.r, bg.g, bg.b, 1.0f};
+  glClearBufferfv(GL_COLOR, 0, clear);
+  glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
+
+  // Floor.
+  glUseProgram(floor_program_.get());
+  glProgramUniform1f(floor_program_.get(),
+                     glGetUniformLocation(floor_program_.get(), "u_half_size"),
+                     view.floor_half_size);
+  glProgramUniform1f(floor_program_.get(),
+                     glGetUniformLocation(floor_program_.get(), "u_tile_size"),
+                     view.floor_tile_size);
+  glBindTextureUnit(0, tiles_.get());
+  glBindVertexArray(empty_vao_.get());
+  glDrawArrays(GL_TRIANGLES, 0, 6);
+
+  if (view.mode == DisplayMode::springs) {
+    glUseProgram(springs_program_.get());
+    glBindVertexArray(line_vao_.get());
+    glDrawElements(GL_LINES, line_indices_, GL_UNSIGNED_INT, nullptr);
+  } else {
+    glUseProgram(cloth_program_.get());
+    glProgramUniform1i(cloth_program_.get(), glGetUniformLocation(cloth_program_.get(), "u_mode"),
+                       static_cast<int>(view.mode));
+    glProgramUniform1f(cloth_program_.get(),
+                       glGetUniformLocation(cloth_program_.get(), "u_texture_repeat"),
+                       view.fabric_repeat);
+    glBindTextureUnit(0, fabric_.get());
+    glBindVertexArray(cloth_vao_.get());
+    glDrawElements(GL_TRIANGLES, triangle_indices_, GL_UNSIGNED_INT, nullptr);
+  }
+  glBindVertexArray(0);
+}
+
+}  // namespace clothlab::vis

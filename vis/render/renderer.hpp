@@ -1,0 +1,43 @@
+// The render passes shared by the window and headless rendering: floor, shaded cloth (modes 2
+// and 3) and springs as lines (mode 1). Draws into whatever framebuffer is bound; only context
+// creation differs between window and headless. Needs a current OpenGL 4.5 core context.
+#pragma once
+
+#include <vector>
+
+#include "vis/gl/objects.hpp"
+#include "vis/render/view_settings.hpp"
+
+namespace clothlab {
+class Solver;
+}
+
+namespace clothlab::vis {
+
+class Renderer {
+ public:
+  Renderer();
+
+  // (Re)builds the cloth's static buffers: UVs, rest positions, triangle and spring indices.
+  // Call after building or resizing the solver.
+  void set_cloth(Solver& solver);
+  // Uploads the current positions and smooth normals (computed in parallel by the solver) into
+  // the vertex buffer, in place. Call once per frame before draw().
+  void update_cloth(Solver& solver);
+  // Draws the scene into the bound framebuffer of the given size.
+  void draw(const ViewSettings& view, int width, int height);
+
+ private:
+  Program cloth_program_, floor_program_, springs_program_;
+  Texture fabric_, tiles_;
+  Buffer frame_ubo_;
+  // One vertex buffer for what changes every frame (positions, then normals) and one for what
+  // does not (UVs, then rest positions); triangles and spring lines index the same vertices.
+  Buffer dynamic_vbo_, static_vbo_, triangle_ebo_, line_ebo_;
+  VertexArray cloth_vao_, line_vao_, empty_vao_;
+  std::vector<float> staging_;
+  std::size_t vertices_ = 0;
+  GLsizei triangle_indices_ = 0, line_indices_ = 0;
+};
+
+}  // namespace clothlab::vis

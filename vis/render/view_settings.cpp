@@ -1,0 +1,68 @@
+#include "vis/render/view_settings.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <vector>
+
+#include "sim/solver.hpp"
+
+namespace clothlab::vis {
+
+glm::vec3 OrbitCamera::eye() const {
+  const float yaw = glm::radians(yaw_deg), pitch = glm::radians(pitch_deg);
+  const glm::vec3 dir{std::cos(pitch) * std::sin(yaw), std::sin(pitch),
+                      std::cos(pitch) * std::cos(yaw)};
+  return target + distance * dir;
+}
+
+glm::mat4 OrbitCamera::view() const {
+  return glm::lookAt(eye(), target, glm::vec3(0, 1, 0));
+}
+
+glm::mat4 OrbitCamera::projection(float aspect) const {
+  const float near = std::max(0.01f, distance * 0.01f);
+  return glm::perspective(glm::radians(fov_deg), aspect, near, near * 10000.0f);
+}
+
+void OrbitCamera::orbit(float dyaw_deg, float dpitch_deg) {
+  yaw_deg = std::fmod(yaw_deg + dyaw_deg, 360.0f);
+  pitch_deg = std::clamp(pitch_deg + dpitch_deg, -89.0f, 89.0f);
+}
+
+void OrbitCamera::pan(float right, float up) {
+  const glm::mat4 v = view();
+  const glm::vec3 r{v[0][0], v[1][0], v[2][0]}, u{v[0][1], v[1][1], v[2][1]};
+  target += right * r + up * u;
+}
+
+void OrbitCamera::zoom(float factor) {
+  distance = std::clamp(distance * factor, 0.05f, 500.0f);
+}
+
+ViewSettings default_view(const Solver& solver) {
+  ViewSettings s;
+  std::vector<float> xyz(3 * solver.vertex_count());
+  solver.copy_positions(xyz.data());
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (std::size_t i = 0; i < solver.vertex_count(); ++i) {
+    const glm::vec3 p{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const glm::vec3 centre = 0.5f * (lo + hi);
+  const float radius = std::max(0.25f, 0.5f * glm::length(hi - lo));
+  s.floor_height = std::min(0.0f, lo.y - 0.5f * radius);
+  s.camera.target = centre;
+  // Far enough that the bounding sphere fills about 85 % of the view's height.
+  s.camera.distance = radius / std::sin(glm::radians(0.5f * s.camera.fov_deg)) / 0.85f;
+  s.light_position = centre + glm::vec3(0.6f * radius, 1.8f * radius, 1.4f * radius);
+  // Irradiance of about 1 at the cloth, whatever its size.
+  const float d = glm::length(s.light_position - centre);
+  s.light_intensity = 1.2f * d * d;
+  s.floor_half_size = std::max(6.0f, 4.0f * radius);
+  s.floor_tile_size = std::max(2.0f, 1.5f * radius);  // 4 x 4 stone tiles per repeat
+  return s;
+}
+
+}  // namespace clothlab::vis

@@ -1,0 +1,53 @@
+// ViewSettings: every choice a user can make about how the cloth is shown, in one plain struct
+// with its defaults here (style.md: one settings struct edited by keys and the UI, no scattered
+// statics). Nothing here changes the physics.
+#pragma once
+
+#include <glm/glm.hpp>
+
+namespace clothlab {
+class Solver;
+}
+
+namespace clothlab::vis {
+
+// Keys 1-3 (design.md): springs as lines coloured by strain, world normals as colour, Lambert
+// with the fabric texture.
+enum class DisplayMode { springs = 1, normals = 2, lambert = 3 };
+
+// A camera orbiting a target point: yaw about +y, pitch above the horizon, distance in metres.
+struct OrbitCamera {
+  glm::vec3 target{0.0f, 1.5f, 0.0f};
+  float yaw_deg = 25.0f;
+  float pitch_deg = 15.0f;
+  float distance = 5.0f;
+  float fov_deg = 40.0f;  // vertical field of view
+
+  glm::vec3 eye() const;
+  glm::mat4 view() const;
+  glm::mat4 projection(float aspect) const;
+  void orbit(float dyaw_deg, float dpitch_deg);
+  void pan(float right, float up);  // in metres
+  void zoom(float factor);          // distance *= factor
+};
+
+struct ViewSettings {
+  DisplayMode mode = DisplayMode::lambert;
+  OrbitCamera camera;
+  glm::vec3 light_position{1.0f, 4.0f, 2.5f};  // m
+  glm::vec3 light_color{1.0f, 0.95f, 0.88f};
+  float light_intensity = 16.0f;  // scales light_color; irradiance falls off as 1/d^2
+  float ambient = 0.05f;
+  float strain_range = 0.02f;                 // springs colour map saturates at +-2 % strain
+  float floor_height = 0.0f;                  // m
+  float floor_half_size = 6.0f;               // m
+  float floor_tile_size = 1.0f;               // m per floor texture repeat
+  float fabric_repeat = 6.0f;                 // fabric texture repeats across a cloth
+  glm::vec3 background{0.60f, 0.70f, 0.80f};  // sRGB
+};
+
+// Settings framing the solver's cloth: camera on its bounding box, floor below its lowest point
+// (at 0 when the cloth is above 0), light above and in front.
+ViewSettings default_view(const Solver& solver);
+
+}  // namespace clothlab::vis

@@ -1,0 +1,260 @@
+#include "vis/window/control_panel.hpp"
+
+#include <imgui.h>
+
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "vis/window/scene_edit.hpp"
+
+namespace clothlab::vis {
+namespace {
+
+const ImVec4 kErrorColour{1.0f, 0.45f, 0.4f, 1.0f};
+const ImVec4 kWarningColour{1.0f, 0.8f, 0.3f, 1.0f};
+constexpr float kPanelWidth = 380.0f;
+
+constexpr IntegratorKind kIntegrators[] = {
+    IntegratorKind::explicit_euler, IntegratorKind::symplectic_euler, IntegratorKind::seed_hack,
+    IntegratorKind::verlet, IntegratorKind::rk4};
+
+// True when an edit of the last widget is finished -- a slider released, typed text confirmed, a
+// combo item or checkbox clicked -- so the solver is rebuilt once per edit, not once per frame
+// of a drag (a rebuild of a 512 x 512 cloth takes a while).
+bool committed(bool changed) {
+  return (changed && !ImGui::IsItemActive()) || ImGui::IsItemDeactivatedAfterEdit();
+}
+
+// A double slider on a logarithmic scale (Ctrl + click types any value).
+bool log_slider(const char* label, double& value, double lo, double hi) {
+  return committed(ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, "%.4g",
+                                       ImGuiSliderFlags_Logarithmic));
+}
+
+bool integrator_combo(IntegratorKind& kind) {
+  bool changed = false;
+  if (ImGui::BeginCombo("integrator", to_string(kind))) {
+    for (IntegratorKind k : kIntegrators) {
+      if (ImGui::Selectable(to_string(k), k == kind)) {
+        changed = k != kind;
+        kind = k;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  return changed;
+}
+
+bool spring_editors(SpringSpec& springs) {
+  bool edited = log_slider("stiffness (N/m)", springs.stiffness, 1.0, 1e5);
+  edited |= log_slider("damping (N*s/m)", springs.damping, 0.0, 10.0);
+  return edited;
+}
+
+// Integrator, dt, springs, drag, wind: applied to the running motion once an edit is finished.
+bool dynamics_editors(Scene& draft) {
+  bool edited = integrator_combo(draft.solver.integrator);
+  edited |= committed(ImGui::InputDouble("dt (s)", &draft.solver.dt, 0.0, 0.0, "%.6g"));
+  edited |= spring_editors(draft.springs);
+  for (ClothSpec& cloth : draft.cloths) {
+    if (!cloth.springs) continue;  // this cloth's own springs replace the shared ones
+    ImGui::PushID(cloth.key.c_str());
+    ImGui::TextDisabled("%s.springs", cloth.key.c_str());
+    edited |= spring_editors(*cloth.springs);
+    ImGui::PopID();
+  }
+  edited |= log_slider("drag (N*s/m)", draft.forces.drag, 0.0, 1.0);
+  edited |= committed(ImGui::Checkbox("wind (W)", &draft.forces.wind.enabled));
+  double speed = wind_speed(draft);
+  const double lo = 0.0, hi = 30.0;
+  if (committed(ImGui::SliderScalar("wind speed (m/s)", ImGuiDataType_Double, &speed, &lo, &hi,
+                                    "%.3g"))) {
+    set_wind_speed(draft, speed);
+    edited = true;
+  } else if (ImGui::IsItemActive()) {
+    set_wind_speed(draft, speed);  // follow the slider; applied on release
+  }
+  return edited;
+}
+
+// Resolution per cloth; structural, so it waits for Reset.
+bool structure_editors(Scene& draft) {
+  bool edited = false;
+  for (ClothSpec& cloth : draft.cloths) {
+    ImGui::PushID(cloth.key.c_str());
+    const std::string label = cloth.key + " resolution";
+    edited |= committed(ImGui::InputInt2(label.c_str(), cloth.resolution.data()));
+    ImGui::PopID();
+  }
+  return edited;
+}
+
+std::optional<Action> buttons(const SimSession& session) {
+  std::optional<Action> clicked;
+  if (ImGui::Button(session.paused ? "Run (Space)" : "Pause (Space)")) clicked = Action::pause;
+  ImGui::SameLine();
+  if (ImGui::Button("Step (.)")) clicked = Action::single_step;
+  ImGui::SameLine();
+  if (ImGui::Button("Reset (R)")) clicked = Action::reset;
+  ImGui::SameLine();
+  if (ImGui::Button("Screenshot")) clicked = Action::screenshot;
+  return clicked;
+}
+
+void statistics(SimSession& session, const FrameStats& stats) {
+  const Solver& solver = session.solver();
+  ImGui::Text("simulated time   %.3f s  (step %ld)", solver.time(), solver.step_count());
+  ImGui::Text("steps per frame  %.1f", stats.steps_per_frame());
+  ImGui::Text("time per step    %.4f ms", stats.ms_per_step());
+  ImGui::Text("frame time       %.1f ms", stats.frame_ms());
+  ImGui::Text("vertices         %zu", solver.vertex_count());
+  ImGui::Text("springs          %zu", solver.spring_count());
+  ImGui::Text("threads          %d", solver.threads());
+}
+
+void messages(const SimSession& session, const FrameStats& stats, const PanelState& state) {
+  if (session.divergence()) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(kErrorColour, "%s", session.divergence()->message().c_str());
+    ImGui::TextColored(kErrorColour, "Stopped. Press R to reset.");
+    ImGui::PopTextWrapPos();
+  }
+  if (stats.behind() && !session.paused && !session.divergence())
+    ImGui::TextColored(kWarningColour, "can't keep up: slowed to %.0f %% of real time",
+                       stats.real_time_percent());
+  if (!state.message.empty()) ImGui::TextWrapped("%s", state.message.c_str());
+}
+
+}  // namespace
+
+std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view, PanelState& state,
+                                         const FrameStats& stats) {
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+  // Fixed width, height following the content (error lines come and go).
+  ImGui::SetNextWindowSizeConstraints(ImVec2(kPanelWidth, 0.0f), ImVec2(kPanelWidth, FLT_MAX));
+  std::optional<Action> clicked;
+  if (!ImGui::Begin("ClothLab", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::End();
+    return clicked;
+  }
+  ImGui::PushItemWidth(-150.0f);  // room for the labels on the right
+  ImGui::TextDisabled("%s   (H: keys)",
+                      std::filesystem::path(session.scene().file).filename().string().c_str());
+  clicked = buttons(session);
+
+  Scene& draft = session.draft();
+  if (dynamics_editors(draft)) session.apply_dynamics();
+  if (!session.error().empty()) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(kErrorColour, "not applied: %s", session.error().c_str());
+    ImGui::PopTextWrapPos();
+  }
+
+  const double push_lo = 0.0, push_hi = 10.0;
+  ImGui::SliderScalar("push (N*s)", ImGuiDataType_Double, &state.push_strength, &push_lo, &push_hi,
+                      "%.3g");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("P")) clicked = Action::push;
+
+  if (structure_editors(draft)) session.check_structure();
+  if (session.structure_pending() && session.structure_error().empty())
+    ImGui::TextColored(kWarningColour, "new resolution applies on Reset (R)");
+  if (!session.structure_error().empty()) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(kErrorColour, "%s", session.structure_error().c_str());
+    ImGui::PopTextWrapPos();
+  }
+
+  bool parallel = session.parallel();
+  if (ImGui::Checkbox("parallel solver (M)", &parallel)) clicked = Action::toggle_parallel;
+
+  int mode = static_cast<int>(view.mode);
+  ImGui::AlignTextToFramePadding();
+  ImGui::Text("display");
+  ImGui::SameLine();
+  ImGui::RadioButton("1 springs", &mode, 1);
+  ImGui::SameLine();
+  ImGui::RadioButton("2 normals", &mode, 2);
+  ImGui::SameLine();
+  ImGui::RadioButton("3 shaded", &mode, 3);
+  view.mode = static_cast<DisplayMode>(mode);
+  ImGui::PopItemWidth();
+
+  ImGui::Separator();
+  statistics(session, stats);
+  messages(session, stats, state);
+  ImGui::End();
+  return clicked;
+}
+
+void draw_help_overlay(bool& open) {
+  if (!open) return;
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(
+      ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 10.0f, viewport->WorkPos.y + 10.0f),
+      ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+  ImGui::SetNextWindowBgAlpha(0.85f);
+  if (ImGui::Begin("Keys", &open,
+                   ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                       ImGuiWindowFlags_NoMove)) {
+    if (ImGui::BeginTable("keys", 2)) {
+      for (const KeyBinding& b : key_bindings()) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(b.name.data(), b.name.data() + b.name.size());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(b.help.data(), b.help.data() + b.help.size());
+      }
+      const char* mouse[][2] = {{"left drag", "orbit"}, {"right drag", "pan"}, {"wheel", "zoom"}};
+      for (const auto& row : mouse) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(row[0]);
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(row[1]);
+      }
+      ImGui::EndTable();
+    }
+  }
+  ImGui::End();
+}
+
+void draw_status_overlay(const SimSession& session, const FrameStats& stats) {
+  std::string line;
+  ImVec4 colour = kWarningColour;
+  if (session.divergence()) {
+    line = "Simulation stopped: " + session.divergence()->message() + "  --  R resets";
+    colour = kErrorColour;
+  } else if (session.paused) {
+    line = "Paused  (Space runs, . steps)";
+    colour = ImVec4(1, 1, 1, 1);
+  } else if (stats.behind()) {
+    char text[96];
+    std::snprintf(text, sizeof text, "can't keep up: slowed to %.0f %% of real time",
+                  stats.real_time_percent());
+    line = text;
+  }
+  if (line.empty()) return;
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + 0.5f * viewport->WorkSize.x,
+                                 viewport->WorkPos.y + viewport->WorkSize.y - 10.0f),
+                          ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+  ImGui::SetNextWindowBgAlpha(0.6f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
+                                 ImGuiWindowFlags_AlwaysAutoResize |
+                                 ImGuiWindowFlags_NoSavedSettings |
+                                 ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f),
+                                      ImVec2(0.7f * viewport->WorkSize.x, FLT_MAX));
+  if (ImGui::Begin("status", nullptr, flags)) {
+    ImGui::PushTextWrapPos(0.7f * viewport->WorkSize.x - 20.0f);
+    ImGui::TextColored(colour, "%s", line.c_str());
+    ImGui::PopTextWrapPos();
+  }
+  ImGui::End();
+}
+
+}  // namespace clothlab::vis

@@ -1,0 +1,35 @@
+// The Dear ImGui side of the window: the control panel (edits the live scene's draft and shows
+// statistics), the help overlay (H) and the status overlay (pause, "can't keep up", divergence).
+// Immediate mode: each function reads and writes the state it is given, every frame.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "vis/render/view_settings.hpp"
+#include "vis/window/frame_stats.hpp"
+#include "vis/window/input.hpp"
+#include "vis/window/sim_session.hpp"
+
+namespace clothlab::vis {
+
+// Window options that are not about how the cloth is drawn (those live in ViewSettings).
+struct PanelState {
+  double push_strength = 0.5;  // N*s, momentum of one push (P)
+  bool show_help = false;
+  std::string message;  // last notice, e.g. where a screenshot went
+};
+
+// Draws the panel. Applies edits to the session (values that keep the topology at once, a
+// resolution on Reset) and returns the action of a clicked button, dispatched like its key.
+std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view, PanelState& state,
+                                         const FrameStats& stats);
+
+// Every key of the key table and the mouse controls.
+void draw_help_overlay(bool& open);
+
+// A line at the bottom of the window when the simulation is paused, behind real time or stopped
+// on divergence.
+void draw_status_overlay(const SimSession& session, const FrameStats& stats);
+
+}  // namespace clothlab::vis

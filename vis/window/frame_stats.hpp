@@ -1,0 +1,38 @@
+// Timing statistics of the window, averaged over half-second windows so the numbers in the panel
+// and the title are readable rather than flickering every frame.
+#pragma once
+
+namespace clothlab::vis {
+
+struct FrameSample {
+  double frame_seconds = 0.0;  // wall time since the previous frame
+  double step_seconds = 0.0;   // wall time spent inside the solver's advance
+  long steps = 0;
+  double simulated = 0.0;  // simulated seconds this frame
+  double requested = 0.0;  // simulated seconds real time asked for (0 while paused)
+  bool capped = false;     // FrameStepper dropped time this frame
+};
+
+class FrameStats {
+ public:
+  static constexpr double kWindowSeconds = 0.5;
+
+  void add(const FrameSample& s);
+
+  double frame_ms() const { return frame_ms_; }
+  double ms_per_step() const { return ms_per_step_; }  // last measured; kept while paused
+  double steps_per_frame() const { return steps_per_frame_; }
+  // Share of real time that was simulated, when frames were capped in the last window.
+  bool behind() const { return behind_; }
+  double real_time_percent() const { return real_time_percent_; }
+
+ private:
+  FrameSample sum_;  // the window being accumulated
+  long frames_ = 0;
+  bool capped_ = false;
+  double frame_ms_ = 0.0, ms_per_step_ = 0.0, steps_per_frame_ = 0.0;
+  double real_time_percent_ = 100.0;
+  bool behind_ = false;
+};
+
+}  // namespace clothlab::vis

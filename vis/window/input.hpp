@@ -1,0 +1,63 @@
+// Keys and mouse of the window (design.md, "Keys (window)"). One table binds each key to an
+// action and a help line, so the H overlay always lists exactly the keys that work.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "vis/render/view_settings.hpp"
+
+namespace clothlab::vis {
+
+enum class Action {
+  mode_springs,     // 1: springs <-> the previous shaded mode
+  mode_normals,     // 2
+  mode_lambert,     // 3
+  push,             // P
+  toggle_wind,      // W
+  pause,            // Space
+  single_step,      // .
+  reset,            // R
+  more_vertices,    // +
+  fewer_vertices,   // -
+  toggle_parallel,  // M
+  toggle_help,      // H
+  screenshot,       // F12
+  quit,             // Esc
+};
+
+struct KeyBinding {
+  Action action;
+  std::string_view name;  // as shown in the help and accepted by the test hook (CLOTHLAB_VIEW_KEYS)
+  std::string_view help;
+  int keys[3];   // GLFW key codes, 0 = unused
+  bool repeats;  // also fires on key repeat (held + / - / .)
+};
+
+std::span<const KeyBinding> key_bindings();
+
+// The action of a GLFW key event (GLFW_PRESS or GLFW_REPEAT), if any.
+std::optional<Action> action_for_key(int glfw_key, int glfw_action);
+// The action named like a binding ("P", "Space", "F12"), for the test hook.
+std::optional<Action> action_named(std::string_view name);
+
+// Display mode after key 1-3: key 1 toggles between springs and the last shaded mode.
+void select_mode(ViewSettings& view, DisplayMode& last_shaded, Action action);
+
+// Mouse camera control: left drag orbits, right drag pans, the wheel zooms.
+class MouseCamera {
+ public:
+  // A button went down or up at (x, y) window pixels. A press over the UI (ui_has_mouse) or with
+  // Ctrl held (reserved for pulling the cloth) starts no drag.
+  void button(int glfw_button, int glfw_action, int mods, bool ui_has_mouse, double x, double y);
+  // The cursor moved; window_height (pixels) scales panning so the target follows the cursor.
+  void move(ViewSettings& view, double x, double y, int window_height);
+  void scroll(ViewSettings& view, double wheel_steps, bool ui_has_mouse) const;
+
+ private:
+  enum class Drag { none, orbit, pan } drag_ = Drag::none;
+  double last_x_ = 0.0, last_y_ = 0.0;
+};
+
+}  // namespace clothlab::vis

@@ -1,0 +1,272 @@
+#include "vis/window/view_app.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+#include "vis/gl/gl.hpp"
+#include "vis/render/renderer.hpp"
+#include "vis/window/imgui_layer.hpp"
+#include "vis/window/scene_edit.hpp"
+#include "vis/window/screenshot.hpp"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+namespace clothlab::vis {
+namespace {
+
+constexpr int kInitialWidth = 1280, kInitialHeight = 800;
+constexpr double kResolutionFactor = 1.25;  // per + / - press
+constexpr double kTitleRefreshSeconds = 0.25;
+constexpr long kDefaultHookFrames = 60;
+constexpr long kMaxStepsPerFrame = 400;     // FrameStepper's default cap
+constexpr double kStepBudgetSeconds = 0.1;  // of solver time per frame: >= ~8 fps
+
+// The app behind a GLFW window, set with glfwSetWindowUserPointer (no globals).
+ViewApp& app_of(GLFWwindow* window) {
+  return *static_cast<ViewApp*>(glfwGetWindowUserPointer(window));
+}
+
+std::vector<std::string> split_commas(const std::string& text) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(text);
+  while (std::getline(in, part, ',')) parts.push_back(part);
+  return parts;
+}
+
+}  // namespace
+
+ViewHooks ViewHooks::from_environment() {
+  ViewHooks hooks;
+  if (const char* n = std::getenv("CLOTHLAB_VIEW_EXIT_AFTER_FRAMES"))
+    hooks.exit_after_frames = std::max(0L, std::atol(n));
+  if (const char* path = std::getenv("CLOTHLAB_VIEW_SCREENSHOT")) {
+    hooks.screenshot = path;
+    if (hooks.exit_after_frames == 0) hooks.exit_after_frames = kDefaultHookFrames;
+  }
+  if (const char* keys = std::getenv("CLOTHLAB_VIEW_KEYS")) hooks.keys = split_commas(keys);
+  return hooks;
+}
+
+ViewApp::ViewApp(Scene scene, ViewHooks hooks)
+    : session_(std::move(scene)),
+      hooks_(std::move(hooks)),
+      scene_name_(std::filesystem::path(session_.scene().file).filename().string()),
+      window_("ClothLab — " + scene_name_, kInitialWidth, kInitialHeight),
+      renderer_(std::make_unique<Renderer>()),
+      view_(default_view(session_.solver())) {
+  install_callbacks();
+  imgui_ = std::make_unique<ImGuiLayer>(window_.handle());
+  // A push of 0.5 m/s on average over the whole cloth: visible, never violent.
+  panel_.push_strength = 0.5 * total_mass(session_.scene());
+  last_frame_time_ = glfwGetTime();
+}
+
+// The GL objects and the UI go before the window, which owns the context.
+ViewApp::~ViewApp() {
+  imgui_.reset();
+  renderer_.reset();
+}
+
+void ViewApp::install_callbacks() {
+  GLFWwindow* w = window_.handle();
+  glfwSetWindowUserPointer(w, this);
+  glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int) {
+    if (const auto a = action_for_key(key, action)) app_of(win).pending_actions_.push_back(*a);
+  });
+  glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int button, int action, int mods) {
+    ViewApp& app = app_of(win);
+    double x = 0.0, y = 0.0;
+    glfwGetCursorPos(win, &x, &y);
+    app.mouse_.button(button, action, mods, app.imgui_ && app.imgui_->wants_mouse(), x, y);
+  });
+  glfwSetCursorPosCallback(w, [](GLFWwindow* win, double x, double y) {
+    ViewApp& app = app_of(win);
+    int width = 0, height = 0;
+    glfwGetWindowSize(win, &width, &height);
+    app.mouse_.move(app.view_, x, y, height);
+  });
+  glfwSetScrollCallback(w, [](GLFWwindow* win, double, double dy) {
+    ViewApp& app = app_of(win);
+    app.mouse_.scroll(app.view_, dy, app.imgui_ && app.imgui_->wants_mouse());
+  });
+}
+
+int ViewApp::run() {
+  while (!window_.should_close()) {
+    frame();
+    if (hooks_.exit_after_frames > 0 && frame_index_ >= hooks_.exit_after_frames) break;
+  }
+  return 0;
+}
+
+void ViewApp::frame() {
+  ++frame_index_;
+  glfwPollEvents();
+  imgui_->begin_frame();
+  if (imgui_->wants_keyboard()) pending_actions_.clear();  // typing into a field, not commands
+  const std::size_t hook = static_cast<std::size_t>(frame_index_ - 1);
+  if (hook < hooks_.keys.size()) {
+    if (const auto a = action_named(hooks_.keys[hook]))
+      pending_actions_.push_back(*a);
+    else if (!hooks_.keys[hook].empty())
+      std::fprintf(stderr, "clothlab view: test hook: unknown key \"%s\"\n",
+                   hooks_.keys[hook].c_str());
+  }
+  for (Action a : pending_actions_) dispatch(a);
+  pending_actions_.clear();
+
+  const double now = glfwGetTime();
+  const double wall = now - last_frame_time_;
+  last_frame_time_ = now;
+  // A rebuilt cloth is shown once at t = 0 before it moves (and before a scene that diverges at
+  // once has nothing sane left to show).
+  if (rendered_generation_ == session_.generation()) simulate(wall);
+
+  if (const auto clicked = draw_control_panel(session_, view_, panel_, stats_)) dispatch(*clicked);
+  if (view_.mode != DisplayMode::springs) last_shaded_ = view_.mode;
+  draw_help_overlay(panel_.show_help);
+  draw_status_overlay(session_, stats_);
+
+  int width = 0, height = 0;
+  window_.framebuffer_size(width, height);
+  if (width > 0 && height > 0) {
+    draw(width, height);
+  } else {
+    imgui_->end_frame_without_drawing();  // minimised
+  }
+  const bool last_hook_frame =
+      hooks_.exit_after_frames > 0 && frame_index_ >= hooks_.exit_after_frames;
+  if (screenshot_requested_) take_screenshot(screenshot_file_name(), width, height);
+  if (last_hook_frame && !hooks_.screenshot.empty())
+    take_screenshot(hooks_.screenshot, width, height);
+  screenshot_requested_ = false;
+  window_.swap_buffers();
+  update_title();
+}
+
+// Advances by the wall time of the last frame and measures the solver's share of it.
+void ViewApp::simulate(double wall_seconds) {
+  FrameSample sample;
+  sample.frame_seconds = wall_seconds;
+  const double before = session_.solver().time();
+  const bool running = !session_.paused && !session_.divergence();
+  const auto t0 = std::chrono::steady_clock::now();
+  const FrameAdvance r = session_.advance(stepper_, wall_seconds);
+  sample.step_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  sample.steps = r.steps;
+  sample.simulated = session_.solver().time() - before;
+  sample.requested = running ? wall_seconds : 0.0;
+  sample.capped = r.capped;
+  stats_.add(sample);
+  // Where a frame of steps takes longer than kStepBudgetSeconds the view slows the simulation
+  // down rather than the window (FrameStepper reports it as capped, and the panel warns).
+  if (stats_.ms_per_step() > 0.0) {
+    const long budget = std::lround(1e3 * kStepBudgetSeconds / stats_.ms_per_step());
+    const long cap = std::clamp(budget, 1L, kMaxStepsPerFrame);
+    if (cap != stepper_.max_steps_per_frame()) stepper_ = FrameStepper(cap);
+  }
+}
+
+void ViewApp::dispatch(Action action) {
+  switch (action) {
+    case Action::mode_springs:
+    case Action::mode_normals:
+    case Action::mode_lambert:
+      select_mode(view_, last_shaded_, action);
+      break;
+    case Action::push:
+      push();
+      break;
+    case Action::toggle_wind:
+      session_.toggle_wind();
+      break;
+    case Action::pause:
+      session_.paused = !session_.paused;
+      break;
+    case Action::single_step:  // from a running simulation: stop there, then step
+      if (session_.paused) session_.single_step();
+      session_.paused = true;
+      break;
+    case Action::reset:
+      session_.reset();
+      break;
+    case Action::more_vertices:
+      session_.scale_resolution(kResolutionFactor);
+      break;
+    case Action::fewer_vertices:
+      session_.scale_resolution(1.0 / kResolutionFactor);
+      break;
+    case Action::toggle_parallel:
+      session_.toggle_parallel();
+      break;
+    case Action::toggle_help:
+      panel_.show_help = !panel_.show_help;
+      break;
+    case Action::screenshot:
+      screenshot_requested_ = true;
+      break;
+    case Action::quit:
+      window_.request_close();
+      break;
+  }
+}
+
+// Along the camera's view direction, so the cloth moves away from the viewer.
+void ViewApp::push() {
+  const glm::vec3 d = glm::normalize(view_.camera.target - view_.camera.eye());
+  const double s = panel_.push_strength;
+  session_.push(Vec3d{s * d.x, s * d.y, s * d.z});
+}
+
+void ViewApp::draw(int width, int height) {
+  Solver& solver = session_.solver();
+  if (rendered_generation_ != session_.generation()) {
+    renderer_->set_cloth(solver);  // a reset may have changed the vertex count
+    rendered_generation_ = session_.generation();
+  }
+  // A diverged state is all NaN or kilometres away: keep showing the last sane one.
+  if (!session_.divergence()) renderer_->update_cloth(solver);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, width, height);
+  renderer_->draw(view_, width, height);
+  // The UI's colours are sRGB already: no second encoding.
+  glDisable(GL_FRAMEBUFFER_SRGB);
+  imgui_->end_frame();
+}
+
+void ViewApp::take_screenshot(const std::string& path, int width, int height) {
+  if (width <= 0 || height <= 0) return;
+  try {
+    write_png(read_default_framebuffer(width, height), path);
+    panel_.message = "screenshot: " + path;
+    std::printf("clothlab view: wrote %s\n", path.c_str());
+  } catch (const std::exception& e) {
+    panel_.message = e.what();  // a full disk is no reason to close the window
+    std::fprintf(stderr, "clothlab view: %s\n", e.what());
+  }
+}
+
+// "ClothLab — default.toml — 0.031 ms/step, 16.7 ms/frame", refreshed a few times a second.
+void ViewApp::update_title() {
+  const double now = glfwGetTime();
+  if (now - last_title_time_ < kTitleRefreshSeconds) return;
+  last_title_time_ = now;
+  char timing[96];
+  std::snprintf(timing, sizeof timing, "%.3f ms/step, %.1f ms/frame", stats_.ms_per_step(),
+                stats_.frame_ms());
+  std::string title = "ClothLab — " + scene_name_ + " — " + timing;
+  if (session_.divergence())
+    title += " — diverged (R resets)";
+  else if (session_.paused)
+    title += " — paused";
+  window_.set_title(title);
+}
+
+}  // namespace clothlab::vis

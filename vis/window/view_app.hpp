@@ -1,0 +1,81 @@
+// `clothlab view`: the window's frame loop. Each frame: poll input, advance the simulation by
+// the wall-clock time since the previous frame (FrameStepper, so the motion does not depend on
+// the frame rate), draw the cloth and the panel, and show the time per step and per frame in the
+// title.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sim/realtime/frame_stepper.hpp"
+#include "sim/scene/scene.hpp"
+#include "vis/render/view_settings.hpp"
+#include "vis/window/control_panel.hpp"
+#include "vis/window/frame_stats.hpp"
+#include "vis/window/glfw_window.hpp"
+#include "vis/window/input.hpp"
+#include "vis/window/sim_session.hpp"
+
+namespace clothlab::vis {
+
+class ImGuiLayer;
+class Renderer;
+
+// Test hooks, read from the environment so the window can be tested under a virtual display
+// (xvfb-run) without a person at the keyboard. Not part of the documented interface:
+//   CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=N  quit by itself after frame N;
+//   CLOTHLAB_VIEW_SCREENSHOT=file.png  write the last frame (N, default 60) to file.png;
+//   CLOTHLAB_VIEW_KEYS="H,1,,P"        press these keys, one per frame from frame 1, by their
+//                                      names in the help (an empty entry presses nothing).
+struct ViewHooks {
+  long exit_after_frames = 0;  // 0: run until the user quits
+  std::string screenshot;
+  std::vector<std::string> keys;
+
+  static ViewHooks from_environment();
+};
+
+class ViewApp {
+ public:
+  // Opens the window and builds the solver. Throws GlUnavailable (no display, no GL 4.5 core),
+  // ShaderError, or SceneError (a scene that cannot be built).
+  ViewApp(Scene scene, ViewHooks hooks);
+  ~ViewApp();
+  ViewApp(const ViewApp&) = delete;
+  ViewApp& operator=(const ViewApp&) = delete;
+
+  int run();  // until Esc or the window is closed; returns the exit status (0)
+
+ private:
+  void install_callbacks();
+  void frame();
+  void simulate(double wall_seconds);
+  void dispatch(Action action);
+  void draw(int width, int height);
+  void take_screenshot(const std::string& path, int width, int height);
+  void update_title();
+  void push();
+
+  SimSession session_;
+  ViewHooks hooks_;
+  std::string scene_name_;
+  GlfwWindow window_;
+  std::unique_ptr<Renderer> renderer_;
+  std::unique_ptr<ImGuiLayer> imgui_;  // created after our GLFW callbacks, which it chains to
+  ViewSettings view_;
+  DisplayMode last_shaded_ = DisplayMode::lambert;
+  MouseCamera mouse_;
+  PanelState panel_;
+  FrameStepper stepper_;
+  FrameStats stats_;
+  // Key actions of this frame, handled after ImGui's NewFrame has decided whether it wants the
+  // keyboard (a text field being edited).
+  std::vector<Action> pending_actions_;
+  long rendered_generation_ = -1;
+  long frame_index_ = 0;
+  double last_frame_time_ = 0.0, last_title_time_ = -1.0;
+  bool screenshot_requested_ = false;
+};
+
+}  // namespace clothlab::vis
