@@ -2,8 +2,11 @@
 // (message names file, line and key, or the argument), 1 runtime failure (e.g. divergence).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "sim/scene/scene.hpp"
 
 namespace clothlab::app {
 
@@ -40,6 +43,13 @@ int run_check(const CheckArgs& args);
 int run_render(const RenderArgs& args);
 int run_view(const ViewArgs& args);
 int run_trace_command(const TraceArgs& args);
+
+// Parses and validates a scene for subcommand `command`; on bad input prints
+// "clothlab <command>: <file:line:col: key: message>" to stderr and returns nothing (the caller
+// exits with status 2).
+std::optional<Scene> load_scene(const char* command, const std::string& path,
+                                const std::vector<std::string>& overrides);
+inline constexpr int kBadInput = 2;
 
 // The command line that replays a run, printed with runtime failures (pbrt's habit).
 std::string replay_command(const std::string& scene, const std::vector<std::string>& overrides,

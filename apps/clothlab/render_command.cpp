@@ -33,13 +33,9 @@ std::string frame_path(const std::string& dir, int frame) {
 }  // namespace
 
 int run_render(const RenderArgs& args) {
-  Scene scene;
-  try {
-    scene = parse_scene_file(args.scene, args.overrides);
-  } catch (const SceneError& e) {
-    std::fprintf(stderr, "clothlab render: %s\n", e.what());
-    return 2;
-  }
+  std::optional<Scene> loaded = load_scene("render", args.scene, args.overrides);
+  if (!loaded) return kBadInput;
+  Scene& scene = *loaded;
   std::error_code ec;
   std::filesystem::create_directories(args.out, ec);
   if (ec || !std::filesystem::is_directory(args.out)) {

@@ -19,13 +19,9 @@ std::string replay_command(const std::string& scene, const std::vector<std::stri
 }
 
 int run_trace_command(const TraceArgs& args) {
-  Scene scene;
-  try {
-    scene = parse_scene_file(args.scene, args.overrides);
-  } catch (const SceneError& e) {
-    std::fprintf(stderr, "clothlab trace: %s\n", e.what());
-    return 2;
-  }
+  std::optional<Scene> loaded = load_scene("trace", args.scene, args.overrides);
+  if (!loaded) return kBadInput;
+  Scene& scene = *loaded;
   const auto solver = make_solver(scene);
   const TraceSpec spec = scene.trace ? *scene.trace : default_trace(scene);
   const bool doubles = scene.solver.precision == Precision::f64;

@@ -12,13 +12,9 @@ namespace clothlab::app {
 
 int run_view(const ViewArgs& args) {
   const std::string path = args.scene.empty() ? std::string(CLOTHLAB_DEFAULT_SCENE) : args.scene;
-  Scene scene;
-  try {
-    scene = parse_scene_file(path, args.overrides);
-  } catch (const SceneError& e) {
-    std::fprintf(stderr, "clothlab view: %s\n", e.what());
-    return 2;
-  }
+  std::optional<Scene> loaded = load_scene("view", path, args.overrides);
+  if (!loaded) return kBadInput;
+  Scene& scene = *loaded;
   try {
     vis::ViewApp app(std::move(scene), vis::ViewHooks::from_environment());
     return app.run();
