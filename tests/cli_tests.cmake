@@ -134,3 +134,25 @@ add_test(NAME cli.view.no_display
     -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
 set_tests_properties(cli.view.no_display PROPERTIES TIMEOUT 60
   ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
+
+# The window itself, under a virtual X display (Xvfb, installed by scripts/deps): it opens,
+# takes every display mode and the main keys, quits by itself after 40 frames with status 0
+# and writes a screenshot of its last frame, which must be a real picture. The test hooks are
+# described in vis/window/view_app.hpp.
+find_program(XVFB_RUN xvfb-run)
+if(XVFB_RUN)
+  set(CLOTHLAB_VIEW_SHOT ${CLOTHLAB_TRACE_OUT}/view_last_frame.png)
+  add_test(NAME cli.view.window
+    COMMAND ${CMAKE_COMMAND}
+      "-DCOMMAND=${CMAKE_COMMAND}|-E|env|--unset=WAYLAND_DISPLAY|CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=40|CLOTHLAB_VIEW_SCREENSHOT=${CLOTHLAB_VIEW_SHOT}|CLOTHLAB_VIEW_KEYS=2,,1,,3,,P,,W,,M,,H,,.,,Space|${XVFB_RUN}|-a|-s|-screen 0 1024x768x24|$<TARGET_FILE:clothlab>|view|${CLOTHLAB_DEFAULT_SCENE}"
+      "-DEXPECT_RC=0"
+      -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
+  add_test(NAME cli.view.window_screenshot
+    COMMAND ${CMAKE_COMMAND} -DFILE=${CLOTHLAB_VIEW_SHOT} -DMIN_BYTES=30000
+      -P ${CMAKE_CURRENT_LIST_DIR}/check_png.cmake)
+  set_tests_properties(cli.view.window PROPERTIES TIMEOUT 120 FIXTURES_SETUP view_window
+    ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
+  set_tests_properties(cli.view.window_screenshot PROPERTIES FIXTURES_REQUIRED view_window)
+else()
+  message(WARNING "xvfb-run not found: the window test is not run (scripts/deps installs it)")
+endif()
