@@ -128,12 +128,32 @@ void compute_forces(const Model<T>& m, double t, const Vec3Array<T>& x, const Ve
 
 template <class T>
 void compute_surface(const Model<T>& m, const Vec3Array<T>& x, ForceWorkspace<T>& ws, int threads) {
+  if (m.kernel != SpringKernel::row_sweep) {
+    compute_surface_from_triangles(m, x, ws, threads);
+    return;
+  }
+  for (std::size_t c = 0; c < m.grids.size(); ++c) {
+    const GridStencil<T>& g = m.grids[c];
+    GridFaces<T>& faces = ws.grid_faces[c];
+    for_each_index(g.nv - 1, threads, [&](int qj) { grid_face_row(g, x, faces, qj); });
+    for_each_index(g.nv, threads,
+                   [&](int j) { grid_normal_row(g, faces, ws.normal, ws.vertex_area, j); });
+  }
+}
+
+template <class T>
+void compute_surface_from_triangles(const Model<T>& m, const Vec3Array<T>& x, ForceWorkspace<T>& ws,
+                                    int threads) {
   for_each_block(m.triangles.size(), threads,
                  [&](std::size_t b, std::size_t e) { compute_faces(m, x, ws, b, e); });
   for_each_block(m.n, threads,
                  [&](std::size_t b, std::size_t e) { compute_vertex_normals(m, ws, b, e); });
 }
 
+template void compute_surface_from_triangles<float>(const Model<float>&, const Vec3Array<float>&,
+                                                    ForceWorkspace<float>&, int);
+template void compute_surface_from_triangles<double>(const Model<double>&, const Vec3Array<double>&,
+                                                     ForceWorkspace<double>&, int);
 template void compute_surface<float>(const Model<float>&, const Vec3Array<float>&,
                                      ForceWorkspace<float>&, int);
 template void compute_surface<double>(const Model<double>&, const Vec3Array<double>&,

@@ -1,6 +1,7 @@
 // The total force on every vertex: springs, gravity, linear drag and wind.
 #pragma once
 
+#include "sim/forces/grid_surface.hpp"
 #include "sim/model/model.hpp"
 
 namespace clothlab {
@@ -14,8 +15,12 @@ struct ForceWorkspace {
   // Per vertex: unit area-weighted normal and a third of the surrounding area (m^2).
   Vec3Array<T> normal;
   AlignedVector<T> vertex_area;
-  AlignedVector<T> gust_factor;  // the wind's (1 + gust g) at each vertex
+  AlignedVector<T> gust_factor;          // the wind's (1 + gust g) at each vertex
+  std::vector<GridFaces<T>> grid_faces;  // row-sweep kernel: per grid cloth
   void resize(const Model<T>& m) {
+    grid_faces.resize(m.grids.size());
+    for (std::size_t c = 0; c < m.grids.size(); ++c)
+      grid_faces[c].resize(m.grids[c].nu, m.grids[c].nv);
     face_cross.resize(m.triangles.size() + 1);
     face_area.assign(m.triangles.size() + 1, T(0));
     normal.resize(m.n);
@@ -33,5 +38,11 @@ void compute_forces(const Model<T>& m, double t, const Vec3Array<T>& x, const Ve
 // force and by renderers (Solver::copy_normals), so both see the same surface.
 template <class T>
 void compute_surface(const Model<T>& m, const Vec3Array<T>& x, ForceWorkspace<T>& ws, int threads);
+
+// The same over the model's triangle list, whatever the kernel: the general path, and the
+// reference the grid sweep is tested against.
+template <class T>
+void compute_surface_from_triangles(const Model<T>& m, const Vec3Array<T>& x, ForceWorkspace<T>& ws,
+                                    int threads);
 
 }  // namespace clothlab
