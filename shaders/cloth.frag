@@ -2,8 +2,8 @@
 #include "frame.glsl"
 
 // 2: world-space normal as colour (n * 0.5 + 0.5); 3: Lambert with the fabric texture.
-uniform int u_mode;
-uniform float u_texture_repeat;  // fabric repeats per cloth
+layout(location = 0) uniform int u_mode;
+layout(location = 1) uniform float u_texture_repeat;  // fabric repeats per cloth
 layout(binding = 0) uniform sampler2D u_fabric;
 
 in vec3 v_world;

@@ -1,8 +1,8 @@
 #version 450 core
 #include "frame.glsl"
 
-uniform float u_half_size;  // m
-uniform float u_tile_size;  // m per texture repeat
+layout(location = 0) uniform float u_half_size;  // m
+layout(location = 1) uniform float u_tile_size;  // m per texture repeat
 
 out vec3 v_world;
 out vec2 v_uv;

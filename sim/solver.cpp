@@ -92,32 +92,29 @@ Energy SolverT<T>::energy() {
 
 template <class T>
 void SolverT<T>::apply_impulse(const Vec3d& center, double radius, const Vec3d& impulse) {
-  double weight_mass = 0.0;  // sum of w_i m_i
-  const double r2max = radius * radius;
-  auto weight = [&](std::size_t i) {
-    if (model_.inv_mass[i] == T(0)) return 0.0;
+  auto distance2 = [&](std::size_t i) {
     const Vec3d p = get(state_.pos, static_cast<int>(i));
-    const double r2 = (p[0] - center[0]) * (p[0] - center[0]) +
-                      (p[1] - center[1]) * (p[1] - center[1]) +
-                      (p[2] - center[2]) * (p[2] - center[2]);
-    if (r2 >= r2max) return 0.0;
-    const double q = 1.0 - r2 / r2max;
-    return q * q;
+    return (p[0] - center[0]) * (p[0] - center[0]) + (p[1] - center[1]) * (p[1] - center[1]) +
+           (p[2] - center[2]) * (p[2] - center[2]);
   };
-  for (std::size_t i = 0; i < model_.n; ++i) weight_mass += weight(i) * double(model_.mass[i]);
-
+  // Weights (1 - r^2/R^2)^2 of the free vertices in reach, and their mass-weighted sum.
+  const double r2max = radius * radius;
   std::vector<double> w(model_.n, 0.0);
-  if (weight_mass > 0.0) {
-    for (std::size_t i = 0; i < model_.n; ++i) w[i] = weight(i);
-  } else {  // nothing in reach: the nearest free vertex takes the whole impulse
+  double weight_mass = 0.0;  // sum of w_i m_i
+  for (std::size_t i = 0; i < model_.n; ++i) {
+    if (model_.inv_mass[i] == T(0)) continue;
+    const double r2 = distance2(i);
+    if (r2 >= r2max) continue;
+    const double q = 1.0 - r2 / r2max;
+    w[i] = q * q;
+    weight_mass += w[i] * double(model_.mass[i]);
+  }
+  if (weight_mass == 0.0) {  // nothing in reach: the nearest free vertex takes the whole impulse
     double best = INFINITY;
     std::size_t nearest = model_.n;
     for (std::size_t i = 0; i < model_.n; ++i) {
       if (model_.inv_mass[i] == T(0)) continue;
-      const Vec3d p = get(state_.pos, static_cast<int>(i));
-      const double r2 = (p[0] - center[0]) * (p[0] - center[0]) +
-                        (p[1] - center[1]) * (p[1] - center[1]) +
-                        (p[2] - center[2]) * (p[2] - center[2]);
+      const double r2 = distance2(i);
       if (r2 < best) best = r2, nearest = i;
     }
     if (nearest == model_.n) return;

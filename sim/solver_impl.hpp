@@ -46,7 +46,6 @@ class SolverT final : public Solver {
   // Direct access for tests and benchmarks. Call state_changed() after writing the state.
   const Model<T>& model() const { return model_; }
   State<T>& state() { return state_; }
-  const Vec3Array<T>& force_field() const { return force_field_; }
   void state_changed();
 
  private:

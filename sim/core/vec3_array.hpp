@@ -30,9 +30,4 @@ struct Vec3Array {
   const AlignedVector<T>& axis(int a) const { return a == 0 ? x : (a == 1 ? y : z); }
 };
 
-template <class T>
-using ArrayMap = Eigen::Map<Eigen::Array<T, Eigen::Dynamic, 1>, Eigen::Aligned16>;
-template <class T>
-using ConstArrayMap = Eigen::Map<const Eigen::Array<T, Eigen::Dynamic, 1>, Eigen::Aligned16>;
-
 }  // namespace clothlab

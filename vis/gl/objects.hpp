@@ -68,31 +68,27 @@ using Renderbuffer = GlName<detail::delete_renderbuffer>;
 using Program = GlName<detail::delete_program>;
 using Shader = GlName<detail::delete_shader>;
 
-// Creation helpers (direct state access, GL 4.5).
-inline Buffer make_buffer() {
+// Creation helpers (direct state access, GL 4.5): one name from glCreate*(args..., 1, &name).
+template <class Name, class Create, class... Args>
+Name create_one(Create create, Args... args) {
   GLuint n = 0;
-  glCreateBuffers(1, &n);
-  return Buffer(n);
+  create(args..., 1, &n);
+  return Name(n);
+}
+inline Buffer make_buffer() {
+  return create_one<Buffer>(glCreateBuffers);
 }
 inline VertexArray make_vertex_array() {
-  GLuint n = 0;
-  glCreateVertexArrays(1, &n);
-  return VertexArray(n);
+  return create_one<VertexArray>(glCreateVertexArrays);
 }
 inline Texture make_texture(GLenum target) {
-  GLuint n = 0;
-  glCreateTextures(target, 1, &n);
-  return Texture(n);
+  return create_one<Texture>(glCreateTextures, target);
 }
 inline Framebuffer make_framebuffer() {
-  GLuint n = 0;
-  glCreateFramebuffers(1, &n);
-  return Framebuffer(n);
+  return create_one<Framebuffer>(glCreateFramebuffers);
 }
 inline Renderbuffer make_renderbuffer() {
-  GLuint n = 0;
-  glCreateRenderbuffers(1, &n);
-  return Renderbuffer(n);
+  return create_one<Renderbuffer>(glCreateRenderbuffers);
 }
 
 }  // namespace clothlab::vis

@@ -46,8 +46,9 @@ std::string annotate_shader_log(const std::string& log, const std::vector<std::s
     out.append(begin, m[0].first);
     const auto source = static_cast<std::size_t>(std::stoul(m[2]));
     const std::string name = source < files.size() ? files[source] : files.front();
-    out += m[1].str() + "shaders/" + name + ":" + m[3].str() +
-           (m[5].matched ? ":" + m[5].str() : std::string()) + ":";
+    out.append(m[1].str()).append("shaders/").append(name).append(":").append(m[3].str());
+    if (m[5].matched) out.append(":").append(m[5].str());
+    out.append(":");
     begin = m[0].second;
   }
   out.append(begin, log.cend());

@@ -12,6 +12,10 @@
 namespace clothlab::vis {
 namespace {
 
+// Explicit uniform locations of shaders/floor.vert and shaders/cloth.frag (no lookups per frame).
+constexpr GLint kFloorHalfSize = 0, kFloorTileSize = 1;
+constexpr GLint kClothMode = 0, kClothTextureRepeat = 1;
+
 // std140 layout of the Frame block in shaders/frame.glsl.
 struct FrameBlock {
   glm::mat4 view_proj;
@@ -141,12 +145,8 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
 
   // Floor.
   glUseProgram(floor_program_.get());
-  glProgramUniform1f(floor_program_.get(),
-                     glGetUniformLocation(floor_program_.get(), "u_half_size"),
-                     view.floor_half_size);
-  glProgramUniform1f(floor_program_.get(),
-                     glGetUniformLocation(floor_program_.get(), "u_tile_size"),
-                     view.floor_tile_size);
+  glProgramUniform1f(floor_program_.get(), kFloorHalfSize, view.floor_half_size);
+  glProgramUniform1f(floor_program_.get(), kFloorTileSize, view.floor_tile_size);
   glBindTextureUnit(0, tiles_.get());
   glBindVertexArray(empty_vao_.get());
   glDrawArrays(GL_TRIANGLES, 0, 6);
@@ -157,11 +157,8 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
     glDrawElements(GL_LINES, line_indices_, GL_UNSIGNED_INT, nullptr);
   } else {
     glUseProgram(cloth_program_.get());
-    glProgramUniform1i(cloth_program_.get(), glGetUniformLocation(cloth_program_.get(), "u_mode"),
-                       static_cast<int>(view.mode));
-    glProgramUniform1f(cloth_program_.get(),
-                       glGetUniformLocation(cloth_program_.get(), "u_texture_repeat"),
-                       view.fabric_repeat);
+    glProgramUniform1i(cloth_program_.get(), kClothMode, static_cast<int>(view.mode));
+    glProgramUniform1f(cloth_program_.get(), kClothTextureRepeat, view.fabric_repeat);
     glBindTextureUnit(0, fabric_.get());
     glBindVertexArray(cloth_vao_.get());
     glDrawElements(GL_TRIANGLES, triangle_indices_, GL_UNSIGNED_INT, nullptr);
