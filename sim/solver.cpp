@@ -2,10 +2,12 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "sim/solver_impl.hpp"
+#include "sim/stability/step_limit.hpp"
 
 namespace clothlab {
 namespace {
@@ -22,6 +24,17 @@ State<T> initial_state(const Model<T>& m) {
   return s;
 }
 
+// The scene's solver block with dt = "auto" resolved (sim/stability/step_limit.hpp), so the
+// integrator is built for the step it will take.
+template <class T>
+SolverSpec resolve_step(const Model<T>& m, SolverSpec spec) {
+  if (!spec.dt_auto) return spec;
+  const StepChoice choice = choose_step(spec.integrator, estimate_spectrum(m));
+  spec.dt = choice.dt;
+  spec.substeps = choice.substeps;
+  return spec;
+}
+
 template <class T>
 double initial_energy(const Model<T>& m) {
   std::vector<double> partials;
@@ -34,9 +47,12 @@ template <class T>
 SolverT<T>::SolverT(const Scene& scene, SpringKernel kernel)
     : model_(build_model<T>(scene, kernel)),
       state_(initial_state(model_)),
-      dt_(scene.solver.dt),
+      kind_(scene.solver.integrator),
+      spec_(resolve_step(model_, scene.solver)),
+      dt_(spec_.dt),
+      substeps_(spec_.substeps),
       threads_(resolve_threads(scene.solver.threads)),
-      integrator_(make_integrator<T>(scene.solver.integrator, model_.n)),
+      integrator_(make_integrator<T>(model_, spec_)),
       monitor_(model_, state_, initial_energy(model_)) {
   workspace_.resize(model_);
   force_field_.resize(model_.n);
@@ -59,10 +75,14 @@ AdvanceResult SolverT<T>::step(long count) {
     return result;
   }
   const System<T> sys{model_, workspace_, threads_};
-  const T dt = static_cast<T>(dt_);
+  const double h = dt_ / substeps_;
   Divergence report;
   for (long k = 0; k < count; ++k) {
-    integrator_->step(sys, state_, time(), dt);
+    const double t0 = time();
+    for (int sub = 0; sub < substeps_; ++sub) {
+      integrator_->step(sys, state_, t0 + sub * h, static_cast<T>(h));
+      record(integrator_->last_stats());
+    }
     ++steps_;
     ++result.steps;
     if (monitor_.check(model_, state_, steps_, time(), threads_, report)) {
@@ -72,6 +92,15 @@ AdvanceResult SolverT<T>::step(long count) {
     }
   }
   return result;
+}
+
+template <class T>
+void SolverT<T>::record(const SolveStats& s) {
+  ++totals_.substeps;
+  totals_.iterations += s.iterations;
+  totals_.max_iterations = std::max(totals_.max_iterations, s.iterations);
+  totals_.max_residual = std::max(totals_.max_residual, s.residual);
+  if (!s.converged) ++totals_.unconverged;
 }
 
 template <class T>
@@ -172,6 +201,7 @@ void SolverT<T>::reset() {
   steps_ = 0;
   pending_ = 0.0;
   diverged_.reset();
+  totals_ = {};
   integrator_->invalidate();
 }
 

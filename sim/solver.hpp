@@ -12,6 +12,16 @@
 
 namespace clothlab {
 
+// Iterative work summed since the solver was built or reset (PCG iterations for
+// implicit_euler, sweeps for xpbd and local_global).
+struct SolveTotals {
+  long substeps = 0;        // integrator steps taken
+  long iterations = 0;      // summed over those steps
+  int max_iterations = 0;   // in one step
+  double max_residual = 0;  // relative, largest after any step
+  long unconverged = 0;     // steps that stopped at the iteration cap
+};
+
 struct AdvanceResult {
   long steps = 0;                        // steps taken by this call
   std::optional<Divergence> divergence;  // set when the run stopped on divergence
@@ -31,7 +41,11 @@ class Solver {
 
   virtual double time() const = 0;  // s: steps taken * dt
   virtual long step_count() const = 0;
-  virtual double dt() const = 0;
+  virtual double dt() const = 0;     // s, one step (chosen by the solver for dt = "auto")
+  virtual int substeps() const = 0;  // integrator steps of dt / substeps per step
+  virtual const char* integrator_name() const = 0;
+  virtual SolveStats last_solve() const = 0;  // the integrator's last substep
+  virtual const SolveTotals& solve_totals() const = 0;
   virtual std::size_t vertex_count() const = 0;
   virtual std::size_t spring_count() const = 0;
   virtual int vertex_index(const VertexRef& v) const = 0;

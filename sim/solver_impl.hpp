@@ -19,6 +19,10 @@ class SolverT final : public Solver {
   double time() const override { return static_cast<double>(steps_) * dt_; }
   long step_count() const override { return steps_; }
   double dt() const override { return dt_; }
+  int substeps() const override { return substeps_; }
+  const char* integrator_name() const override { return to_string(kind_); }
+  SolveStats last_solve() const override { return integrator_->last_stats(); }
+  const SolveTotals& solve_totals() const override { return totals_; }
   std::size_t vertex_count() const override { return model_.n; }
   std::size_t spring_count() const override { return model_.spring_count; }
   int vertex_index(const VertexRef& v) const override;
@@ -56,6 +60,7 @@ class SolverT final : public Solver {
       xyz[3 * i + 2] = static_cast<float>(a.z[i]);
     }
   }
+  void record(const SolveStats& s);
   static Vec3d get(const Vec3Array<T>& a, int i) {
     const auto k = static_cast<std::size_t>(i);
     return {double(a.x[k]), double(a.y[k]), double(a.z[k])};
@@ -63,7 +68,10 @@ class SolverT final : public Solver {
 
   Model<T> model_;
   State<T> state_;
+  IntegratorKind kind_;
+  SolverSpec spec_;  // the scene's, with dt and substeps resolved when dt = "auto"
   double dt_ = 0.0;
+  int substeps_ = 1;
   long steps_ = 0;
   double pending_ = 0.0;  // s of requested time not yet stepped (less than one dt)
   int threads_ = 1;
@@ -73,6 +81,7 @@ class SolverT final : public Solver {
   std::vector<double> energy_partials_;
   DivergenceMonitor<T> monitor_;
   std::optional<Divergence> diverged_;
+  SolveTotals totals_;
 };
 
 extern template class SolverT<float>;

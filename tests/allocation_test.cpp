@@ -78,7 +78,7 @@ TEST_P(StepLoop, AllocatesNothingInDouble) {
   expect_no_allocation<double>(GetParam());
 }
 
-INSTANTIATE_TEST_SUITE_P(AllIntegrators, StepLoop, ::testing::ValuesIn(testing::kAllIntegrators),
+INSTANTIATE_TEST_SUITE_P(AllIntegrators, StepLoop, ::testing::ValuesIn(kAllIntegrators),
                          [](const auto& param_info) {
                            return std::string(to_string(param_info.param));
                          });

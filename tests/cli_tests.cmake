@@ -98,6 +98,44 @@ clothlab_cli_test(trace.diverges 1
   "diverged at step [0-9]+ \\(t = [0-9.e-]+ s\\): vertex \\(cloth 0, i [0-9]+, j [0-9]+\\), .*replay with: clothlab trace .*--set 'solver.dt=0.002'"
   trace ${CLOTHLAB_DEFAULT_SCENE} --duration 1 --out ${CLOTHLAB_TRACE_OUT}/diverged.csv
   --set solver.dt=0.002)
+# Every explicit method run at 10x its stable step on the default scene (limits from
+# `clothlab bench --suite stability`'s theory for this scene: explicit Euler 1.05e-4 s, symplectic
+# Euler 6.26e-4, seed_hack 4.62e-4, verlet 5.43e-4, rk4 1.07e-3) is caught: exit 1, a message
+# naming step, time and vertex, and no file.
+foreach(case "explicit_euler:0.00105" "symplectic_euler:0.00626" "seed_hack:0.00462"
+             "verlet:0.00543" "rk4:0.0107")
+  string(REPLACE ":" ";" parts ${case})
+  list(GET parts 0 kind)
+  list(GET parts 1 dt)
+  clothlab_cli_test(trace.diverges_10x.${kind} 1
+    "diverged at step [0-9]+ \\(t = [0-9.e-]+ s\\): vertex \\(cloth 0, i [0-9]+, j [0-9]+\\)"
+    trace ${CLOTHLAB_DEFAULT_SCENE} --duration 1 --out ${CLOTHLAB_TRACE_OUT}/diverged_${kind}.csv
+    --set solver.integrator=${kind} --set solver.dt=${dt})
+endforeach()
+# dt = "auto" picks the step from the scene's highest frequency (0.8 x symplectic Euler's limit
+# of 6.26e-4 s here); the iterative methods report their work.
+clothlab_cli_test(trace.auto_dt 0 "steps of 0\\.0005[0-9]* s \\(auto\\)"
+  trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.05 --out ${CLOTHLAB_TRACE_OUT}/auto.csv
+  --set solver.dt=auto)
+foreach(kind implicit_euler xpbd local_global)
+  clothlab_cli_test(trace.large_step.${kind} 0
+    "trace: 0\\.5 s simulated .*solver: [0-9.e+]+ iterations per substep"
+    trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.5 --out ${CLOTHLAB_TRACE_OUT}/${kind}.csv
+    --set solver.integrator=${kind} --set solver.dt=auto)
+endforeach()
+clothlab_cli_test(set.bad_substeps 2 "--set solver.substeps=0: solver.substeps: must be between 1"
+  check ${CLOTHLAB_DEFAULT_SCENE} --set solver.substeps=0)
+clothlab_cli_test(set.bad_cg_tolerance 2 "solver.cg_tolerance: must be between 0 and 1"
+  check ${CLOTHLAB_DEFAULT_SCENE} --set solver.cg_tolerance=2)
+clothlab_cli_test(set.bad_dt_word 2 "solver.dt: expected a number of seconds or \"auto\""
+  check ${CLOTHLAB_DEFAULT_SCENE} --set solver.dt=fastest)
+
+# `clothlab bench`: a reduced suite writes its tables; a bad suite name is bad input.
+clothlab_cli_test(bench.stability_quick 0 "Largest stable dt.*wrote .*stability\\.csv.*wrote .*stability_stress\\.csv"
+  bench --suite stability --quick --out ${CLOTHLAB_TRACE_OUT}/bench/stability.csv)
+clothlab_cli_test(bench.bad_suite 2 "--suite: speed not in"
+  bench --suite speed)
+
 clothlab_cli_test(trace.bad_duration 2 "--duration: must be a finite number"
   trace ${CLOTHLAB_DEFAULT_SCENE} --duration -1 --out ${CLOTHLAB_TRACE_OUT}/bad.csv)
 clothlab_cli_test(trace.nan_duration 2 "--duration: must be a finite number"

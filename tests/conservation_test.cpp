@@ -26,7 +26,19 @@ Scene free_sheet(IntegratorKind kind) {
   scene.forces.gravity = {0.0, 0.0, 0.0};
   scene.springs.damping = 0.05;
   scene.solver.precision = Precision::f64;
+  scene.solver.cg_tolerance = 1e-14;  // implicit_euler: solve to round-off
+  scene.solver.cg_max_iterations = 2000;
   return scene;
+}
+
+// Force-based and constraint methods conserve momentum to round-off: every internal force or
+// position correction acts in equal and opposite pairs. XPBD's velocities are position
+// differences divided by the step (1e-4 s), which scales the positions' round-off by 1e4.
+// local_global's ten iterations leave the global solve unconverged, and what is left of its
+// residual breaks the balance slightly.
+double relative_tolerance(IntegratorKind kind) {
+  if (kind == IntegratorKind::xpbd) return 1e-10;
+  return kind == IntegratorKind::local_global ? 1e-9 : 1e-12;
 }
 
 class MomentumConservation : public ::testing::TestWithParam<IntegratorKind> {};
@@ -47,13 +59,14 @@ TEST_P(MomentumConservation, RandomVelocitiesKeepTotalMomentum) {
   const auto p0 = momentum(s);
   ASSERT_TRUE(s.step(500).ok());
   const auto p1 = momentum(s);
-  for (int a = 0; a < 3; ++a) EXPECT_NEAR(p1[a], p0[a], 1e-12 * speed_sum) << "axis " << a;
+  for (int a = 0; a < 3; ++a)
+    EXPECT_NEAR(p1[a], p0[a], relative_tolerance(GetParam()) * speed_sum) << "axis " << a;
   // The test is not trivially true: the velocities did change.
   EXPECT_GT(std::abs(s.state().vel.x[0] - 0.0), 0.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(AllIntegrators, MomentumConservation,
-                         ::testing::ValuesIn(testing::kAllIntegrators), [](const auto& param_info) {
+INSTANTIATE_TEST_SUITE_P(AllIntegrators, MomentumConservation, ::testing::ValuesIn(kAllIntegrators),
+                         [](const auto& param_info) {
                            return std::string(to_string(param_info.param));
                          });
 

@@ -39,6 +39,15 @@ struct ViewArgs {
   std::vector<std::string> overrides;
 };
 
+struct BenchArgs {
+  std::string suite = "all";  // accuracy | stability | scaling | features | all
+  std::string out;            // CSV file (one suite) or directory (all); default out/bench/
+  bool quick = false;         // reduced sweeps: seconds instead of minutes
+  int threads = 1;            // solver threads for accuracy, stability and features
+  bool verbose = false;       // progress lines on stderr
+};
+
+int run_bench(const BenchArgs& args);
 int run_check(const CheckArgs& args);
 int run_render(const RenderArgs& args);
 int run_view(const ViewArgs& args);

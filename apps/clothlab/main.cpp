@@ -90,6 +90,18 @@ int main(int argc, char** argv) {
   auto* view_cmd = app.add_subcommand("view", "open a window on a scene (default scene if none)");
   add_scene_options(*view_cmd, view.scene, view.overrides, false);
 
+  BenchArgs bench;
+  auto* bench_cmd = app.add_subcommand(
+      "bench", "run time against error, stability, scaling and feature costs (tables + CSV)");
+  bench_cmd->add_option("--suite", bench.suite, "accuracy, stability, scaling, features or all")
+      ->check(CLI::IsMember({"accuracy", "stability", "scaling", "features", "all"}));
+  bench_cmd->add_option("--out", bench.out,
+                        "CSV file (one suite) or directory (all); default out/bench/SUITE.csv");
+  bench_cmd->add_flag("--quick", bench.quick, "reduced sweeps (seconds instead of minutes)");
+  bench_cmd->add_option("--threads", bench.threads, "solver threads (scaling measures 1 and 2)")
+      ->check(CLI::Range(1, 1024));
+  bench_cmd->add_flag("--verbose", bench.verbose, "progress lines on stderr");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -103,5 +115,6 @@ int main(int argc, char** argv) {
     return run_render(render);
   }
   if (*view_cmd) return run_view(view);
+  if (*bench_cmd) return run_bench(bench);
   return 2;
 }

@@ -39,14 +39,24 @@ int run_trace_command(const TraceArgs& args) {
     return 1;
   }
   const double ms_per_step = r.steps > 0 ? 1e3 * r.step_seconds / r.steps : 0.0;
+  char substeps[64] = "";
+  if (solver->substeps() > 1)
+    std::snprintf(substeps, sizeof substeps, " (%d substeps)", solver->substeps());
   std::printf(
-      "trace: %.6g s simulated in %ld steps of %g s, %.4g ms/step (%s, %s, %d thread(s), %zu "
+      "trace: %.6g s simulated in %ld steps of %g s%s%s, %.4g ms/step (%s, %s, %d thread(s), %zu "
       "vertices), final energy %.6g J (kinetic %.4g, elastic %.4g, gravity %.6g); wrote %s "
       "(%ld steps)\n",
-      r.simulated_time, r.steps, solver->dt(), ms_per_step, to_string(scene.solver.integrator),
-      doubles ? "double" : "float", solver->threads(), solver->vertex_count(),
-      r.final_energy.total(), r.final_energy.kinetic, r.final_energy.elastic,
-      r.final_energy.gravity, args.out.c_str(), r.rows);
+      r.simulated_time, r.steps, solver->dt(), scene.solver.dt_auto ? " (auto)" : "", substeps,
+      ms_per_step, to_string(scene.solver.integrator), doubles ? "double" : "float",
+      solver->threads(), solver->vertex_count(), r.final_energy.total(), r.final_energy.kinetic,
+      r.final_energy.elastic, r.final_energy.gravity, args.out.c_str(), r.rows);
+  // The iterative methods' work: PCG iterations (implicit_euler) or sweeps per substep.
+  const SolveTotals& t = solver->solve_totals();
+  if (t.iterations > 0)
+    std::printf(
+        "solver: %.3g iterations per substep (max %d), largest relative residual %.3g, %ld "
+        "substeps stopped at the iteration cap\n",
+        double(t.iterations) / double(t.substeps), t.max_iterations, t.max_residual, t.unconverged);
   return 0;
 }
 

@@ -89,6 +89,17 @@ void add_wind_forces(const WindField& wind, double t, const Vec3Array<T>& x, con
   }
 }
 
+template <class T>
+void add_wind(const Model<T>& m, double t, const Vec3Array<T>& x, const Vec3Array<T>& v,
+              Vec3Array<T>& f, ForceWorkspace<T>& ws, int threads) {
+  const WindField wind(m.wind);
+  if (!m.wind.enabled || wind.calm() || m.triangles.empty()) return;
+  compute_surface(m, x, ws, threads);
+  for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) {
+    add_wind_forces(wind, t, x, v, ws, f, b, e);
+  });
+}
+
 }  // namespace
 
 template <class T>
@@ -118,12 +129,16 @@ void compute_forces(const Model<T>& m, double t, const Vec3Array<T>& x, const Ve
       }
     });
   }
-  const WindField wind(m.wind);
-  if (!m.wind.enabled || wind.calm() || m.triangles.empty()) return;
-  compute_surface(m, x, ws, threads);
-  for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) {
-    add_wind_forces(wind, t, x, v, ws, f, b, e);
-  });
+  add_wind(m, t, x, v, f, ws, threads);
+}
+
+template <class T>
+void compute_external_forces(const Model<T>& m, double t, const Vec3Array<T>& x,
+                             const Vec3Array<T>& v, Vec3Array<T>& f, ForceWorkspace<T>& ws,
+                             int threads) {
+  for_each_block(m.n, threads,
+                 [&](std::size_t b, std::size_t e) { add_body_forces(m, v, f, b, e); });
+  add_wind(m, t, x, v, f, ws, threads);
 }
 
 template <class T>
@@ -158,6 +173,12 @@ template void compute_surface<float>(const Model<float>&, const Vec3Array<float>
                                      ForceWorkspace<float>&, int);
 template void compute_surface<double>(const Model<double>&, const Vec3Array<double>&,
                                       ForceWorkspace<double>&, int);
+template void compute_external_forces<float>(const Model<float>&, double, const Vec3Array<float>&,
+                                             const Vec3Array<float>&, Vec3Array<float>&,
+                                             ForceWorkspace<float>&, int);
+template void compute_external_forces<double>(const Model<double>&, double,
+                                              const Vec3Array<double>&, const Vec3Array<double>&,
+                                              Vec3Array<double>&, ForceWorkspace<double>&, int);
 template void compute_forces<float>(const Model<float>&, double, const Vec3Array<float>&,
                                     const Vec3Array<float>&, Vec3Array<float>&,
                                     ForceWorkspace<float>&, int);

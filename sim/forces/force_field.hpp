@@ -34,6 +34,13 @@ template <class T>
 void compute_forces(const Model<T>& m, double t, const Vec3Array<T>& x, const Vec3Array<T>& v,
                     Vec3Array<T>& f, ForceWorkspace<T>& ws, int threads);
 
+// f = gravity + drag + wind only (no springs): the external force of the constraint and
+// local/global integrators, which treat the springs themselves.
+template <class T>
+void compute_external_forces(const Model<T>& m, double t, const Vec3Array<T>& x,
+                             const Vec3Array<T>& v, Vec3Array<T>& f, ForceWorkspace<T>& ws,
+                             int threads);
+
 // Fills ws.normal (unit, area-weighted) and ws.vertex_area for the positions x; used by the wind
 // force and by renderers (Solver::copy_normals), so both see the same surface.
 template <class T>

@@ -16,8 +16,8 @@ struct ExplicitEulerRule {
 }  // namespace
 
 template <class T>
-std::unique_ptr<Integrator<T>> make_explicit_euler(std::size_t n) {
-  return std::make_unique<SingleEvaluation<T, ExplicitEulerRule>>(n);
+std::unique_ptr<Integrator<T>> make_explicit_euler(const Model<T>& m, const SolverSpec& /*spec*/) {
+  return std::make_unique<SingleEvaluation<T, ExplicitEulerRule>>(m.n);
 }
 CLOTHLAB_INSTANTIATE_FACTORY(make_explicit_euler)
 

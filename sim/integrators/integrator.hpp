@@ -26,6 +26,14 @@ struct System {
   }
 };
 
+// What an iterative integrator did in its last step (PCG iterations and relative residual for
+// implicit_euler; sweeps for the constraint and local/global methods). Explicit methods report 0.
+struct SolveStats {
+  int iterations = 0;
+  double residual = 0.0;  // relative: |r| / |b| for PCG, 0 where not measured
+  bool converged = true;  // false when PCG stopped at its iteration cap
+};
+
 template <class T>
 class Integrator {
  public:
@@ -35,26 +43,36 @@ class Integrator {
   // The state or the model changed outside step() (push, reset, parameter edit): forget any
   // value cached from the previous step.
   virtual void invalidate() {}
+  virtual SolveStats last_stats() const { return {}; }
 };
 
+// The integrator the solver spec names, with its parameters (iterations, CG tolerance), sized
+// for the model (allocated here, so stepping never allocates).
 template <class T>
-std::unique_ptr<Integrator<T>> make_integrator(IntegratorKind kind, std::size_t n);
+std::unique_ptr<Integrator<T>> make_integrator(const Model<T>& m, const SolverSpec& spec);
 
 // Factories, one per file in sim/integrators/.
 template <class T>
-std::unique_ptr<Integrator<T>> make_explicit_euler(std::size_t n);
+std::unique_ptr<Integrator<T>> make_explicit_euler(const Model<T>& m, const SolverSpec& spec);
 template <class T>
-std::unique_ptr<Integrator<T>> make_symplectic_euler(std::size_t n);
+std::unique_ptr<Integrator<T>> make_symplectic_euler(const Model<T>& m, const SolverSpec& spec);
 template <class T>
-std::unique_ptr<Integrator<T>> make_seed_hack(std::size_t n);
+std::unique_ptr<Integrator<T>> make_seed_hack(const Model<T>& m, const SolverSpec& spec);
 template <class T>
-std::unique_ptr<Integrator<T>> make_verlet(std::size_t n);
+std::unique_ptr<Integrator<T>> make_verlet(const Model<T>& m, const SolverSpec& spec);
 template <class T>
-std::unique_ptr<Integrator<T>> make_rk4(std::size_t n);
+std::unique_ptr<Integrator<T>> make_rk4(const Model<T>& m, const SolverSpec& spec);
+template <class T>
+std::unique_ptr<Integrator<T>> make_implicit_euler(const Model<T>& m, const SolverSpec& spec);
+template <class T>
+std::unique_ptr<Integrator<T>> make_xpbd(const Model<T>& m, const SolverSpec& spec);
+template <class T>
+std::unique_ptr<Integrator<T>> make_local_global(const Model<T>& m, const SolverSpec& spec);
 
 }  // namespace clothlab
 
 // Explicit instantiation of a factory for float and double.
-#define CLOTHLAB_INSTANTIATE_FACTORY(name)                                \
-  template std::unique_ptr<Integrator<float>> name<float>(std::size_t n); \
-  template std::unique_ptr<Integrator<double>> name<double>(std::size_t n);
+#define CLOTHLAB_INSTANTIATE_FACTORY(name)                                                         \
+  template std::unique_ptr<Integrator<float>> name<float>(const Model<float>&, const SolverSpec&); \
+  template std::unique_ptr<Integrator<double>> name<double>(const Model<double>&,                  \
+                                                            const SolverSpec&);

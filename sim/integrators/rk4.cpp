@@ -75,8 +75,8 @@ class Rk4 final : public Integrator<T> {
 }  // namespace
 
 template <class T>
-std::unique_ptr<Integrator<T>> make_rk4(std::size_t n) {
-  return std::make_unique<Rk4<T>>(n);
+std::unique_ptr<Integrator<T>> make_rk4(const Model<T>& m, const SolverSpec& /*spec*/) {
+  return std::make_unique<Rk4<T>>(m.n);
 }
 CLOTHLAB_INSTANTIATE_FACTORY(make_rk4)
 

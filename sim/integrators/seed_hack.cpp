@@ -19,8 +19,8 @@ struct SeedHackRule {
 }  // namespace
 
 template <class T>
-std::unique_ptr<Integrator<T>> make_seed_hack(std::size_t n) {
-  return std::make_unique<SingleEvaluation<T, SeedHackRule>>(n);
+std::unique_ptr<Integrator<T>> make_seed_hack(const Model<T>& m, const SolverSpec& /*spec*/) {
+  return std::make_unique<SingleEvaluation<T, SeedHackRule>>(m.n);
 }
 CLOTHLAB_INSTANTIATE_FACTORY(make_seed_hack)
 

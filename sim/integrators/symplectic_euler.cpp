@@ -17,8 +17,9 @@ struct SymplecticEulerRule {
 }  // namespace
 
 template <class T>
-std::unique_ptr<Integrator<T>> make_symplectic_euler(std::size_t n) {
-  return std::make_unique<SingleEvaluation<T, SymplecticEulerRule>>(n);
+std::unique_ptr<Integrator<T>> make_symplectic_euler(const Model<T>& m,
+                                                     const SolverSpec& /*spec*/) {
+  return std::make_unique<SingleEvaluation<T, SymplecticEulerRule>>(m.n);
 }
 CLOTHLAB_INSTANTIATE_FACTORY(make_symplectic_euler)
 

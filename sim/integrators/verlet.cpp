@@ -61,8 +61,8 @@ class Verlet final : public Integrator<T> {
 }  // namespace
 
 template <class T>
-std::unique_ptr<Integrator<T>> make_verlet(std::size_t n) {
-  return std::make_unique<Verlet<T>>(n);
+std::unique_ptr<Integrator<T>> make_verlet(const Model<T>& m, const SolverSpec& /*spec*/) {
+  return std::make_unique<Verlet<T>>(m.n);
 }
 CLOTHLAB_INSTANTIATE_FACTORY(make_verlet)
 

@@ -154,16 +154,22 @@ Model<T> build_model(const Scene& scene, SpringKernel kernel) {
 }
 
 template <class T>
-std::vector<std::array<int, 2>> spring_pairs(const Model<T>& m) {
-  std::vector<std::array<int, 2>> pairs;
-  pairs.reserve(m.spring_count);
+SpringList<T> spring_list(const Model<T>& m) {
+  SpringList<T> list;
+  list.ends.reserve(m.spring_count);
+  auto add = [&](int a, int b, T k, T rest, T c) {
+    list.ends.push_back({a, b});
+    list.stiffness.push_back(k);
+    list.rest_length.push_back(rest);
+    list.damping.push_back(c);
+  };
   for (const GridStencil<T>& g : m.grids) {
     for (int j = 0; j < g.nv; ++j) {
       for (int i = 0; i < g.nu; ++i) {
         for (const auto& e : g.entries) {
           if (!e.first_half || i + e.di < 0 || i + e.di >= g.nu || j + e.dj >= g.nv) continue;
           const int a = g.offset + i + j * g.nu;
-          pairs.push_back({a, a + static_cast<int>(e.shift)});
+          add(a, a + static_cast<int>(e.shift), e.stiffness, e.rest_length, e.damping);
         }
       }
     }
@@ -173,12 +179,19 @@ std::vector<std::array<int, 2>> spring_pairs(const Model<T>& m) {
       const std::size_t k = static_cast<std::size_t>(s) * m.n + i;
       const int j = m.neighbour[k];
       if (static_cast<std::size_t>(j) > i && m.stiffness[k] != T(0))
-        pairs.push_back({static_cast<int>(i), j});
+        add(static_cast<int>(i), j, m.stiffness[k], m.rest_length[k], m.damping[k]);
     }
   }
-  return pairs;
+  return list;
 }
 
+template <class T>
+std::vector<std::array<int, 2>> spring_pairs(const Model<T>& m) {
+  return spring_list(m).ends;
+}
+
+template SpringList<float> spring_list<float>(const Model<float>&);
+template SpringList<double> spring_list<double>(const Model<double>&);
 template std::vector<std::array<int, 2>> spring_pairs<float>(const Model<float>&);
 template std::vector<std::array<int, 2>> spring_pairs<double>(const Model<double>&);
 

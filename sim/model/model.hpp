@@ -77,6 +77,17 @@ struct Model {
 template <class T>
 std::vector<std::array<int, 2>> spring_pairs(const Model<T>& m);
 
+// Every spring once with its parameters, in the order of spring_pairs(): the edge list the
+// implicit, constraint and local/global integrators build their own structures from.
+template <class T>
+struct SpringList {
+  std::vector<std::array<int, 2>> ends;  // (a, b), a < b
+  AlignedVector<T> stiffness, rest_length, damping;
+  std::size_t size() const { return ends.size(); }
+};
+template <class T>
+SpringList<T> spring_list(const Model<T>& m);
+
 template <class T>
 Model<T> build_model(const Scene& scene, SpringKernel kernel = SpringKernel::row_sweep);
 

@@ -55,13 +55,40 @@ struct ForceSpec {
   WindSpec wind;
 };
 
-enum class IntegratorKind { explicit_euler, symplectic_euler, seed_hack, verlet, rk4 };
+// Explicit methods first, then the large-step ones (README "Integrators" has the papers).
+enum class IntegratorKind {
+  explicit_euler,
+  symplectic_euler,
+  seed_hack,
+  verlet,
+  rk4,
+  implicit_euler,  // linearised backward Euler, Baraff & Witkin 1998, PCG solve
+  xpbd,            // extended position-based dynamics, Macklin et al. 2016/2019 (small steps)
+  local_global,    // fast mass-spring local/global solve, Liu et al. 2013
+};
+inline constexpr IntegratorKind kAllIntegrators[] = {IntegratorKind::explicit_euler,
+                                                     IntegratorKind::symplectic_euler,
+                                                     IntegratorKind::seed_hack,
+                                                     IntegratorKind::verlet,
+                                                     IntegratorKind::rk4,
+                                                     IntegratorKind::implicit_euler,
+                                                     IntegratorKind::xpbd,
+                                                     IntegratorKind::local_global};
+// True for the methods with a step-size stability limit (explicit_euler ... rk4).
+inline bool is_explicit(IntegratorKind k) {
+  return k <= IntegratorKind::rk4;
+}
 enum class Precision { f32, f64 };
 
 struct SolverSpec {
   IntegratorKind integrator = IntegratorKind::symplectic_euler;
-  double dt = 0.001;  // s, fixed step, > 0
-  int threads = 0;    // 0 = all cores
+  double dt = 0.001;           // s, fixed step, > 0 (ignored when dt_auto)
+  bool dt_auto = false;        // dt = "auto": step and substeps chosen from the highest frequency
+  int substeps = 1;            // integrator steps of dt / substeps per step, >= 1
+  int iterations = 0;          // xpbd: per substep (default 1); local_global: per step (default 10)
+  double cg_tolerance = 1e-6;  // implicit_euler: relative residual |r| / |b| that ends PCG
+  int cg_max_iterations = 500;  // implicit_euler: PCG iteration cap per step
+  int threads = 0;              // 0 = all cores
   Precision precision = Precision::f32;
 };
 

@@ -74,7 +74,9 @@ constexpr std::string_view kClothKeys[] = {"shape",  "size", "resolution", "orig
 constexpr std::string_view kSpringKeys[] = {"rule", "stiffness", "damping"};
 constexpr std::string_view kForceKeys[] = {"gravity", "drag", "wind"};
 constexpr std::string_view kWindKeys[] = {"velocity", "gust", "seed", "gust_period", "coefficient"};
-constexpr std::string_view kSolverKeys[] = {"integrator", "dt", "threads", "precision", "backend"};
+constexpr std::string_view kSolverKeys[] = {"integrator", "dt",           "substeps",
+                                            "iterations", "cg_tolerance", "cg_max_iterations",
+                                            "threads",    "precision",    "backend"};
 constexpr std::string_view kTraceKeys[] = {"vertices", "fields", "every"};
 constexpr std::string_view kTraceFields[] = {"position", "velocity", "force", "energy"};
 
@@ -330,7 +332,21 @@ class Reader {
     check_keys(t, key, kSolverKeys);
     SolverSpec& s = scene_.solver;
     field(t, key, "integrator", [&](auto& n, auto& k) { s.integrator = read_integrator(n, k); });
-    field(t, key, "dt", [&](auto& n, auto& k) { s.dt = number(n, k); });
+    field(t, key, "dt", [&](auto& n, auto& k) {
+      if (n.is_string()) {
+        if (text(n, k) != "auto")
+          fail(k, n, "expected a number of seconds or \"auto\", got " + describe(n));
+        s.dt_auto = true;
+      } else {
+        s.dt = number(n, k);
+        s.dt_auto = false;
+      }
+    });
+    field(t, key, "substeps", [&](auto& n, auto& k) { s.substeps = small_integer(n, k); });
+    field(t, key, "iterations", [&](auto& n, auto& k) { s.iterations = small_integer(n, k); });
+    field(t, key, "cg_tolerance", [&](auto& n, auto& k) { s.cg_tolerance = number(n, k); });
+    field(t, key, "cg_max_iterations",
+          [&](auto& n, auto& k) { s.cg_max_iterations = small_integer(n, k); });
     field(t, key, "threads", [&](auto& n, auto& k) { s.threads = small_integer(n, k); });
     field(t, key, "precision", [&](auto& n, auto& k) {
       const std::string p = text(n, k);
@@ -349,8 +365,7 @@ class Reader {
     const std::string name = text(node, key);
     if (auto kind = integrator_from_string(name)) return *kind;
     std::string valid;
-    for (auto k = IntegratorKind::explicit_euler; k <= IntegratorKind::rk4;
-         k = static_cast<IntegratorKind>(static_cast<int>(k) + 1))
+    for (IntegratorKind k : kAllIntegrators)
       valid += (valid.empty() ? "" : ", ") + std::string(to_string(k));
     fail(key, node, "unknown integrator \"" + name + "\" (valid: " + valid + ")");
   }

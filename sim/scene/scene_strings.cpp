@@ -8,12 +8,15 @@ namespace clothlab {
 
 namespace {
 
-constexpr std::array<std::pair<IntegratorKind, const char*>, 5> kIntegratorNames{{
+constexpr std::array<std::pair<IntegratorKind, const char*>, 8> kIntegratorNames{{
     {IntegratorKind::explicit_euler, "explicit_euler"},
     {IntegratorKind::symplectic_euler, "symplectic_euler"},
     {IntegratorKind::seed_hack, "seed_hack"},
     {IntegratorKind::verlet, "verlet"},
     {IntegratorKind::rk4, "rk4"},
+    {IntegratorKind::implicit_euler, "implicit_euler"},
+    {IntegratorKind::xpbd, "xpbd"},
+    {IntegratorKind::local_global, "local_global"},
 }};
 
 }  // namespace

@@ -22,6 +22,8 @@ namespace {
 constexpr std::int64_t kMaxVertices = 16'000'000;
 constexpr int kMaxThreads = 1024;
 constexpr double kMaxDt = 1.0;
+constexpr int kMaxSubsteps = 100000;
+constexpr int kMaxIterations = 100000;
 constexpr double kOrthogonalityTolerance = 1e-6;
 
 class Validator {
@@ -163,13 +165,26 @@ class Validator {
   void check_solver() const {
     const SolverSpec& s = scene_.solver;
     if (!to_string_known(s.integrator)) fail("solver.integrator", "unknown integrator");
-    positive("solver.dt", s.dt);
+    if (!s.dt_auto) positive("solver.dt", s.dt);
     if (s.dt > kMaxDt)
       fail("solver.dt",
            "must be <= " + format_number(kMaxDt) + " s (got " + format_number(s.dt) + ")");
     if (s.threads < 0 || s.threads > kMaxThreads)
       fail("solver.threads", "must be between 0 (all cores) and " + std::to_string(kMaxThreads) +
                                  " (got " + std::to_string(s.threads) + ")");
+    if (s.substeps < 1 || s.substeps > kMaxSubsteps)
+      fail("solver.substeps", "must be between 1 and " + std::to_string(kMaxSubsteps) + " (got " +
+                                  std::to_string(s.substeps) + ")");
+    if (s.iterations < 0 || s.iterations > kMaxIterations)
+      fail("solver.iterations", "must be between 0 (the method's default) and " +
+                                    std::to_string(kMaxIterations) + " (got " +
+                                    std::to_string(s.iterations) + ")");
+    if (!(s.cg_tolerance > 0.0 && s.cg_tolerance < 1.0))
+      fail("solver.cg_tolerance",
+           "must be between 0 and 1, exclusive (got " + format_number(s.cg_tolerance) + ")");
+    if (s.cg_max_iterations < 1 || s.cg_max_iterations > kMaxIterations)
+      fail("solver.cg_max_iterations", "must be between 1 and " + std::to_string(kMaxIterations) +
+                                           " (got " + std::to_string(s.cg_max_iterations) + ")");
     if (s.precision != Precision::f32 && s.precision != Precision::f64)
       fail("solver.precision", "must be \"float\" or \"double\"");
   }

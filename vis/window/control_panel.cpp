@@ -17,10 +17,6 @@ const ImVec4 kErrorColour{1.0f, 0.45f, 0.4f, 1.0f};
 const ImVec4 kWarningColour{1.0f, 0.8f, 0.3f, 1.0f};
 constexpr float kPanelWidth = 380.0f;
 
-constexpr IntegratorKind kIntegrators[] = {
-    IntegratorKind::explicit_euler, IntegratorKind::symplectic_euler, IntegratorKind::seed_hack,
-    IntegratorKind::verlet, IntegratorKind::rk4};
-
 // True when an edit of the last widget is finished -- a slider released, typed text confirmed, a
 // combo item or checkbox clicked -- so the solver is rebuilt once per edit, not once per frame
 // of a drag (a rebuild of a 512 x 512 cloth takes a while).
@@ -37,7 +33,7 @@ bool log_slider(const char* label, double& value, double lo, double hi) {
 bool integrator_combo(IntegratorKind& kind) {
   bool changed = false;
   if (ImGui::BeginCombo("integrator", to_string(kind))) {
-    for (IntegratorKind k : kIntegrators) {
+    for (IntegratorKind k : kAllIntegrators) {
       if (ImGui::Selectable(to_string(k), k == kind)) {
         changed = k != kind;
         kind = k;
@@ -54,10 +50,30 @@ bool spring_editors(SpringSpec& springs) {
   return edited;
 }
 
+// The step: automatic (from the highest frequency) or typed; substeps; the iterative methods'
+// own parameters.
+bool step_editors(SolverSpec& s, const Solver& running) {
+  bool edited = committed(ImGui::Checkbox("auto dt", &s.dt_auto));
+  if (s.dt_auto) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%.4g s x %d substep(s)", running.dt(), running.substeps());
+  } else {
+    edited |= committed(ImGui::InputDouble("dt (s)", &s.dt, 0.0, 0.0, "%.6g"));
+    edited |= committed(ImGui::InputInt("substeps", &s.substeps));
+  }
+  if (s.integrator == IntegratorKind::implicit_euler) {
+    edited |= log_slider("CG tolerance", s.cg_tolerance, 1e-10, 1e-1);
+    edited |= committed(ImGui::InputInt("CG max iterations", &s.cg_max_iterations));
+  }
+  if (s.integrator == IntegratorKind::xpbd || s.integrator == IntegratorKind::local_global)
+    edited |= committed(ImGui::InputInt("iterations (0 = default)", &s.iterations));
+  return edited;
+}
+
 // Integrator, dt, springs, drag, wind: applied to the running motion once an edit is finished.
-bool dynamics_editors(Scene& draft) {
+bool dynamics_editors(Scene& draft, const Solver& running) {
   bool edited = integrator_combo(draft.solver.integrator);
-  edited |= committed(ImGui::InputDouble("dt (s)", &draft.solver.dt, 0.0, 0.0, "%.6g"));
+  edited |= step_editors(draft.solver, running);
   edited |= spring_editors(draft.springs);
   for (ClothSpec& cloth : draft.cloths) {
     if (!cloth.springs) continue;  // this cloth's own springs replace the shared ones
@@ -109,6 +125,10 @@ void statistics(SimSession& session, const FrameStats& stats) {
   ImGui::Text("simulated time   %.3f s  (step %ld)", solver.time(), solver.step_count());
   ImGui::Text("steps per frame  %.1f", stats.steps_per_frame());
   ImGui::Text("time per step    %.4f ms", stats.ms_per_step());
+  const SolveStats last = solver.last_solve();
+  if (last.iterations > 0)
+    ImGui::Text("iterations       %d per substep, residual %.2g%s", last.iterations, last.residual,
+                last.converged ? "" : " (at the cap)");
   ImGui::Text("frame time       %.1f ms", stats.frame_ms());
   ImGui::Text("vertices         %zu", solver.vertex_count());
   ImGui::Text("springs          %zu", solver.spring_count());
@@ -146,7 +166,7 @@ std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view
   clicked = buttons(session);
 
   Scene& draft = session.draft();
-  if (dynamics_editors(draft)) session.apply_dynamics();
+  if (dynamics_editors(draft, session.solver())) session.apply_dynamics();
   if (!session.error().empty()) {
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextColored(kErrorColour, "not applied: %s", session.error().c_str());

@@ -20,8 +20,12 @@ int remap_index(int i, int from, int to) {
 }  // namespace
 
 void copy_dynamics(const Scene& from, Scene& to) {
-  to.solver.integrator = from.solver.integrator;
-  to.solver.dt = from.solver.dt;
+  // The whole solver block except threads (M owns those) and precision (a rebuild of the model).
+  const int threads = to.solver.threads;
+  const Precision precision = to.solver.precision;
+  to.solver = from.solver;
+  to.solver.threads = threads;
+  to.solver.precision = precision;
   to.springs = from.springs;
   for (std::size_t c = 0; c < to.cloths.size() && c < from.cloths.size(); ++c)
     to.cloths[c].springs = from.cloths[c].springs;

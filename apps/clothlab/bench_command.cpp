@@ -1,0 +1,69 @@
+// `clothlab bench`: runs one suite (or all), prints its tables and writes them as CSV.
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "apps/clothlab/commands.hpp"
+#include "bench/suites/suites.hpp"
+
+namespace clothlab::app {
+
+namespace {
+
+std::vector<bench::Table> run_suite(const std::string& name, const bench::SuiteOptions& o) {
+  if (name == "accuracy") return bench::accuracy_suite(o);
+  if (name == "stability") return bench::stability_suite(o);
+  if (name == "scaling") return bench::scaling_suite(o);
+  return bench::features_suite(o);
+}
+
+// The first table goes to `path`; a summary table named "x" to <stem>_x.csv beside it.
+void write_tables(const std::filesystem::path& path, const std::vector<bench::Table>& tables) {
+  for (std::size_t t = 0; t < tables.size(); ++t) {
+    std::filesystem::path file = path;
+    if (t > 0)
+      file = path.parent_path() /
+             (path.stem().string() + "_" + tables[t].name + path.extension().string());
+    bench::write_csv(file.string(), tables[t]);
+    std::cout << "wrote " << file.string() << '\n';
+  }
+}
+
+}  // namespace
+
+int run_bench(const BenchArgs& args) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> suites;
+  if (args.suite == "all")
+    suites.assign(std::begin(bench::kSuiteNames), std::end(bench::kSuiteNames));
+  else
+    suites.push_back(args.suite);
+  bench::SuiteOptions options;
+  options.quick = args.quick;
+  options.threads = args.threads;
+  options.log = args.verbose ? &std::cerr : nullptr;
+  std::cout << "clothlab bench: one-minute load average before the run "
+            << bench::fixed(bench::load_average(), 2)
+            << " (the machine's other work; timings are only comparable within one run)\n";
+  try {
+    for (const std::string& suite : suites) {
+      // One suite: --out is its CSV file. All suites: --out is a directory.
+      fs::path out =
+          args.out.empty() ? fs::path("out/bench") / (suite + ".csv") : fs::path(args.out);
+      if (suites.size() > 1 && !args.out.empty()) out = fs::path(args.out) / (suite + ".csv");
+      const bench::Stopwatch clock;
+      const std::vector<bench::Table> tables = run_suite(suite, options);
+      for (const bench::Table& t : tables) bench::print_table(std::cout, t);
+      std::cout << '\n';
+      write_tables(out, tables);
+      std::cout << suite << ": " << bench::fixed(clock.seconds(), 1) << " s, load average now "
+                << bench::fixed(bench::load_average(), 2) << "\n";
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "clothlab bench: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace clothlab::app

@@ -1,0 +1,211 @@
+// `clothlab bench --suite accuracy`: run time against error. Every integrator runs a ladder of
+// steps on the canonical scenes; its positions at fixed horizons are compared with a reference
+// (double-precision RK4 at a small step, whose own convergence is checked by halving that step).
+// design.md, "Accuracy benchmark scenes", sets the scenes and the rules.
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <ostream>
+
+#include "bench/suites/lab_scenes.hpp"
+#include "bench/suites/suites.hpp"
+#include "sim/solver.hpp"
+#include "sim/stability/step_limit.hpp"
+
+namespace clothlab::bench {
+
+namespace {
+
+using Positions = std::vector<Vec3d>;
+
+struct Run {
+  std::vector<Positions> at;  // positions at each horizon reached
+  double wall = 0.0;          // s of wall time for the whole run
+  double iterations = 0.0;    // mean solver iterations per substep
+  std::string failure;        // divergence message, empty when the run finished
+};
+
+Run run_to_horizons(const Scene& scene, const std::vector<double>& horizons) {
+  Run r;
+  auto solver = make_solver(scene);
+  Stopwatch clock;
+  for (double h : horizons) {
+    const long target = std::lround(h / solver->dt());
+    const AdvanceResult a = solver->step(target - solver->step_count());
+    if (!a.ok()) {
+      r.failure = a.divergence->message();
+      break;
+    }
+    Positions p(solver->vertex_count());
+    for (std::size_t i = 0; i < p.size(); ++i) p[i] = solver->position(static_cast<int>(i));
+    r.at.push_back(std::move(p));
+  }
+  r.wall = clock.seconds();
+  const SolveTotals& t = solver->solve_totals();
+  r.iterations = t.substeps ? double(t.iterations) / double(t.substeps) : 0.0;
+  return r;
+}
+
+struct Error {
+  double rms = NAN, max = NAN;
+};
+
+Error difference(const Positions& a, const Positions& b) {
+  Error e{0.0, 0.0};
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    double d2 = 0.0;
+    for (int c = 0; c < 3; ++c) d2 += (a[i][c] - b[i][c]) * (a[i][c] - b[i][c]);
+    e.rms += d2;
+    e.max = std::max(e.max, std::sqrt(d2));
+  }
+  e.rms = std::sqrt(e.rms / double(a.size()));
+  return e;
+}
+
+struct LabScene {
+  std::string name;
+  std::function<Scene(IntegratorKind, double)> make;
+};
+
+struct Method {
+  IntegratorKind kind;
+  Precision precision;
+  std::string label() const {
+    return std::string(to_string(kind)) + (precision == Precision::f32 ? " (float)" : "");
+  }
+};
+
+// The ladder starts at the largest step worth trying (the explicit methods' stability limit, the
+// display step for the large-step ones), rounded down so that it divides the first horizon.
+double ladder_start(const Method& m, const Scene& scene, double first_horizon) {
+  double dt = 1.0 / 60.0;
+  if (is_explicit(m.kind)) {
+    const Spectrum sp = estimate_spectrum(build_model<double>(scene));
+    double limit = stable_step_limit(m.kind, sp.omega_max, sp.gamma_max);
+    if (limit <= 0.0)
+      limit = 0.1 * stable_step_limit(IntegratorKind::symplectic_euler, sp.omega_max, sp.gamma_max);
+    dt = std::min(dt, 0.95 * limit);
+  }
+  return first_horizon / std::ceil(first_horizon / dt);
+}
+
+}  // namespace
+
+std::vector<Table> accuracy_suite(const SuiteOptions& o) {
+  const std::vector<double> horizons =
+      o.quick ? std::vector<double>{0.1, 0.25} : std::vector<double>{0.25, 0.5, 1.0};
+  const double reference_dt = o.quick ? 2e-5 : 1e-5;
+  const double budget = o.quick ? 0.5 : 30.0;  // s of wall time the next ladder run may take
+  constexpr double kFinest = 1e-5;             // m: a ladder stops once its error is below
+  constexpr double kLevels[] = {1e-2, 1e-3, 1e-4};
+
+  std::vector<LabScene> scenes;
+  SheetParams sheet;
+  if (o.quick) sheet.resolution = 12;
+  scenes.push_back({"hanging_sheet",
+                    [sheet](IntegratorKind k, double dt) { return hanging_sheet(sheet, k, dt); }});
+  if (!o.quick) scenes.push_back({"steady_flag", steady_flag});
+  scenes.push_back({"single_spring", single_spring});
+
+  std::vector<Method> methods;
+  for (IntegratorKind k : kAllIntegrators) methods.push_back({k, Precision::f64});
+  methods.push_back({IntegratorKind::symplectic_euler, Precision::f32});
+
+  Table data;
+  data.title = "Accuracy: error against a double-precision RK4 reference, " +
+               std::to_string(o.threads) + " solver thread(s)";
+  data.columns = {"scene",           "integrator",    "precision",     "dt (s)",
+                  "horizon (s)",     "rms error (m)", "max error (m)", "wall per simulated s (s)",
+                  "iterations/step", "status"};
+  Table reference;
+  reference.name = "reference";
+  reference.title = "References: RK4 in double; self-convergence = change when its dt is halved";
+  reference.columns = {"scene", "dt (s)", "horizon (s)", "self-convergence rms (m)",
+                       "self-convergence max (m)"};
+  Table summary;
+  summary.name = "summary";
+  summary.title =
+      "Fastest integrator per error level (rms at the last horizon; cost = wall s per "
+      "simulated s)";
+  summary.columns = {"scene",
+                     "horizon (s)",
+                     "rms level (m)",
+                     "fastest",
+                     "its dt (s)",
+                     "its cost (s/s)",
+                     "symplectic_euler cost (s/s)",
+                     "speed-up vs symplectic_euler"};
+
+  for (const LabScene& ls : scenes) {
+    const Run ref = run_to_horizons(ls.make(IntegratorKind::rk4, reference_dt), horizons);
+    const Run half = run_to_horizons(ls.make(IntegratorKind::rk4, 0.5 * reference_dt), horizons);
+    std::vector<double> self(horizons.size(), NAN);
+    for (std::size_t h = 0; h < horizons.size(); ++h) {
+      const Error e = difference(ref.at[h], half.at[h]);
+      self[h] = e.rms;
+      reference.add({ls.name, num(reference_dt), num(horizons[h]), num(e.rms), num(e.max)});
+    }
+    if (o.log) *o.log << "accuracy: " << ls.name << " reference done (" << ref.wall << " s)\n";
+
+    struct Point {
+      std::string method;
+      double dt, cost, rms;
+    };
+    std::vector<Point> points;  // at the last horizon
+    for (const Method& m : methods) {
+      Scene base = ls.make(m.kind, 1e-3);
+      base.solver.precision = m.precision;
+      base.solver.threads = o.threads;
+      double dt = ladder_start(m, base, horizons.front());
+      double last_wall = 0.0;
+      for (int rung = 0; rung < 14 && dt >= 1e-7; ++rung, dt *= 0.5) {
+        if (rung > 0 && 2.0 * last_wall > budget) break;
+        Scene s = base;
+        s.solver.dt = dt;
+        const Run r = run_to_horizons(s, horizons);
+        last_wall = r.wall;
+        const double simulated = horizons[r.at.size() ? r.at.size() - 1 : 0];
+        const double cost = r.at.empty() ? NAN : r.wall / simulated;
+        for (std::size_t h = 0; h < horizons.size(); ++h) {
+          const bool reached = h < r.at.size();
+          const Error e = reached ? difference(r.at[h], ref.at[h]) : Error{};
+          data.add({ls.name, to_string(m.kind), m.precision == Precision::f32 ? "float" : "double",
+                    num(dt), num(horizons[h]), num(e.rms), num(e.max), num(cost), num(r.iterations),
+                    reached ? "ok" : "diverged: " + r.failure});
+        }
+        if (!r.failure.empty()) continue;
+        const double rms = difference(r.at.back(), ref.at.back()).rms;
+        points.push_back({m.label(), dt, cost, rms});
+        if (o.log)
+          *o.log << "accuracy: " << ls.name << " " << m.label() << " dt " << dt << ": rms " << rms
+                 << " m, " << cost << " s/s\n";
+        if (rms < kFinest) break;
+      }
+    }
+    const double last_self = self.back();
+    for (double level : kLevels) {
+      auto best_of = [&](const std::string& only) {
+        const Point* best = nullptr;
+        for (const Point& p : points)
+          if (p.rms <= level && (only.empty() || p.method == only) &&
+              (!best || p.cost < best->cost))
+            best = &p;
+        return best;
+      };
+      const Point* best = best_of("");
+      const Point* se = best_of("symplectic_euler");
+      if (!(last_self < 0.1 * level)) {
+        summary.add({ls.name, num(horizons.back()), num(level),
+                     "reference not converged (" + sci(last_self) + " m)", "-", "-", "-", "-"});
+        continue;
+      }
+      summary.add({ls.name, num(horizons.back()), num(level), best ? best->method : "none reached",
+                   best ? num(best->dt) : "-", best ? num(best->cost) : "-",
+                   se ? num(se->cost) : "not reached",
+                   best && se ? num(se->cost / best->cost) : "-"});
+    }
+  }
+  return {data, summary, reference};
+}
+
+}  // namespace clothlab::bench

@@ -1,0 +1,123 @@
+#include "bench/suites/report.hpp"
+
+#include <unistd.h>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+#include <stdexcept>
+
+namespace clothlab::bench {
+
+namespace {
+
+std::string format(const char* pattern, double value, int digits) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, pattern, digits, value);
+  return buffer;
+}
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string quoted = "\"";
+  for (char c : s) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+}  // namespace
+
+void print_table(std::ostream& out, const Table& table) {
+  std::vector<std::size_t> width(table.columns.size(), 0);
+  for (std::size_t c = 0; c < table.columns.size(); ++c) width[c] = table.columns[c].size();
+  for (const auto& row : table.rows)
+    for (std::size_t c = 0; c < row.size() && c < width.size(); ++c)
+      width[c] = std::max(width[c], row[c].size());
+  // Numbers align right, text left; a column is text when its first cell does not parse.
+  std::vector<bool> numeric(width.size(), true);
+  if (!table.rows.empty())
+    for (std::size_t c = 0; c < width.size() && c < table.rows[0].size(); ++c) {
+      const std::string& cell = table.rows[0][c];
+      char* end = nullptr;
+      std::strtod(cell.c_str(), &end);
+      numeric[c] = !cell.empty() && end != cell.c_str();
+    }
+  auto line = [&](const std::vector<std::string>& cells) {
+    std::string text;
+    for (std::size_t c = 0; c < width.size(); ++c) {
+      const std::string& cell = c < cells.size() ? cells[c] : std::string();
+      const std::string pad(width[c] - cell.size(), ' ');
+      text += (c ? "  " : "") + (numeric[c] ? pad + cell : cell + pad);
+    }
+    while (!text.empty() && text.back() == ' ') text.pop_back();
+    out << text << '\n';
+  };
+  out << '\n' << table.title << '\n';
+  line(table.columns);
+  std::size_t total = 0;
+  for (std::size_t w : width) total += w + 2;
+  out << std::string(total > 2 ? total - 2 : 0, '-') << '\n';
+  for (const auto& row : table.rows) line(row);
+  out.flush();
+}
+
+void write_csv(const std::string& path, const Table& table) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  if (target.has_parent_path()) fs::create_directories(target.parent_path());
+  const fs::path temporary = target.string() + ".tmp" + std::to_string(::getpid());
+  {
+    std::ofstream f(temporary);
+    if (!f) throw std::runtime_error("cannot write " + temporary.string());
+    auto write_row = [&](const std::vector<std::string>& cells) {
+      for (std::size_t c = 0; c < cells.size(); ++c) f << (c ? "," : "") << csv_field(cells[c]);
+      f << '\n';
+    };
+    write_row(table.columns);
+    for (const auto& row : table.rows) write_row(row);
+    f.flush();
+    if (!f) {
+      fs::remove(temporary);
+      throw std::runtime_error("error while writing " + temporary.string());
+    }
+  }
+  fs::rename(temporary, target);
+}
+
+std::string num(double value) {
+  if (std::isnan(value)) return "nan";
+  return format("%.*g", value, 9);
+}
+
+std::string fixed(double value, int decimals) {
+  if (std::isnan(value)) return "-";
+  return format("%.*f", value, decimals);
+}
+
+std::string sci(double value, int digits) {
+  if (std::isnan(value)) return "-";
+  return format("%.*e", value, digits - 1);
+}
+
+std::string pct(double ratio) {
+  if (std::isnan(ratio)) return "-";
+  return format("%.*f", 100.0 * ratio, 1) + " %";
+}
+
+double load_average() {
+  std::ifstream f("/proc/loadavg");
+  double one_minute = NAN;
+  if (!(f >> one_minute)) return NAN;
+  return one_minute;
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return NAN;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+}  // namespace clothlab::bench

@@ -1,0 +1,126 @@
+#include "bench/suites/stability.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "sim/solver_impl.hpp"
+
+namespace clothlab::bench {
+
+namespace {
+
+double edge_length(const Scene& scene) {
+  double edge = INFINITY;
+  for (const ClothSpec& c : scene.cloths)
+    for (int a = 0; a < 2; ++a)
+      if (c.resolution[a] > 1) edge = std::min(edge, c.size[a] / (c.resolution[a] - 1));
+  return std::isfinite(edge) ? edge : 1.0;
+}
+
+double gravity_scale(const Scene& scene) {
+  const auto& g = scene.forces.gravity;
+  const double g_norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+  double scale = 0.0;
+  for (const ClothSpec& c : scene.cloths) scale += c.mass * g_norm * std::max(c.size[0], c.size[1]);
+  return std::max(scale, 1e-9);
+}
+
+template <class T>
+StabilityOutcome check_with(const Scene& scene, const StabilityCheck& check) {
+  SolverT<T> s(scene);
+  // The same disturbance for every step size and method: a fixed seed.
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const double amplitude = check.perturbation * edge_length(scene);
+  const Model<T>& m = s.model();
+  for (std::size_t i = 0; i < m.n; ++i) {
+    if (m.inv_mass[i] == T(0)) continue;
+    for (int a = 0; a < 3; ++a) s.state().pos.axis(a)[i] += static_cast<T>(amplitude * unit(rng));
+  }
+  s.state_changed();
+  const double start = s.energy().total();
+  const double allowed = start + check.energy_tolerance * gravity_scale(scene);
+  const long total = std::max(1L, std::lround(check.duration / s.dt()));
+  constexpr long kEnergyEvery = 8;  // steps between energy checks
+  StabilityOutcome out;
+  for (long done = 0; done < total;) {
+    const long count = std::min(kEnergyEvery, total - done);
+    const AdvanceResult r = s.step(count);
+    done += r.steps;
+    out.steps = done;
+    if (!r.ok()) {
+      out.reason = "diverged: " + r.divergence->message();
+      return out;
+    }
+    const double e = s.energy().total();
+    if (!(e <= allowed)) {
+      char text[160];
+      std::snprintf(text, sizeof text, "energy grew from %.4g J to %.4g J by t = %.4g s", start, e,
+                    s.time());
+      out.reason = text;
+      return out;
+    }
+  }
+  out.stable = true;
+  return out;
+}
+
+}  // namespace
+
+StabilityOutcome check_stability(const Scene& scene, double dt, const StabilityCheck& check) {
+  Scene s = scene;
+  s.solver.dt = dt;
+  s.solver.dt_auto = false;
+  if (s.solver.precision == Precision::f64) return check_with<double>(s, check);
+  return check_with<float>(s, check);
+}
+
+LimitSearch largest_stable_dt(const Scene& scene, double guess, double ceiling,
+                              double relative_tolerance, const StabilityCheck& check) {
+  LimitSearch out;
+  auto stable = [&](double dt) {
+    ++out.runs;
+    return check_stability(scene, dt, check).stable;
+  };
+  // Below this step a method is called unstable at any step (explicit Euler without damping
+  // grows at every step, slowly enough for tiny steps to pass): at most 50000 steps a run.
+  const double floor = check.duration / 50000.0;
+  double lo = 0.0, hi = 0.0;  // stable, unstable
+  double dt = std::min(guess, ceiling);
+  if (stable(dt)) {
+    lo = dt;
+    while (true) {  // walk up by 2x until unstable or the ceiling holds
+      if (lo >= ceiling) {
+        out.dt = ceiling;
+        out.at_ceiling = true;
+        return out;
+      }
+      const double up = std::min(2.0 * lo, ceiling);
+      if (!stable(up)) {
+        hi = up;
+        break;
+      }
+      lo = up;
+    }
+  } else {
+    hi = dt;
+    while (true) {  // walk down by 4x until stable
+      const double down = 0.25 * hi;
+      if (down < floor) return out;
+      if (stable(down)) {
+        lo = down;
+        break;
+      }
+      hi = down;
+    }
+  }
+  while (hi / lo > 1.0 + relative_tolerance) {
+    const double mid = std::sqrt(lo * hi);
+    (stable(mid) ? lo : hi) = mid;
+  }
+  out.dt = lo;
+  return out;
+}
+
+}  // namespace clothlab::bench

@@ -1,0 +1,159 @@
+// `clothlab bench --suite stability`: the largest stable step of every integrator over a sweep of
+// stiffness, mass and damping, next to the theoretical limit of the explicit methods, and stress
+// scenes run at the display step 1/60 s.
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+
+#include "bench/suites/lab_scenes.hpp"
+#include "bench/suites/stability.hpp"
+#include "bench/suites/suites.hpp"
+#include "sim/solver_impl.hpp"
+#include "sim/stability/step_limit.hpp"
+
+namespace clothlab::bench {
+
+namespace {
+
+constexpr double kDisplayStep = 1.0 / 60.0;
+constexpr double kCeiling = 1.0 / 30.0;  // s: the largest step the sweep tries
+
+Spectrum spectrum_of(const Scene& scene) {
+  return estimate_spectrum(build_model<double>(scene));
+}
+
+struct Stress {
+  const char* name;
+  const char* what;
+};
+
+constexpr Stress kStresses[] = {
+    {"stiff", "stiffness 1e5 N/m (100x)"},
+    {"heavy", "gravity x100"},
+    {"hurricane", "wind 60 m/s, gusts 100 %"},
+    {"push", "impulse 2 N*s up at the centre"},
+};
+
+Scene stress_scene(const Stress& stress, IntegratorKind kind, int resolution) {
+  SheetParams p;
+  p.resolution = resolution;
+  Scene s = hanging_sheet(p, kind, kDisplayStep);
+  const std::string name = stress.name;
+  if (name == "stiff") s.springs.stiffness = 1e5;
+  if (name == "heavy") s.forces.gravity = {0.0, -981.0, 0.0};
+  if (name == "hurricane") {
+    s.forces.wind.enabled = true;
+    s.forces.wind.velocity = {0.0, 20.0, 56.6};  // 60 m/s, mostly across the sheet
+    s.forces.wind.gust = 1.0;
+    s.forces.wind.seed = 3;
+  }
+  return s;
+}
+
+// Runs a stress scene; returns "stable" or how the divergence was caught.
+std::string run_stress(const Stress& stress, IntegratorKind kind, int resolution, double duration,
+                       bool& caught) {
+  const Scene scene = stress_scene(stress, kind, resolution);
+  auto solver = make_solver(scene);
+  if (std::string(stress.name) == "push") solver->apply_impulse({0.0, 0.0, 0.5}, 0.3, {0, 2, 0});
+  const AdvanceResult r = solver->step(std::lround(duration / scene.solver.dt));
+  caught = !r.ok();
+  if (caught) {
+    const Divergence& d = *r.divergence;
+    char text[128];
+    std::snprintf(text, sizeof text, "caught at step %ld (t = %.4g s), vertex (%d, %d)", d.step,
+                  d.time, d.vertex.i, d.vertex.j);
+    return text;
+  }
+  for (std::size_t i = 0; i < solver->vertex_count(); ++i)
+    for (double c : solver->position(static_cast<int>(i)))
+      if (!std::isfinite(c)) return "NON-FINITE (not caught)";
+  return "stable";
+}
+
+}  // namespace
+
+std::vector<Table> stability_suite(const SuiteOptions& o) {
+  const int resolution = o.quick ? 10 : 16;
+  StabilityCheck check;
+  check.duration = o.quick ? 0.25 : 0.5;
+  const double tolerance = o.quick ? 0.03 : 0.01;
+  const std::vector<double> stiffnesses =
+      o.quick ? std::vector<double>{1000} : std::vector<double>{250, 1000, 4000};
+  const std::vector<double> masses =
+      o.quick ? std::vector<double>{0.2} : std::vector<double>{0.2, 0.8};
+  const std::vector<double> dampings =
+      o.quick ? std::vector<double>{0.0} : std::vector<double>{0.0, 0.05};
+
+  Table sweep;
+  sweep.title = "Largest stable dt: " + std::to_string(resolution) + "x" +
+                std::to_string(resolution) + " hanging sheet, " + fixed(check.duration, 2) +
+                " s from a disturbed start, bracket " + pct(tolerance) +
+                " (theory: spectral radius <= 1 on the highest mode)";
+  sweep.columns = {"stiffness (N/m)",
+                   "mass (kg)",
+                   "damping (N*s/m)",
+                   "integrator",
+                   "omega_max (rad/s)",
+                   "gamma (1/s)",
+                   "theory dt (s)",
+                   "2/omega (s)",
+                   "measured dt (s)",
+                   "measured/theory",
+                   "runs"};
+  for (double k : stiffnesses) {
+    for (double mass : masses) {
+      for (double c : dampings) {
+        SheetParams p{resolution, 1.0, mass, k, c};
+        const Spectrum sp = spectrum_of(hanging_sheet(p, IntegratorKind::symplectic_euler, 1e-3));
+        const double symplectic_limit =
+            stable_step_limit(IntegratorKind::symplectic_euler, sp.omega_max, sp.gamma_max);
+        for (IntegratorKind kind : kAllIntegrators) {
+          const Scene scene = hanging_sheet(p, kind, 1e-3);
+          const double theory =
+              is_explicit(kind) ? stable_step_limit(kind, sp.omega_max, sp.gamma_max) : INFINITY;
+          const double guess =
+              is_explicit(kind) ? (theory > 0 ? theory : 0.1 * symplectic_limit) : kCeiling;
+          const LimitSearch found = largest_stable_dt(scene, guess, kCeiling, tolerance, check);
+          const bool has_theory = is_explicit(kind) && theory > 0;
+          sweep.add(
+              {num(k), num(mass), num(c), to_string(kind), num(sp.omega_max), num(sp.gamma_max),
+               !is_explicit(kind) ? "inf"
+               : theory > 0       ? num(theory)
+                                  : "0 (none)",
+               num(2.0 / sp.omega_max), found.at_ceiling ? ">=" + num(found.dt) : num(found.dt),
+               has_theory ? num(found.dt / theory) : "-", std::to_string(found.runs)});
+          if (o.log)
+            *o.log << "stability: k " << k << " m " << mass << " c " << c << " " << to_string(kind)
+                   << ": " << sweep.rows.back()[8] << " s\n";
+        }
+      }
+    }
+  }
+
+  Table stress;
+  stress.name = "stress";
+  const double duration = o.quick ? 0.5 : 2.0;
+  const int stress_resolution = o.quick ? 16 : 32;
+  stress.title = "Stress scenes at dt = 1/60 s for " + fixed(duration, 1) + " s (" +
+                 std::to_string(stress_resolution) + "x" + std::to_string(stress_resolution) +
+                 " sheet): large-step methods must stay stable, explicit ones must be caught by "
+                 "the divergence monitor";
+  stress.columns = {"scene", "integrator", "expected", "outcome", "verdict"};
+  for (const Stress& st : kStresses) {
+    for (IntegratorKind kind : kAllIntegrators) {
+      bool caught = false;
+      const std::string outcome = run_stress(st, kind, stress_resolution, duration, caught);
+      const bool expect_stable = !is_explicit(kind);
+      const bool ok = expect_stable ? outcome == "stable" : caught;
+      stress.add({std::string(st.name) + " (" + st.what + ")", to_string(kind),
+                  expect_stable ? "stable" : "caught", outcome, ok ? "ok" : "FAIL"});
+      if (o.log)
+        *o.log << "stability: stress " << st.name << " " << to_string(kind) << ": " << outcome
+               << "\n";
+    }
+  }
+  return {sweep, stress};
+}
+
+}  // namespace clothlab::bench

@@ -1,0 +1,27 @@
+// The `clothlab bench` suites. Each runs its measurements, prints progress to `log`, and returns
+// its tables: the first is the data table written as the suite's CSV, the others are summaries
+// (printed, and written beside it as <out>_<n>.csv).
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "bench/suites/report.hpp"
+
+namespace clothlab::bench {
+
+struct SuiteOptions {
+  bool quick = false;  // a reduced sweep that runs in seconds (the test suite uses it)
+  int threads = 1;     // solver threads for accuracy and stability (scaling measures 1 and 2)
+  std::ostream* log = nullptr;  // progress lines; null for none
+};
+
+std::vector<Table> accuracy_suite(const SuiteOptions& options);
+std::vector<Table> stability_suite(const SuiteOptions& options);
+std::vector<Table> scaling_suite(const SuiteOptions& options);
+std::vector<Table> features_suite(const SuiteOptions& options);
+
+inline constexpr const char* kSuiteNames[] = {"accuracy", "stability", "scaling", "features"};
+
+}  // namespace clothlab::bench
