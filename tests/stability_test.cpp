@@ -154,13 +154,15 @@ TEST(StabilitySuite, ReducedSweepMatchesTheory) {
       ++checked;
     }
     // Backward Euler, linearised or by local/global iterations, is stable at the ceiling 1/30 s.
-    if (row[integrator] == "implicit_euler" || row[integrator] == "local_global")
+    if (row[integrator] == "implicit_euler" || row[integrator] == "local_global") {
       EXPECT_EQ(row[measured].rfind(">=", 0), 0u) << row[integrator];
+    }
     // XPBD with one sweep per step keeps its energy bounded far beyond the explicit limit, though
     // not at 1/30 s: one sweep leaves the springs so stretched that the elastic energy exceeds
     // what gravity put in (hence many small substeps, Macklin et al. 2019).
-    if (row[integrator] == "xpbd")
+    if (row[integrator] == "xpbd") {
       EXPECT_GT(std::stod(row[measured]) / std::stod(row[two_over_omega]), 4.0);
+    }
   }
   EXPECT_EQ(checked, 2);
   for (const auto& row : tables[1].rows) EXPECT_EQ(row.back(), "ok") << row[0] << " " << row[1];
