@@ -124,19 +124,23 @@ class Xpbd final : public Integrator<T> {
     const Model<T>& m = sys.model;
     compute_external_forces(m, t, s.pos, s.vel, f_, sys.workspace, sys.threads);
     predict(m, s, h, sys.threads);
-    for (int sweep = 0; sweep < sweeps_; ++sweep) {
-      for (std::size_t c = 0; c + 1 < colour_start_.size(); ++c) {
-        const std::size_t first = colour_start_[c];
-        for_each_block(colour_start_[c + 1] - first, sys.threads,
-                       [&](std::size_t b, std::size_t e) {
-                         if (sweep == 0) {
-                           project<true>(first + b, first + e, h);
-                         } else {
-                           project<false>(first + b, first + e, h);
-                         }
-                       });
-      }
-    }
+    // Every colour of every sweep in one parallel region (a barrier between colours).
+    const int colours = static_cast<int>(colour_start_.size()) - 1;
+    for_each_phase_block(
+        sweeps_ * colours,
+        [&](int phase) {
+          const auto c = static_cast<std::size_t>(phase % colours);
+          return colour_start_[c + 1] - colour_start_[c];
+        },
+        sys.threads,
+        [&](int phase, std::size_t b, std::size_t e) {
+          const std::size_t first = colour_start_[static_cast<std::size_t>(phase % colours)];
+          if (phase < colours) {
+            project<true>(first + b, first + e, h);
+          } else {
+            project<false>(first + b, first + e, h);
+          }
+        });
     // x = the projected positions, v = (x - x_prev) / h.
     const T inv_h = T(1) / h;
     for_each_block(m.n, sys.threads, [&](std::size_t b, std::size_t e) {
