@@ -11,9 +11,13 @@ int run_check(const CheckArgs& args) {
   if (!scene) return kBadInput;
   // Building the solver proves the scene is simulable (springs, pins, tables all fit).
   const auto solver = make_solver(*scene);
-  std::printf("%s: ok (%zu cloth(s), %zu vertices, %zu springs, %s, dt = %g s)\n",
+  char substeps[48] = "";
+  if (solver->substeps() > 1)
+    std::snprintf(substeps, sizeof substeps, " in %d substeps", solver->substeps());
+  std::printf("%s: ok (%zu cloth(s), %zu vertices, %zu springs, %s, dt = %g s%s%s)\n",
               args.scene.c_str(), scene->cloths.size(), solver->vertex_count(),
-              solver->spring_count(), to_string(scene->solver.integrator), scene->solver.dt);
+              solver->spring_count(), to_string(scene->solver.integrator), solver->dt(),
+              scene->solver.dt_auto ? " (auto)" : "", substeps);
   return 0;
 }
 

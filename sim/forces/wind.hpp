@@ -88,6 +88,7 @@ class WindField {
   }
   const WindSpec& spec() const { return spec_; }
   bool calm() const { return speed_ == 0.0; }
+  bool steady() const { return spec_.gust == 0.0; }  // factor() is 1 everywhere
 
  private:
   WindSpec spec_;
