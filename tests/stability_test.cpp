@@ -165,7 +165,10 @@ TEST(StabilitySuite, ReducedSweepMatchesTheory) {
     }
   }
   EXPECT_EQ(checked, 2);
-  for (const auto& row : tables[1].rows) EXPECT_EQ(row.back(), "ok") << row[0] << " " << row[1];
+  for (const auto& row : tables[1].rows) {
+    if (row.back() == "info") continue;  // XPBD in one substep: reported, not judged
+    EXPECT_EQ(row.back(), "ok") << row[0] << " " << row[1];
+  }
 }
 
 }  // namespace

@@ -34,7 +34,8 @@ constexpr Stress kStresses[] = {
     {"push", "impulse 2 N*s up at the centre"},
 };
 
-Scene stress_scene(const Stress& stress, IntegratorKind kind, int resolution) {
+// substeps: 0 = the automatic count for xpbd (sim/stability/step_limit.hpp), else that many.
+Scene stress_scene(const Stress& stress, IntegratorKind kind, int resolution, int substeps) {
   SheetParams p;
   p.resolution = resolution;
   Scene s = hanging_sheet(p, kind, kDisplayStep);
@@ -47,13 +48,14 @@ Scene stress_scene(const Stress& stress, IntegratorKind kind, int resolution) {
     s.forces.wind.gust = 1.0;
     s.forces.wind.seed = 3;
   }
+  s.solver.substeps = substeps > 0 ? substeps : choose_step(kind, spectrum_of(s)).substeps;
   return s;
 }
 
 // Runs a stress scene; returns "stable" or how the divergence was caught.
-std::string run_stress(const Stress& stress, IntegratorKind kind, int resolution, double duration,
-                       bool& caught) {
-  const Scene scene = stress_scene(stress, kind, resolution);
+std::string run_stress(const Stress& stress, IntegratorKind kind, int resolution, int substeps,
+                       double duration, bool& caught) {
+  const Scene scene = stress_scene(stress, kind, resolution, substeps);
   auto solver = make_solver(scene);
   if (std::string(stress.name) == "push") solver->apply_impulse({0.0, 0.0, 0.5}, 0.3, {0, 2, 0});
   const AdvanceResult r = solver->step(std::lround(duration / scene.solver.dt));
@@ -142,15 +144,27 @@ std::vector<Table> stability_suite(const SuiteOptions& o) {
   stress.columns = {"scene", "integrator", "expected", "outcome", "verdict"};
   for (const Stress& st : kStresses) {
     for (IntegratorKind kind : kAllIntegrators) {
-      bool caught = false;
-      const std::string outcome = run_stress(st, kind, stress_resolution, duration, caught);
-      const bool expect_stable = !is_explicit(kind);
-      const bool ok = expect_stable ? outcome == "stable" : caught;
-      stress.add({std::string(st.name) + " (" + st.what + ")", to_string(kind),
-                  expect_stable ? "stable" : "caught", outcome, ok ? "ok" : "FAIL"});
-      if (o.log)
-        *o.log << "stability: stress " << st.name << " " << to_string(kind) << ": " << outcome
-               << "\n";
+      // XPBD is a small-steps method: it runs the frame step in its automatic substeps (and, for
+      // information, in one substep, which a hurricane can tear apart: see README).
+      const bool xpbd = kind == IntegratorKind::xpbd;
+      for (int substeps : xpbd ? std::vector<int>{0, 1} : std::vector<int>{1}) {
+        bool caught = false;
+        const std::string outcome =
+            run_stress(st, kind, stress_resolution, substeps, duration, caught);
+        const bool informational = xpbd && substeps == 1;
+        const bool expect_stable = !is_explicit(kind);
+        const bool ok = expect_stable ? outcome == "stable" : caught;
+        std::string label = to_string(kind);
+        if (xpbd) {
+          const int n = stress_scene(st, kind, stress_resolution, substeps).solver.substeps;
+          label += " (" + std::to_string(n) + (n == 1 ? " substep)" : " substeps)");
+        }
+        stress.add({std::string(st.name) + " (" + st.what + ")", label,
+                    informational ? "-" : (expect_stable ? "stable" : "caught"), outcome,
+                    informational ? "info" : (ok ? "ok" : "FAIL")});
+        if (o.log)
+          *o.log << "stability: stress " << st.name << " " << label << ": " << outcome << "\n";
+      }
     }
   }
   return {sweep, stress};
