@@ -79,7 +79,7 @@ TEST(SceneParser, DefaultSceneHasDocumentedValues) {
   EXPECT_EQ(s.forces.wind.gust_period, 1.0);
   EXPECT_EQ(s.forces.wind.coefficient, 1.0);
   EXPECT_EQ(s.solver.integrator, IntegratorKind::symplectic_euler);
-  EXPECT_EQ(s.solver.dt, 0.0005);
+  EXPECT_TRUE(s.solver.dt_auto);
   EXPECT_EQ(s.solver.threads, 0);
   EXPECT_EQ(s.solver.precision, Precision::f32);
   ASSERT_TRUE(s.trace.has_value());

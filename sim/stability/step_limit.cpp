@@ -61,6 +61,18 @@ void step_once(IntegratorKind kind, const Oscillator& o, double h, double& x, do
   }
 }
 
+// Two significant digits, rounded down (5.0083e-4 -> 5.0e-4): a step people can read and type,
+// at most 10 % below the value it comes from.
+double round_down_2_digits(double x) {
+  if (!(x > 0.0)) return x;
+  // Divide by an exact power of ten (not multiply by an inexact 1e-5) so 50 x 1e-5 is 0.0005.
+  const double exponent = 1.0 - std::floor(std::log10(x));
+  const double scale = std::pow(10.0, std::abs(exponent));
+  const double digits = exponent >= 0 ? std::floor(x * scale * (1.0 + 1e-12))
+                                      : std::floor(x / scale * (1.0 + 1e-12));
+  return exponent >= 0 ? digits / scale : digits * scale;
+}
+
 }  // namespace
 
 double amplification(IntegratorKind kind, double h, double omega, double gamma) {
@@ -120,7 +132,7 @@ StepChoice choose_step(IntegratorKind kind, const Spectrum& spectrum) {
   if (is_explicit(kind)) {
     double limit = stable_step_limit(kind, omega, gamma);
     if (limit <= 0.0) limit = 0.1 * c.limit;  // explicit Euler, undamped
-    c.dt = std::min(kDisplayStep, kAutoSafety * limit);
+    c.dt = std::min(kDisplayStep, round_down_2_digits(kAutoSafety * limit));
     return c;
   }
   switch (kind) {

@@ -23,7 +23,8 @@ struct StepChoice {
 
 // What `solver.dt = "auto"` picks (README, "Choosing the step"):
 //  - explicit methods: kAutoSafety times the method's own limit (for explicit Euler without
-//    damping, which no step makes stable, a tenth of symplectic Euler's);
+//    damping, which no step makes stable, a tenth of symplectic Euler's), rounded down to two
+//    significant digits;
 //  - large-step methods: a fixed display-rate step, subdivided (xpbd) so that each substep is a
 //    fixed multiple of the explicit limit.
 inline constexpr double kAutoSafety = 0.8;
