@@ -1,60 +1,16 @@
 // The large-step integrators (xpbd, local_global): they simulate the same springs as the
 // force-based methods (single-spring convergence order, a falling sheet against RK4), stay
 // stable at display-rate steps, are bit-identical for any thread count, keep pins fixed,
-// conserve momentum, and step without allocating.
+// and conserve momentum (allocation_test.cpp checks that they step without allocating).
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
 #include <memory>
-#include <new>
 #include <vector>
 
 #include "sim/solver_impl.hpp"
 #include "test_scenes.hpp"
-
-namespace {
-std::atomic<long> g_allocations{0};
-}
-
-// Counting global operator new, as in allocation_test.cpp (the replacements allocate with
-// malloc, so free is the matching release; GCC cannot see that and warns at inlined deletes).
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-
-void* operator new(std::size_t size) {
-  ++g_allocations;
-  if (void* p = std::malloc(size ? size : 1)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-  return operator new(size);
-}
-void* operator new(std::size_t size, std::align_val_t align) {
-  ++g_allocations;
-  const auto a = static_cast<std::size_t>(align);
-  if (void* p = std::aligned_alloc(a, (size + a - 1) / a * a)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::align_val_t) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
-  std::free(p);
-}
 
 namespace clothlab {
 namespace {
@@ -320,23 +276,6 @@ TEST_P(LargeStepKind, MomentumIsConservedWithoutExternalForces) {
   // Measured: xpbd 6.7e-14 (round-off of the projections), local_global 9.4e-11 (the solve's
   // residual, about eps times |M + h^2 K| |x|, summed over the vertices and divided by h).
   EXPECT_LT(worst, GetParam() == IntegratorKind::xpbd ? 1e-12 : 1e-9);
-}
-
-template <class T>
-void expect_no_allocation(IntegratorKind kind) {
-  Scene scene = windy_sheet(kind, 24);
-  scene.solver.threads = 2;
-  SolverT<T> s(scene);
-  ASSERT_TRUE(s.step(3).ok());  // warm-up: starts the OpenMP thread pool
-  const long before = g_allocations.load();
-  ASSERT_TRUE(s.step(30).ok());
-  ASSERT_TRUE(s.advance(0.1).ok());
-  EXPECT_EQ(g_allocations.load() - before, 0) << "allocations in the step loop";
-}
-
-TEST_P(LargeStepKind, StepLoopAllocatesNothing) {
-  expect_no_allocation<float>(GetParam());
-  expect_no_allocation<double>(GetParam());
 }
 
 // Float follows double: the same scene in both precisions.

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "bench/suites/lab_scenes.hpp"
 #include "sim/scene/scene.hpp"
 
 namespace clothlab::testing {
@@ -52,28 +53,12 @@ inline Scene sheet(int res, double size, double mass, double stiffness, Integrat
 }
 
 // design.md "Accuracy benchmark scenes": a res x res sheet, 1 m, 0.2 kg, stiffness 1000 N/m,
-// along-spring damping 0.05 N*s/m, lying horizontal (x-z plane at y = 0) and pinned at the two
-// corners of its j = 0 edge, released at rest to fall and swing under gravity.
+// along-spring damping 0.05 N*s/m, lying horizontal and pinned at the two corners of one edge,
+// released at rest (the accuracy suite's scene, bench/suites/lab_scenes.hpp), in double.
 inline Scene falling_sheet(int res, IntegratorKind integrator, double dt) {
-  Scene s;
-  ClothSpec c;
-  c.size = {1.0, 1.0};
-  c.resolution = {res, res};
-  c.origin = {-0.5, 0.0, 0.0};
-  c.u_axis = {1.0, 0.0, 0.0};
-  c.v_axis = {0.0, 0.0, 1.0};
-  c.mass = 0.2;
-  c.pins = {{0, 0}, {res - 1, 0}};
-  c.key = "cloth";
-  s.cloths.push_back(c);
-  s.springs.stiffness = 1000.0;
-  s.springs.damping = 0.05;
-  s.forces.gravity = {0.0, -9.81, 0.0};
-  s.solver.integrator = integrator;
-  s.solver.dt = dt;
-  s.solver.threads = 1;
-  s.solver.precision = Precision::f64;
-  return s;
+  bench::SheetParams p;
+  p.resolution = res;
+  return bench::hanging_sheet(p, integrator, dt);
 }
 
 // The explicit methods of the foundation issue.
