@@ -20,7 +20,16 @@ std::string edit_message(const SceneError& e) {
 }  // namespace
 
 SimSession::SimSession(Scene scene)
-    : base_(scene), applied_(scene), draft_(std::move(scene)), solver_(build(applied_)) {}
+    : base_(scene), applied_(scene), draft_(std::move(scene)), solver_(build(applied_)) {
+  choose_threads();
+}
+
+void SimSession::choose_threads() {
+  if (parallel_chosen_ || base_.solver.threads == 1) return;
+  const int threads = solver_->vertex_count() >= kParallelVertices ? base_.solver.threads : 1;
+  applied_.solver.threads = draft_.solver.threads = threads;
+  solver_->set_threads(threads);
+}
 
 std::unique_ptr<Solver> SimSession::build(const Scene& scene) const {
   validate_scene(scene);
@@ -68,6 +77,7 @@ void SimSession::reset() {
   structure_error_.clear();
   divergence_.reset();
   ++generation_;
+  choose_threads();  // + / - may have crossed kParallelVertices
 }
 
 void SimSession::scale_resolution(double factor) {
@@ -80,6 +90,7 @@ void SimSession::toggle_wind() {
 }
 
 void SimSession::toggle_parallel() {
+  parallel_chosen_ = true;
   const int threads = parallel() ? 1 : 0;
   applied_.solver.threads = draft_.solver.threads = threads;
   solver_->set_threads(threads);
