@@ -1,0 +1,61 @@
+# Notebook tests: the built clothlab makes small inputs (a 0.5 s trace, the --quick accuracy and
+# stability tables) as fixtures, then scripts/notebooks executes each notebook headless on them
+# (Debian's Python and nbconvert) and every figure it must write is checked to be a real picture.
+# Included from tests/CMakeLists.txt after cli_tests.cmake (uses clothlab_cli_test). About 25 s
+# on 2 cores. Without nbconvert (scripts/deps installs it) the notebook tests fail and say so.
+
+if(NOT COMMAND clothlab_cli_test)
+  message(WARNING "notebook tests need tests/cli_tests.cmake (clothlab_cli_test): not registered")
+  return()
+endif()
+if(CLOTHLAB_SANITIZE)
+  # The notebooks are Python; the sanitizers would only slow down making their inputs.
+  message(STATUS "notebook tests: not in the sanitizer build (the release build runs them)")
+  return()
+endif()
+
+set(CLOTHLAB_NOTEBOOK_INPUTS ${CMAKE_CURRENT_BINARY_DIR}/notebook_inputs)
+set(CLOTHLAB_NOTEBOOK_OUT ${CMAKE_CURRENT_BINARY_DIR}/notebook_out)
+file(MAKE_DIRECTORY ${CLOTHLAB_NOTEBOOK_INPUTS}/bench ${CLOTHLAB_NOTEBOOK_OUT})
+
+# Inputs. The trace follows three vertices (the bottom middle, a bottom corner and a pinned top
+# corner) so the figures show several lines.
+clothlab_cli_test(notebook.inputs.trace 0 "trace: 0\\.5 s simulated .*wrote .*trace\\.csv"
+  trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.5 --out ${CLOTHLAB_NOTEBOOK_INPUTS}/trace.csv
+  --set "trace.vertices=[[16,31],[0,31],[31,0]]")
+clothlab_cli_test(notebook.inputs.accuracy 0 "wrote .*accuracy\\.csv"
+  bench --suite accuracy --quick --out ${CLOTHLAB_NOTEBOOK_INPUTS}/bench/accuracy.csv)
+clothlab_cli_test(notebook.inputs.stability 0
+  "wrote .*stability\\.csv.*wrote .*stability_stress\\.csv"
+  bench --suite stability --quick --out ${CLOTHLAB_NOTEBOOK_INPUTS}/bench/stability.csv)
+set_tests_properties(cli.notebook.inputs.trace PROPERTIES FIXTURES_SETUP notebook_input_traces)
+set_tests_properties(cli.notebook.inputs.accuracy PROPERTIES
+  FIXTURES_SETUP notebook_input_accuracy TIMEOUT 180)
+set_tests_properties(cli.notebook.inputs.stability PROPERTIES
+  FIXTURES_SETUP notebook_input_stability TIMEOUT 120)
+
+# notebook.NAME runs the notebook; notebook.NAME.FIGURE checks each PNG it must write (a blank
+# matplotlib figure of this size is about 25 kB; the smallest real one about 40 kB).
+set(CLOTHLAB_NOTEBOOK_FIGURES_traces position velocity force energy)
+set(CLOTHLAB_NOTEBOOK_FIGURES_accuracy work_precision error_vs_dt)
+set(CLOTHLAB_NOTEBOOK_FIGURES_stability map bars ratio stress)
+set(CLOTHLAB_NOTEBOOK_ENVIRONMENT
+  "CLOTHLAB_TRACE_CSV=${CLOTHLAB_NOTEBOOK_INPUTS}/trace.csv"
+  "CLOTHLAB_BENCH_DIR=${CLOTHLAB_NOTEBOOK_INPUTS}/bench"
+  "CLOTHLAB_FIGURES=${CLOTHLAB_NOTEBOOK_OUT}")
+foreach(name traces accuracy stability)
+  add_test(NAME notebook.${name}
+    COMMAND ${PROJECT_SOURCE_DIR}/scripts/notebooks --no-deps ${name})
+  set_tests_properties(notebook.${name} PROPERTIES
+    ENVIRONMENT "${CLOTHLAB_NOTEBOOK_ENVIRONMENT}"
+    FIXTURES_REQUIRED notebook_input_${name}
+    FIXTURES_SETUP notebook_figures_${name}
+    TIMEOUT 120)
+  foreach(figure ${CLOTHLAB_NOTEBOOK_FIGURES_${name}})
+    add_test(NAME notebook.${name}.${figure}
+      COMMAND ${CMAKE_COMMAND} -DFILE=${CLOTHLAB_NOTEBOOK_OUT}/${name}_${figure}.png
+        -DMIN_BYTES=30000 -P ${CMAKE_CURRENT_LIST_DIR}/check_png.cmake)
+    set_tests_properties(notebook.${name}.${figure} PROPERTIES
+      FIXTURES_REQUIRED notebook_figures_${name})
+  endforeach()
+endforeach()
