@@ -77,10 +77,9 @@ struct Method {
 
 // The ladder starts at the largest step worth trying (the explicit methods' stability limit, the
 // display step for the large-step ones), rounded down so that it divides the first horizon.
-double ladder_start(const Method& m, const Scene& scene, double first_horizon) {
+double ladder_start(const Method& m, const Spectrum& sp, double first_horizon) {
   double dt = 1.0 / 60.0;
   if (is_explicit(m.kind)) {
-    const Spectrum sp = estimate_spectrum(build_model<double>(scene));
     double limit = stable_step_limit(m.kind, sp.omega_max, sp.gamma_max);
     if (limit <= 0.0)
       limit = 0.1 * stable_step_limit(IntegratorKind::symplectic_euler, sp.omega_max, sp.gamma_max);
@@ -152,11 +151,14 @@ std::vector<Table> accuracy_suite(const SuiteOptions& o) {
       double dt, cost, rms;
     };
     std::vector<Point> points;  // at the last horizon
+    // The scene's frequencies (the same for every method and precision) set the explicit ladders.
+    const Spectrum spectrum =
+        estimate_spectrum(build_model<double>(ls.make(IntegratorKind::rk4, 1e-3)));
     for (const Method& m : methods) {
       Scene base = ls.make(m.kind, 1e-3);
       base.solver.precision = m.precision;
       base.solver.threads = o.threads;
-      double dt = ladder_start(m, base, horizons.front());
+      double dt = ladder_start(m, spectrum, horizons.front());
       double last_wall = 0.0;
       for (int rung = 0; rung < 14 && dt >= 1e-7; ++rung, dt *= 0.5) {
         if (rung > 0 && 2.0 * last_wall > budget) break;

@@ -53,9 +53,7 @@ Scene stress_scene(const Stress& stress, IntegratorKind kind, int resolution, in
 }
 
 // Runs a stress scene; returns "stable" or how the divergence was caught.
-std::string run_stress(const Stress& stress, IntegratorKind kind, int resolution, int substeps,
-                       double duration, bool& caught) {
-  const Scene scene = stress_scene(stress, kind, resolution, substeps);
+std::string run_stress(const Stress& stress, const Scene& scene, double duration, bool& caught) {
   auto solver = make_solver(scene);
   if (std::string(stress.name) == "push") solver->apply_impulse({0.0, 0.0, 0.5}, 0.3, {0, 2, 0});
   const AdvanceResult r = solver->step(std::lround(duration / scene.solver.dt));
@@ -149,14 +147,14 @@ std::vector<Table> stability_suite(const SuiteOptions& o) {
       const bool xpbd = kind == IntegratorKind::xpbd;
       for (int substeps : xpbd ? std::vector<int>{0, 1} : std::vector<int>{1}) {
         bool caught = false;
-        const std::string outcome =
-            run_stress(st, kind, stress_resolution, substeps, duration, caught);
+        const Scene scene = stress_scene(st, kind, stress_resolution, substeps);
+        const std::string outcome = run_stress(st, scene, duration, caught);
         const bool informational = xpbd && substeps == 1;
         const bool expect_stable = !is_explicit(kind);
         const bool ok = expect_stable ? outcome == "stable" : caught;
         std::string label = to_string(kind);
         if (xpbd) {
-          const int n = stress_scene(st, kind, stress_resolution, substeps).solver.substeps;
+          const int n = scene.solver.substeps;
           label += " (" + std::to_string(n) + (n == 1 ? " substep)" : " substeps)");
         }
         stress.add({std::string(st.name) + " (" + st.what + ")", label,

@@ -68,8 +68,8 @@ double round_down_2_digits(double x) {
   // Divide by an exact power of ten (not multiply by an inexact 1e-5) so 50 x 1e-5 is 0.0005.
   const double exponent = 1.0 - std::floor(std::log10(x));
   const double scale = std::pow(10.0, std::abs(exponent));
-  const double digits = exponent >= 0 ? std::floor(x * scale * (1.0 + 1e-12))
-                                      : std::floor(x / scale * (1.0 + 1e-12));
+  const double digits =
+      exponent >= 0 ? std::floor(x * scale * (1.0 + 1e-12)) : std::floor(x / scale * (1.0 + 1e-12));
   return exponent >= 0 ? digits / scale : digits * scale;
 }
 
