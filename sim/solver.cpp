@@ -47,7 +47,6 @@ template <class T>
 SolverT<T>::SolverT(const Scene& scene, SpringKernel kernel)
     : model_(build_model<T>(scene, kernel)),
       state_(initial_state(model_)),
-      kind_(scene.solver.integrator),
       spec_(resolve_step(model_, scene.solver)),
       dt_(spec_.dt),
       substeps_(spec_.substeps),

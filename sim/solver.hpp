@@ -41,9 +41,8 @@ class Solver {
 
   virtual double time() const = 0;  // s: steps taken * dt
   virtual long step_count() const = 0;
-  virtual double dt() const = 0;     // s, one step (chosen by the solver for dt = "auto")
-  virtual int substeps() const = 0;  // integrator steps of dt / substeps per step
-  virtual const char* integrator_name() const = 0;
+  virtual double dt() const = 0;              // s, one step (chosen by the solver for dt = "auto")
+  virtual int substeps() const = 0;           // integrator steps of dt / substeps per step
   virtual SolveStats last_solve() const = 0;  // the integrator's last substep
   virtual const SolveTotals& solve_totals() const = 0;
   virtual std::size_t vertex_count() const = 0;

@@ -20,7 +20,6 @@ class SolverT final : public Solver {
   long step_count() const override { return steps_; }
   double dt() const override { return dt_; }
   int substeps() const override { return substeps_; }
-  const char* integrator_name() const override { return to_string(kind_); }
   SolveStats last_solve() const override { return integrator_->last_stats(); }
   const SolveTotals& solve_totals() const override { return totals_; }
   std::size_t vertex_count() const override { return model_.n; }
@@ -68,7 +67,6 @@ class SolverT final : public Solver {
 
   Model<T> model_;
   State<T> state_;
-  IntegratorKind kind_;
   SolverSpec spec_;  // the scene's, with dt and substeps resolved when dt = "auto"
   double dt_ = 0.0;
   int substeps_ = 1;

@@ -61,9 +61,4 @@ inline Scene falling_sheet(int res, IntegratorKind integrator, double dt) {
   return bench::hanging_sheet(p, integrator, dt);
 }
 
-// The explicit methods of the foundation issue.
-inline constexpr IntegratorKind kExplicitIntegrators[] = {
-    IntegratorKind::explicit_euler, IntegratorKind::symplectic_euler, IntegratorKind::seed_hack,
-    IntegratorKind::verlet, IntegratorKind::rk4};
-
 }  // namespace clothlab::testing
