@@ -160,6 +160,24 @@ clothlab_cli_test(render.bad_size 2 "--size: must be WxH"
   render ${CLOTHLAB_DEFAULT_SCENE} --size 64 --out ${CLOTHLAB_TRACE_OUT}/render_bad)
 clothlab_cli_test(render.bad_mode 2 "--mode: Value 7 not in range"
   render ${CLOTHLAB_DEFAULT_SCENE} --mode 7 --out ${CLOTHLAB_TRACE_OUT}/render_bad)
+# --probe prints one JSON line with the field under the pixel (centre of the default view: cloth).
+clothlab_cli_test(render.probe 0
+  "{\"field\": \"velocity\", \"pixel\": \\[80, 60\\], \"value\": \\[[-0-9.e+]+, [-0-9.e+]+, [-0-9.e+]+\\], \"magnitude\": [0-9.e+-]+, \"vertex\": \\[[0-9]+, [0-9]+\\], \"vertex_value\": \\[[-0-9.e+]+, [-0-9.e+]+, [-0-9.e+]+\\]}"
+  render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 160x120 --quiet
+  --out ${CLOTHLAB_TRACE_OUT}/render_probe --probe 80,60 --field velocity)
+clothlab_cli_test(render.probe_sky 0
+  "{\"field\": \"force\", \"pixel\": \\[0, 0\\], \"value\": null, \"magnitude\": null, \"vertex\": null, \"vertex_value\": null}"
+  render ${CLOTHLAB_DEFAULT_SCENE} --frames 1 --size 160x120 --quiet
+  --out ${CLOTHLAB_TRACE_OUT}/render_probe --probe 0,0)
+clothlab_cli_test(render.probe_outside 2 "--probe 160,60: must be PX,PY, a pixel inside the 160x120 image"
+  render ${CLOTHLAB_DEFAULT_SCENE} --size 160x120 --out ${CLOTHLAB_TRACE_OUT}/render_bad
+  --probe 160,60)
+clothlab_cli_test(render.probe_not_a_pixel 2 "--probe abc: must be PX,PY"
+  render ${CLOTHLAB_DEFAULT_SCENE} --size 160x120 --out ${CLOTHLAB_TRACE_OUT}/render_bad
+  --probe abc)
+clothlab_cli_test(render.bad_field 2 "--field: density not in"
+  render ${CLOTHLAB_DEFAULT_SCENE} --out ${CLOTHLAB_TRACE_OUT}/render_bad --probe 1,1
+  --field density)
 clothlab_cli_test(render.bad_video 1 "ffmpeg (failed to write|stopped accepting frames for) '/nonexistent-dir/x.mp4'"
   render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 32x32 --quiet
   --out ${CLOTHLAB_TRACE_OUT}/render_video --video /nonexistent-dir/x.mp4)

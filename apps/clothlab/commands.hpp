@@ -2,6 +2,7 @@
 // (message names file, line and key, or the argument), 1 runtime failure (e.g. divergence).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,6 +33,10 @@ struct RenderArgs {
   std::string out;     // directory for frame_00000.png, ...
   std::string video;   // optional MP4 through ffmpeg
   bool quiet = false;  // no progress bar
+  // --probe PX,PY: after the last frame, one JSON line with `field` under that pixel (row 0 at
+  // the top); the force field is computed only then.
+  std::optional<std::array<int, 2>> probe;
+  std::string field = "force";  // force | velocity | position
 };
 
 struct ViewArgs {

@@ -85,6 +85,11 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--out", render.out, "directory for the numbered PNGs")->required();
   render_cmd->add_option("--video", render.video, "also write an MP4 (Debian's ffmpeg)");
   render_cmd->add_flag("--quiet", render.quiet, "no progress bar");
+  std::string probe;
+  auto* probe_opt = render_cmd->add_option(
+      "--probe", probe, "after the last frame, print the field under pixel PX,PY as JSON");
+  render_cmd->add_option("--field", render.field, "probed field: force, velocity or position")
+      ->check(CLI::IsMember({"force", "velocity", "position"}));
 
   ViewArgs view;
   auto* view_cmd = app.add_subcommand("view", "open a window on a scene (default scene if none)");
@@ -112,6 +117,20 @@ int main(int argc, char** argv) {
   if (*trace_cmd) return run_trace_command(trace);
   if (*render_cmd) {
     std::sscanf(size.c_str(), "%dx%d", &render.width, &render.height);
+    // --probe is checked against the image size, known only once --size is parsed.
+    if (*probe_opt) {
+      int px = -1, py = -1;
+      char comma = 0, rest = 0;
+      if (std::sscanf(probe.c_str(), "%d%c%d%c", &px, &comma, &py, &rest) != 3 || comma != ',' ||
+          px < 0 || py < 0 || px >= render.width || py >= render.height) {
+        std::fprintf(stderr,
+                     "clothlab render: --probe %s: must be PX,PY, a pixel inside the %dx%d image "
+                     "(0 <= PX < %d, 0 <= PY < %d)\n",
+                     probe.c_str(), render.width, render.height, render.width, render.height);
+        return kBadInput;
+      }
+      render.probe = std::array<int, 2>{px, py};
+    }
     return run_render(render);
   }
   if (*view_cmd) return run_view(view);

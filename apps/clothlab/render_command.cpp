@@ -2,6 +2,7 @@
 // --video), with a progress bar and a summary that splits the frame time into simulation and
 // rendering.
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -28,6 +29,34 @@ std::string frame_path(const std::string& dir, int frame) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%05d.png", frame);
   return (std::filesystem::path(dir) / name).string();
+}
+
+// One JSON line on stdout: the interpolated value under the pixel and the nearest vertex's
+// exact nodal value (null where the pixel misses the cloth), SI units, %.9g (float precision).
+void print_probe(Solver& solver, vis::HeadlessRenderer& renderer, const vis::ViewSettings& view,
+                 const RenderArgs& args) {
+  const vis::Field field = args.field == "velocity"   ? vis::Field::velocity
+                           : args.field == "position" ? vis::Field::position
+                                                      : vis::Field::force;
+  const auto [px, py] = *args.probe;
+  const std::optional<vis::ProbeSample> s = renderer.probe(solver, view, px, py);
+  std::printf("{\"field\": \"%s\", \"pixel\": [%d, %d], ", args.field.c_str(), px, py);
+  if (!s) {
+    std::printf(
+        "\"value\": null, \"magnitude\": null, \"vertex\": null, \"vertex_value\": null}\n");
+    return;
+  }
+  const glm::vec3 v = s->value(field);
+  // The force is that of the probe's update_force_field(), the state is the same.
+  const Vec3d n = field == vis::Field::force      ? solver.force(s->vertex)
+                  : field == vis::Field::velocity ? solver.velocity(s->vertex)
+                                                  : solver.position(s->vertex);
+  const VertexRef ref = solver.vertex_ref(s->vertex);
+  const double magnitude = std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z);
+  std::printf("\"value\": [%.9g, %.9g, %.9g], \"magnitude\": %.9g, ", v.x, v.y, v.z, magnitude);
+  if (solver.cloths().size() > 1) std::printf("\"cloth\": %d, ", ref.cloth);
+  std::printf("\"vertex\": [%d, %d], \"vertex_value\": [%.9g, %.9g, %.9g]}\n", ref.i, ref.j, n[0],
+              n[1], n[2]);
 }
 
 }  // namespace
@@ -80,6 +109,7 @@ int run_render(const RenderArgs& args) {
       progress.update(frame + 1);
     }
     if (video) video->finish();
+    if (args.probe) print_probe(*solver, renderer, view, args);
     const double frames = args.frames;
     std::printf(
         "render: %d frames of %dx%d (mode %d) on %s: %.2f ms/frame simulation (%.1f steps of "

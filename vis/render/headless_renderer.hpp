@@ -4,11 +4,13 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "vis/gl/headless_context.hpp"
 #include "vis/gl/offscreen_target.hpp"
+#include "vis/render/field_pass.hpp"
 #include "vis/render/renderer.hpp"
 
 namespace clothlab::vis {
@@ -22,6 +24,12 @@ class HeadlessRenderer {
   // Uploads the solver's state, draws and reads back: RGBA rows, top first.
   std::vector<std::uint8_t> render(Solver& solver, const ViewSettings& view);
 
+  // The fields under pixel (px, py), row 0 at the top, for the solver's current state seen
+  // with `view`: draws the field pass (built on first use) after computing the solver's force
+  // field, reads the one pixel and names the vertex of the triangle there nearest to the
+  // surface point. Nothing where the pixel misses the cloth or lies outside the image.
+  std::optional<ProbeSample> probe(Solver& solver, const ViewSettings& view, int px, int py);
+
   int width() const { return target_.width(); }
   int height() const { return target_.height(); }
   std::string gl_renderer() const { return context_.renderer(); }
@@ -30,6 +38,7 @@ class HeadlessRenderer {
   HeadlessContext context_;  // first: everything below needs the current context
   OffscreenTarget target_;
   Renderer renderer_;
+  std::unique_ptr<FieldPass> fields_;  // only once something probes
 };
 
 }  // namespace clothlab::vis

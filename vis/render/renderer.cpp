@@ -125,8 +125,7 @@ void Renderer::update_cloth(Solver& solver) {
 
 void Renderer::draw(const ViewSettings& view, int width, int height) {
   FrameBlock frame;
-  const float aspect = height > 0 ? float(width) / float(height) : 1.0f;
-  frame.view_proj = view.camera.projection(aspect) * view.camera.view();
+  frame.view_proj = view_projection(view.camera, width, height);
   frame.eye = glm::vec4(view.camera.eye(), 1.0f);
   frame.light_position = glm::vec4(view.light_position, 1.0f);
   frame.light_color = glm::vec4(view.light_color * view.light_intensity, view.ambient);

@@ -27,6 +27,13 @@ class Renderer {
   // Draws the scene into the bound framebuffer of the given size.
   void draw(const ViewSettings& view, int width, int height);
 
+  // For passes that draw the same cloth (FieldPass): the buffer whose first 3 floats per vertex
+  // are the positions of the last update_cloth(), and the triangles' index buffer.
+  GLuint position_buffer() const { return dynamic_vbo_.get(); }
+  GLuint triangle_buffer() const { return triangle_ebo_.get(); }
+  GLsizei triangle_index_count() const { return triangle_indices_; }
+  std::size_t vertex_count() const { return vertices_; }
+
  private:
   Program cloth_program_, floor_program_, springs_program_;
   Texture fabric_, tiles_;

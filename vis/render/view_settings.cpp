@@ -25,6 +25,11 @@ glm::mat4 OrbitCamera::projection(float aspect) const {
   return glm::perspective(glm::radians(fov_deg), aspect, near, near * 10000.0f);
 }
 
+glm::mat4 view_projection(const OrbitCamera& camera, int width, int height) {
+  const float aspect = height > 0 ? float(width) / float(height) : 1.0f;
+  return camera.projection(aspect) * camera.view();
+}
+
 void OrbitCamera::orbit(float dyaw_deg, float dpitch_deg) {
   yaw_deg = std::fmod(yaw_deg + dyaw_deg, 360.0f);
   pitch_deg = std::clamp(pitch_deg + dpitch_deg, -89.0f, 89.0f);

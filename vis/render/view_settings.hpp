@@ -46,6 +46,10 @@ struct ViewSettings {
   glm::vec3 background{0.60f, 0.70f, 0.80f};  // sRGB
 };
 
+// The camera's projection * view for a view of width x height pixels: every pass that must
+// land on the same pixels (the shaded cloth, the field pass, tests projecting a vertex) uses it.
+glm::mat4 view_projection(const OrbitCamera& camera, int width, int height);
+
 // Settings framing the solver's cloth: camera on its bounding box, floor below its lowest point
 // (at 0 when the cloth is above 0), light above and in front.
 ViewSettings default_view(const Solver& solver);
