@@ -1,10 +1,12 @@
 #include "vis/render/field_pass.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
+#include "sim/solver.hpp"
 #include "vis/gl/program.hpp"
 #include "vis/render/renderer.hpp"
 
@@ -115,6 +117,33 @@ std::optional<ProbeSample> FieldPass::read(int px, int py) const {
     glNamedFramebufferReadBuffer(fbo_.get(), attachment);
     glReadPixels(px, y, 1, 1, GL_RGBA, GL_FLOAT, rgba);
     *out = glm::vec3(rgba[0], rgba[1], rgba[2]);
+  }
+  return s;
+}
+
+std::optional<ProbeSample> probe_fields(Solver& solver, const Renderer& renderer, FieldPass& pass,
+                                        const glm::mat4& view_proj, int px, int py) {
+  if (px < 0 || py < 0 || px >= pass.width() || py >= pass.height()) return std::nullopt;
+  const std::size_t n = solver.vertex_count();
+  std::vector<float> force(3 * n), velocity(3 * n);
+  solver.update_force_field();
+  for (std::size_t v = 0; v < n; ++v) {
+    const Vec3d f = solver.force(static_cast<int>(v));
+    for (int k = 0; k < 3; ++k) force[3 * v + k] = static_cast<float>(f[k]);
+  }
+  solver.copy_velocities(velocity.data());
+  pass.draw(renderer, force, velocity, view_proj);
+  // One pixel read back per call with glReadPixels, which waits for the draw (a pixel buffer
+  // object read one frame late would avoid the stall; one pixel a frame is cheap enough).
+  std::optional<ProbeSample> s = pass.read(px, py);
+  if (!s) return s;
+  // The triangle's vertex nearest to the surface point under the pixel, measured in double.
+  double best = INFINITY;
+  for (int v : solver.triangles().at(static_cast<std::size_t>(s->triangle))) {
+    const Vec3d p = solver.position(v);
+    double d2 = 0.0;
+    for (int k = 0; k < 3; ++k) d2 += (p[k] - s->position[k]) * (p[k] - s->position[k]);
+    if (d2 < best) best = d2, s->vertex = v;
   }
   return s;
 }

@@ -10,6 +10,10 @@
 
 #include "vis/gl/objects.hpp"
 
+namespace clothlab {
+class Solver;
+}
+
 namespace clothlab::vis {
 
 class Renderer;
@@ -42,6 +46,9 @@ class FieldPass {
   // covers the pixel's centre.
   std::optional<ProbeSample> read(int px, int py) const;
 
+  int width() const { return width_; }
+  int height() const { return height_; }
+
  private:
   int width_, height_;
   Framebuffer fbo_;
@@ -51,5 +58,14 @@ class FieldPass {
   Buffer field_vbo_;  // force for every vertex, then velocity
   std::size_t field_vertices_ = 0;
 };
+
+// The one probe both the headless renderer and the window use: computes the solver's force field
+// (its only caller on these paths, so nothing pays for it unless something probes), uploads
+// force and velocity, draws `pass` with `renderer`'s cloth (positions from its last
+// update_cloth(), which the caller does), reads pixel (px, py) (row 0 at the top) and names the
+// triangle's vertex nearest to the surface point there. Nothing where the pixel misses the cloth
+// or lies outside the pass. Leaves the pass's framebuffer bound.
+std::optional<ProbeSample> probe_fields(Solver& solver, const Renderer& renderer, FieldPass& pass,
+                                        const glm::mat4& view_proj, int px, int py);
 
 }  // namespace clothlab::vis

@@ -201,6 +201,8 @@ std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view
   ImGui::SameLine();
   ImGui::RadioButton("3 shaded", &mode, 3);
   view.mode = static_cast<DisplayMode>(mode);
+  ImGui::Text("probe (8 force, 9 velocity, 0 position): %s",
+              state.probe ? field_name(*state.probe) : "off");
   ImGui::PopItemWidth();
 
   ImGui::Separator();
@@ -239,6 +241,35 @@ void draw_help_overlay(bool& open) {
       ImGui::EndTable();
     }
   }
+  ImGui::End();
+}
+
+const char* field_name(Field field) {
+  switch (field) {
+    case Field::force:
+      return "force";
+    case Field::velocity:
+      return "velocity";
+    case Field::position:
+      return "position";
+  }
+  return "?";
+}
+
+void draw_probe_overlay(const std::string& text, float x, float y) {
+  // Below right of the cursor, or on the other side where the window's edge is nearer, so the
+  // readout stays inside the window.
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  const bool right = x > viewport->WorkPos.x + 0.5f * viewport->WorkSize.x;
+  const bool low = y > viewport->WorkPos.y + 0.5f * viewport->WorkSize.y;
+  ImGui::SetNextWindowPos(ImVec2(x + (right ? -16.0f : 16.0f), y + (low ? -16.0f : 16.0f)),
+                          ImGuiCond_Always, ImVec2(right ? 1.0f : 0.0f, low ? 1.0f : 0.0f));
+  ImGui::SetNextWindowBgAlpha(0.85f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
+                                 ImGuiWindowFlags_AlwaysAutoResize |
+                                 ImGuiWindowFlags_NoSavedSettings |
+                                 ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+  if (ImGui::Begin("probe", nullptr, flags)) ImGui::TextUnformatted(text.c_str());
   ImGui::End();
 }
 

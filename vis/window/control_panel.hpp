@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "vis/render/field_pass.hpp"
 #include "vis/render/view_settings.hpp"
 #include "vis/window/frame_stats.hpp"
 #include "vis/window/input.hpp"
@@ -17,7 +18,8 @@ namespace clothlab::vis {
 struct PanelState {
   double push_strength = 0.5;  // N*s, momentum of one push (P)
   bool show_help = false;
-  std::string message;  // last notice, e.g. where a screenshot went
+  std::optional<Field> probe;  // keys 8 / 9 / 0; nothing: probing off (no field pass drawn)
+  std::string message;         // last notice, e.g. where a screenshot went
 };
 
 // Draws the panel. Applies edits to the session (values that keep the topology at once, a
@@ -27,6 +29,12 @@ std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view
 
 // Every key of the key table and the mouse controls.
 void draw_help_overlay(bool& open);
+
+// The probe's readout (lines of text) in a small tooltip-like window at (x, y), window
+// coordinates, next to the cursor.
+void draw_probe_overlay(const std::string& text, float x, float y);
+
+const char* field_name(Field field);
 
 // A line at the bottom of the window when the simulation is paused, behind real time or stopped
 // on divergence.

@@ -8,7 +8,9 @@
 #include <filesystem>
 #include <sstream>
 
+#include "sim/solver.hpp"
 #include "vis/gl/gl.hpp"
+#include "vis/render/field_pass.hpp"
 #include "vis/render/renderer.hpp"
 #include "vis/window/imgui_layer.hpp"
 #include "vis/window/scene_edit.hpp"
@@ -50,6 +52,10 @@ ViewHooks ViewHooks::from_environment() {
     if (hooks.exit_after_frames == 0) hooks.exit_after_frames = kDefaultHookFrames;
   }
   if (const char* keys = std::getenv("CLOTHLAB_VIEW_KEYS")) hooks.keys = split_commas(keys);
+  if (const char* cursor = std::getenv("CLOTHLAB_VIEW_CURSOR")) {
+    const std::vector<std::string> xy = split_commas(cursor);
+    if (xy.size() == 2) hooks.cursor = {std::atof(xy[0].c_str()), std::atof(xy[1].c_str())};
+  }
   return hooks;
 }
 
@@ -70,6 +76,7 @@ ViewApp::ViewApp(Scene scene, ViewHooks hooks)
 // The GL objects and the UI go before the window, which owns the context.
 ViewApp::~ViewApp() {
   imgui_.reset();
+  field_pass_.reset();
   renderer_.reset();
 }
 
@@ -181,6 +188,15 @@ void ViewApp::dispatch(Action action) {
     case Action::mode_lambert:
       select_mode(view_, last_shaded_, action);
       break;
+    case Action::probe_force:
+      toggle_probe(Field::force);
+      break;
+    case Action::probe_velocity:
+      toggle_probe(Field::velocity);
+      break;
+    case Action::probe_position:
+      toggle_probe(Field::position);
+      break;
     case Action::push:
       push();
       break;
@@ -236,9 +252,89 @@ void ViewApp::draw(int width, int height) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, width, height);
   renderer_->draw(view_, width, height);
+  if (panel_.probe) probe_under_cursor(width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, width, height);
   // The UI's colours are sRGB already: no second encoding.
   glDisable(GL_FRAMEBUFFER_SRGB);
   imgui_->end_frame();
+}
+
+// Pressing the active probe's key again turns probing off, and with it the field pass (and the
+// force field, computed only while something probes).
+void ViewApp::toggle_probe(Field field) {
+  if (panel_.probe == field) {
+    panel_.probe.reset();
+    field_pass_.reset();
+    probe_title_.clear();
+  } else {
+    panel_.probe = field;
+  }
+  last_title_time_ = -1.0;  // show the change at once
+}
+
+// The field pass at the framebuffer's size, the pixel under the cursor and its nearest vertex:
+// a readout next to the cursor and, shorter, in the title.
+void ViewApp::probe_under_cursor(int width, int height) {
+  const Field field = *panel_.probe;
+  double x = 0.0, y = 0.0;
+  if (hooks_.cursor) {
+    x = (*hooks_.cursor)[0];
+    y = (*hooks_.cursor)[1];
+  } else {
+    glfwGetCursorPos(window_.handle(), &x, &y);
+  }
+  // Cursor positions are in window (screen) coordinates; the framebuffer has more pixels where
+  // the content scale is above 1.
+  int window_width = 0, window_height = 0;
+  glfwGetWindowSize(window_.handle(), &window_width, &window_height);
+  if (window_width <= 0 || window_height <= 0) return;
+  const int px = static_cast<int>(std::floor(x * width / window_width));
+  const int py = static_cast<int>(std::floor(y * height / window_height));
+
+  const char* name = field_name(field);
+  const char* unit = field == Field::force ? "N" : field == Field::velocity ? "m/s" : "m";
+  std::string text;
+  char line[160];
+  Solver& solver = session_.solver();
+  std::optional<ProbeSample> s;
+  if (session_.divergence()) {
+    text = std::string(name) + ": simulation diverged";
+    probe_title_ = text;
+  } else {
+    if (!field_pass_ || field_pass_->width() != width || field_pass_->height() != height)
+      field_pass_ = std::make_unique<FieldPass>(width, height);
+    s = probe_fields(solver, *renderer_, *field_pass_, view_projection(view_.camera, width, height),
+                     px, py);
+    if (!s) {
+      text = std::string(name) + ": no cloth under the cursor";
+      probe_title_ = text;
+    }
+  }
+  if (s) {
+    const glm::vec3 v = s->value(field);
+    const double magnitude = std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z);
+    const Vec3d n = field == Field::force      ? solver.force(s->vertex)
+                    : field == Field::velocity ? solver.velocity(s->vertex)
+                                               : solver.position(s->vertex);
+    const VertexRef ref = solver.vertex_ref(s->vertex);
+    std::snprintf(line, sizeof line, "%s (%s) at pixel (%d, %d)\n", name, unit, px, py);
+    text = line;
+    std::snprintf(line, sizeof line, "  x %+.4e\n  y %+.4e\n  z %+.4e\n  magnitude %.4e %s\n", v.x,
+                  v.y, v.z, magnitude, unit);
+    text += line;
+    if (solver.cloths().size() > 1)
+      std::snprintf(line, sizeof line, "nearest vertex: cloth %d (%d, %d)\n", ref.cloth, ref.i,
+                    ref.j);
+    else
+      std::snprintf(line, sizeof line, "nearest vertex (%d, %d)\n", ref.i, ref.j);
+    text += line;
+    std::snprintf(line, sizeof line, "  nodal (%+.4e, %+.4e, %+.4e) %s", n[0], n[1], n[2], unit);
+    text += line;
+    std::snprintf(line, sizeof line, "%s %.3e %s at (%d, %d)", name, magnitude, unit, ref.i, ref.j);
+    probe_title_ = line;
+  }
+  draw_probe_overlay(text, static_cast<float>(x), static_cast<float>(y));
 }
 
 void ViewApp::take_screenshot(const std::string& path, int width, int height) {
@@ -266,6 +362,7 @@ void ViewApp::update_title() {
     title += " — diverged (R resets)";
   else if (session_.paused)
     title += " — paused";
+  if (panel_.probe && !probe_title_.empty()) title += " — " + probe_title_;
   window_.set_title(title);
 }
 

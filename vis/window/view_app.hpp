@@ -4,7 +4,9 @@
 // title.
 #pragma once
 
+#include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,7 @@
 
 namespace clothlab::vis {
 
+class FieldPass;
 class ImGuiLayer;
 class Renderer;
 
@@ -27,11 +30,14 @@ class Renderer;
 //   CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=N  quit by itself after frame N;
 //   CLOTHLAB_VIEW_SCREENSHOT=file.png  write the last frame (N, default 60) to file.png;
 //   CLOTHLAB_VIEW_KEYS="H,1,,P"        press these keys, one per frame from frame 1, by their
-//                                      names in the help (an empty entry presses nothing).
+//                                      names in the help (an empty entry presses nothing);
+//   CLOTHLAB_VIEW_CURSOR="X,Y"           probes (keys 8 / 9 / 0) read at window point (X, Y)
+//                                      instead of the mouse cursor.
 struct ViewHooks {
   long exit_after_frames = 0;  // 0: run until the user quits
   std::string screenshot;
   std::vector<std::string> keys;
+  std::optional<std::array<double, 2>> cursor;
 
   static ViewHooks from_environment();
 };
@@ -53,6 +59,8 @@ class ViewApp {
   void simulate(double wall_seconds);
   void dispatch(Action action);
   void draw(int width, int height);
+  void toggle_probe(Field field);
+  void probe_under_cursor(int width, int height);
   void take_screenshot(const std::string& path, int width, int height);
   void update_title();
   void push();
@@ -62,7 +70,9 @@ class ViewApp {
   std::string scene_name_;
   GlfwWindow window_;
   std::unique_ptr<Renderer> renderer_;
-  std::unique_ptr<ImGuiLayer> imgui_;  // created after our GLFW callbacks, which it chains to
+  std::unique_ptr<FieldPass> field_pass_;  // only while a probe is on; sized to the framebuffer
+  std::string probe_title_;                // the probe's short readout for the title
+  std::unique_ptr<ImGuiLayer> imgui_;      // created after our GLFW callbacks, which it chains to
   ViewSettings view_;
   DisplayMode last_shaded_ = DisplayMode::lambert;
   MouseCamera mouse_;
