@@ -35,6 +35,12 @@ std::vector<Table> features_suite(const SuiteOptions& o) {
   const long steps_per_frame = std::max(1L, std::lround(1.0 / 60.0 / bare_scene.solver.dt));
   std::vector<float> buffer(3 * static_cast<std::size_t>(res) * res);
   long counter = 0;
+  // What the window does once per displayed frame while something shows fields.
+  auto export_fields = [&](Solver& s) {
+    s.update_force_field();
+    s.copy_normals(buffer.data());
+    s.copy_velocities(buffer.data());
+  };
 
   const std::vector<Variant> variants = {
       {"bare step", "reference", [](Scene&) {}, nullptr},
@@ -51,17 +57,9 @@ std::vector<Table> features_suite(const SuiteOptions& o) {
        nullptr},
       {"+ field export every frame (forces, normals, velocities)", "used", [](Scene&) {},
        [&](Solver& s) {
-         if (++counter % steps_per_frame) return;
-         s.update_force_field();
-         s.copy_normals(buffer.data());
-         s.copy_velocities(buffer.data());
+         if (++counter % steps_per_frame == 0) export_fields(s);
        }},
-      {"+ field export every step", "used", [](Scene&) {},
-       [&](Solver& s) {
-         s.update_force_field();
-         s.copy_normals(buffer.data());
-         s.copy_velocities(buffer.data());
-       }},
+      {"+ field export every step", "used", [](Scene&) {}, export_fields},
       {"+ energy every step (a trace with energy)", "used", [](Scene&) {},
        [](Solver& s) { (void)s.energy(); }},
       {"wind table present, enabled = false", "unused",
