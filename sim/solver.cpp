@@ -109,8 +109,10 @@ int SolverT<T>::vertex_index(const VertexRef& v) const {
 }
 
 template <class T>
-void SolverT<T>::update_force_field() {
-  compute_forces(model_, time(), state_.pos, state_.vel, force_field_, workspace_, threads_);
+void SolverT<T>::update_force_field(ForceSource source) {
+  compute_force_source(model_, time(), state_.pos, state_.vel, force_field_, workspace_, threads_,
+                       source);
+  force_source_ = source;
 }
 
 template <class T>

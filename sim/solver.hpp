@@ -8,6 +8,7 @@
 
 #include "sim/divergence.hpp"
 #include "sim/energy.hpp"
+#include "sim/forces/force_source.hpp"
 #include "sim/scene/scene.hpp"
 
 namespace clothlab {
@@ -52,10 +53,15 @@ class Solver {
 
   virtual Vec3d position(int vertex) const = 0;
   virtual Vec3d velocity(int vertex) const = 0;
+  virtual bool pinned(int vertex) const = 0;  // held in place (its force is the support's)
   // Fills the force field at the current state; only called when something displays, probes or
-  // traces forces, so a plain run never pays for it.
-  virtual void update_force_field() = 0;
+  // traces forces, so a plain run never pays for it. `source` picks the total force (what the
+  // integrators see; for pinned vertices the support reaction) or one source alone (springs,
+  // gravity m_i g, drag -c v_i, wind); the sources add up to the total. Allocates nothing.
+  virtual void update_force_field(ForceSource source = ForceSource::total) = 0;
   virtual Vec3d force(int vertex) const = 0;  // from the last update_force_field()
+  // The source the last update_force_field() filled (total before any update).
+  virtual ForceSource force_field_source() const = 0;
   virtual Energy energy() = 0;
 
   // A push (the window's P key): adds momentum `impulse` (N*s) to the free vertices within

@@ -28,8 +28,12 @@ class SolverT final : public Solver {
   VertexRef vertex_ref(int index) const override { return vertex_ref_of(model_.cloths, index); }
   Vec3d position(int vertex) const override { return get(state_.pos, vertex); }
   Vec3d velocity(int vertex) const override { return get(state_.vel, vertex); }
-  void update_force_field() override;
+  bool pinned(int vertex) const override {
+    return model_.inv_mass[static_cast<std::size_t>(vertex)] == T(0);
+  }
+  void update_force_field(ForceSource source = ForceSource::total) override;
   Vec3d force(int vertex) const override { return get(force_field_, vertex); }
+  ForceSource force_field_source() const override { return force_source_; }
   Energy energy() override;
   void apply_impulse(const Vec3d& center, double radius, const Vec3d& impulse) override;
   void copy_positions(float* xyz) const override { copy(state_.pos, xyz); }
@@ -76,6 +80,7 @@ class SolverT final : public Solver {
   std::unique_ptr<Integrator<T>> integrator_;
   ForceWorkspace<T> workspace_;
   Vec3Array<T> force_field_;
+  ForceSource force_source_ = ForceSource::total;  // what force_field_ holds
   std::vector<double> energy_partials_;
   DivergenceMonitor<T> monitor_;
   std::optional<Divergence> diverged_;

@@ -1,14 +1,16 @@
-// Golden images of display modes 1, 2 and 3 (320 x 240) of a fixed scene after a fixed number of
-// steps, rendered headless (EGL; Mesa llvmpipe on CI) and compared with tests/golden/modeK.png.
-// Tolerance: at most 0.5 % of the pixels may differ by more than 8/255 in any channel, and the
-// mean absolute difference over all channels must stay below 1/255. On failure the actual image
-// and a difference image (|actual - golden| x 8) are written next to the test's output.
-// Regenerate on purpose with scripts/update-golden (CLOTHLAB_UPDATE_GOLDEN=1).
+// Golden images of display modes 1, 2 and 3 and of the force and normal arrows (320 x 240) of a
+// fixed scene after a fixed number of steps, rendered headless (EGL; Mesa llvmpipe on CI) and
+// compared with tests/golden/modeK.png. Tolerance: at most 0.5 % of the pixels may differ by more
+// than 8/255 in any channel, and the mean absolute difference over all channels must stay below
+// 1/255. On failure the actual image and a difference image (|actual - golden| x 8) are written
+// next to the test's output. Regenerate on purpose with scripts/update-golden
+// (CLOTHLAB_UPDATE_GOLDEN=1).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <string>
 
 #include "sim/solver_impl.hpp"
 #include "test_scenes.hpp"
@@ -77,14 +79,11 @@ class GoldenImage : public ::testing::TestWithParam<int> {
 std::unique_ptr<vis::HeadlessRenderer> GoldenImage::renderer_;
 std::unique_ptr<SolverT<float>> GoldenImage::solver_;
 
-TEST_P(GoldenImage, MatchesTheStoredImage) {
-  const int mode = GetParam();
-  vis::ViewSettings view = vis::default_view(*solver_);
-  view.mode = static_cast<vis::DisplayMode>(mode);
+// Renders `view` and compares it with tests/golden/NAME.png (or rewrites it on request).
+void check_golden(vis::HeadlessRenderer& renderer, Solver& solver, const vis::ViewSettings& view,
+                  const std::string& name) {
   Image actual(kWidth, kHeight);
-  actual.rgba = renderer_->render(*solver_, view);
-
-  const std::string name = "mode" + std::to_string(mode);
+  actual.rgba = renderer.render(solver, view);
   const fs::path golden_path = fs::path(CLOTHLAB_SOURCE_DIR) / "tests" / "golden" / (name + ".png");
   if (const char* update = std::getenv("CLOTHLAB_UPDATE_GOLDEN"); update && *update == '1') {
     write_png(actual, golden_path.string());
@@ -106,6 +105,35 @@ TEST_P(GoldenImage, MatchesTheStoredImage) {
                   << " % of pixels differ by more than 8/255 (limit 0.5 %), mean absolute "
                   << "difference " << c.mean_abs << "/255 (limit 1/255); see " << out;
   }
+}
+
+TEST_P(GoldenImage, MatchesTheStoredImage) {
+  const int mode = GetParam();
+  vis::ViewSettings view = vis::default_view(*solver_);
+  view.mode = static_cast<vis::DisplayMode>(mode);
+  check_golden(*renderer_, *solver_, view, "mode" + std::to_string(mode));
+}
+
+// Force arrows (springs only, so every vertex has one, log scale, magma) over mode 3, and normal
+// arrows over the cloth coloured by height: the arrow glyphs, their density, lengths and colours.
+TEST_F(GoldenImage, ForceArrows) {
+  vis::ViewSettings view = vis::default_view(*solver_);
+  view.arrows.force = true;
+  view.arrows.stride = 3;
+  view.arrows.scale = vis::ArrowScale::log;
+  view.force_source = ForceSource::springs;
+  view.color.map = vis::ColorMap::magma;
+  check_golden(*renderer_, *solver_, view, "arrows_force");
+}
+
+TEST_F(GoldenImage, NormalArrowsOverHeight) {
+  vis::ViewSettings view = vis::default_view(*solver_);
+  view.camera.yaw_deg = 230.0f;  // from behind and the side: the normals point this way
+  view.arrows.normals = true;
+  view.arrows.stride = 2;
+  view.color.field = vis::ScalarField::height;
+  view.color.map = vis::ColorMap::viridis;
+  check_golden(*renderer_, *solver_, view, "arrows_normals");
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, GoldenImage, ::testing::Values(1, 2, 3),

@@ -37,6 +37,15 @@ struct RenderArgs {
   // the top); the force field is computed only then.
   std::optional<std::array<int, 2>> probe;
   std::string field = "force";  // force | velocity | position
+  // Scientific views (vis::ViewSettings::color, ::arrows): empty strings keep the defaults.
+  std::string color_by;             // force | speed | strain | height
+  std::string colormap;             // viridis | magma | turbo | coolwarm
+  std::string range;                // auto | symmetric | MIN,MAX
+  bool shaded = false;              // light the colour-mapped cloth
+  std::vector<std::string> arrows;  // force, normals
+  std::string force_source;         // total | springs | gravity | drag | wind
+  int arrow_stride = 0;             // 0: automatic
+  std::string arrow_scale;          // linear | log
 };
 
 struct ViewArgs {

@@ -91,6 +91,38 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--field", render.field, "probed field: force, velocity or position")
       ->check(CLI::IsMember({"force", "velocity", "position"}));
 
+  render_cmd->add_option("--color-by", render.color_by, "colour the cloth by a scalar (modes 2, 3)")
+      ->check(CLI::IsMember({"force", "speed", "strain", "height"}));
+  render_cmd->add_option("--colormap", render.colormap, "colour map for --color-by and arrows")
+      ->check(CLI::IsMember({"viridis", "magma", "turbo", "coolwarm"}));
+  render_cmd
+      ->add_option("--range", render.range,
+                   "colour range: auto (min..max), symmetric (-a..a) or MIN,MAX")
+      ->check(CLI::Validator(
+          [](std::string& r) {
+            double lo = 0.0, hi = 0.0;
+            char comma = 0, rest = 0;
+            if (r == "auto" || r == "symmetric") return std::string();
+            return std::sscanf(r.c_str(), "%lf%c%lf%c", &lo, &comma, &hi, &rest) == 3 &&
+                           comma == ',' && std::isfinite(lo) && std::isfinite(hi) && lo < hi
+                       ? std::string()
+                       : std::string("must be auto, symmetric or MIN,MAX with MIN < MAX");
+          },
+          "RANGE"));
+  render_cmd->add_flag("--shaded", render.shaded, "light the colour-mapped cloth");
+  render_cmd->add_option("--arrows", render.arrows, "arrows at the vertices: force, normals")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"force", "normals"}));
+  render_cmd
+      ->add_option(
+          "--force-source", render.force_source,
+          "force shown by arrows and --color-by force: total, springs, gravity, drag, wind")
+      ->check(CLI::IsMember({"total", "springs", "gravity", "drag", "wind"}));
+  render_cmd->add_option("--arrow-stride", render.arrow_stride, "an arrow every N vertices")
+      ->check(CLI::Range(1, 100000));
+  render_cmd->add_option("--arrow-scale", render.arrow_scale, "force arrow length: linear or log")
+      ->check(CLI::IsMember({"linear", "log"}));
+
   ViewArgs view;
   auto* view_cmd = app.add_subcommand("view", "open a window on a scene (default scene if none)");
   add_scene_options(*view_cmd, view.scene, view.overrides, false);

@@ -14,6 +14,7 @@
 #include "sim/solver.hpp"
 #include "vis/gl/gl_error.hpp"
 #include "vis/render/headless_renderer.hpp"
+#include "vis/render/scalar_field.hpp"
 #include "vis/textures/image.hpp"
 
 namespace clothlab::app {
@@ -59,6 +60,26 @@ void print_probe(Solver& solver, vis::HeadlessRenderer& renderer, const vis::Vie
               n[1], n[2]);
 }
 
+// The scientific-view options onto the view (CLI11 has checked every value).
+void apply_view_options(const RenderArgs& args, vis::ViewSettings& view) {
+  if (!args.color_by.empty()) view.color.field = *vis::parse_scalar_field(args.color_by);
+  if (!args.colormap.empty()) view.color.map = *vis::parse_colormap(args.colormap);
+  if (args.range == "auto") {
+    view.color.range = vis::RangeMode::automatic;
+  } else if (args.range == "symmetric") {
+    view.color.range = vis::RangeMode::symmetric;
+  } else if (!args.range.empty()) {
+    view.color.range = vis::RangeMode::fixed;
+    std::sscanf(args.range.c_str(), "%lf,%lf", &view.color.fixed.min, &view.color.fixed.max);
+  }
+  view.color.shaded = args.shaded;
+  for (const std::string& a : args.arrows)
+    (a == "force" ? view.arrows.force : view.arrows.normals) = true;
+  if (!args.force_source.empty()) view.force_source = *parse_force_source(args.force_source);
+  view.arrows.stride = args.arrow_stride;
+  if (args.arrow_scale == "log") view.arrows.scale = vis::ArrowScale::log;
+}
+
 }  // namespace
 
 int run_render(const RenderArgs& args) {
@@ -78,6 +99,7 @@ int run_render(const RenderArgs& args) {
     renderer.set_cloth(*solver);
     vis::ViewSettings view = vis::default_view(*solver);
     view.mode = static_cast<vis::DisplayMode>(args.mode);
+    apply_view_options(args, view);
     std::unique_ptr<VideoPipe> video;
     if (!args.video.empty())
       video = std::make_unique<VideoPipe>(args.video, args.width, args.height, args.fps);

@@ -11,16 +11,69 @@
 namespace clothlab {
 namespace {
 
-template <class T>
+// f = gravity and/or linear drag on [b, e) (overwrites). The default, both fused, is the step
+// loop's; one alone serves compute_force_source.
+template <class T, bool Gravity = true, bool Drag = true>
 void add_body_forces(const Model<T>& m, const Vec3Array<T>& v, Vec3Array<T>& f, std::size_t b,
                      std::size_t e) {
+  static_assert(Gravity || Drag);
   const T gx = m.gravity[0], gy = m.gravity[1], gz = m.gravity[2], drag = m.drag;
 #pragma omp simd
   for (std::size_t i = b; i < e; ++i) {
     const T mi = m.mass[i];
-    f.x[i] = mi * gx - drag * v.x[i];
-    f.y[i] = mi * gy - drag * v.y[i];
-    f.z[i] = mi * gz - drag * v.z[i];
+    if constexpr (Gravity && Drag) {
+      f.x[i] = mi * gx - drag * v.x[i];
+      f.y[i] = mi * gy - drag * v.y[i];
+      f.z[i] = mi * gz - drag * v.z[i];
+    } else if constexpr (Gravity) {
+      f.x[i] = mi * gx;
+      f.y[i] = mi * gy;
+      f.z[i] = mi * gz;
+    } else {
+      f.x[i] = -(drag * v.x[i]);
+      f.y[i] = -(drag * v.y[i]);
+      f.z[i] = -(drag * v.z[i]);
+    }
+  }
+}
+
+template <class T>
+void zero_forces(Vec3Array<T>& f, std::size_t b, std::size_t e) {
+#pragma omp simd
+  for (std::size_t i = b; i < e; ++i) {
+    f.x[i] = T(0);
+    f.y[i] = T(0);
+    f.z[i] = T(0);
+  }
+}
+
+// f = the spring forces alone: compute_forces' loops with the body forces replaced by zero.
+template <class T>
+void compute_spring_forces(const Model<T>& m, const Vec3Array<T>& x, const Vec3Array<T>& v,
+                           Vec3Array<T>& f, int threads) {
+  const bool damped = m.has_damping;
+  if (m.kernel == SpringKernel::row_sweep) {
+    for (const GridStencil<T>& g : m.grids) {
+      for_each_index(g.nv, threads, [&](int j) {
+        const std::size_t row =
+            static_cast<std::size_t>(g.offset) + static_cast<std::size_t>(j) * g.nu;
+        zero_forces(f, row, row + static_cast<std::size_t>(g.nu));
+        if (damped) {
+          add_grid_row_spring_forces<T, true>(g, x, v, f, j);
+        } else {
+          add_grid_row_spring_forces<T, false>(g, x, v, f, j);
+        }
+      });
+    }
+  } else {
+    for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) {
+      zero_forces(f, b, e);
+      if (damped) {
+        add_spring_forces<T, true>(m, x, v, f, b, e);
+      } else {
+        add_spring_forces<T, false>(m, x, v, f, b, e);
+      }
+    });
   }
 }
 
@@ -149,6 +202,33 @@ void compute_external_forces(const Model<T>& m, double t, const Vec3Array<T>& x,
 }
 
 template <class T>
+void compute_force_source(const Model<T>& m, double t, const Vec3Array<T>& x, const Vec3Array<T>& v,
+                          Vec3Array<T>& f, ForceWorkspace<T>& ws, int threads, ForceSource source) {
+  switch (source) {
+    case ForceSource::total:
+      compute_forces(m, t, x, v, f, ws, threads);
+      return;
+    case ForceSource::springs:
+      compute_spring_forces(m, x, v, f, threads);
+      return;
+    case ForceSource::gravity:
+      for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) {
+        add_body_forces<T, true, false>(m, v, f, b, e);
+      });
+      return;
+    case ForceSource::drag:
+      for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) {
+        add_body_forces<T, false, true>(m, v, f, b, e);
+      });
+      return;
+    case ForceSource::wind:
+      for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) { zero_forces(f, b, e); });
+      add_wind(m, t, x, v, f, ws, threads);
+      return;
+  }
+}
+
+template <class T>
 void compute_surface(const Model<T>& m, const Vec3Array<T>& x, ForceWorkspace<T>& ws, int threads) {
   if (m.kernel != SpringKernel::row_sweep) {
     compute_surface_from_triangles(m, x, ws, threads);
@@ -186,6 +266,12 @@ template void compute_external_forces<float>(const Model<float>&, double, const 
 template void compute_external_forces<double>(const Model<double>&, double,
                                               const Vec3Array<double>&, const Vec3Array<double>&,
                                               Vec3Array<double>&, ForceWorkspace<double>&, int);
+template void compute_force_source<float>(const Model<float>&, double, const Vec3Array<float>&,
+                                          const Vec3Array<float>&, Vec3Array<float>&,
+                                          ForceWorkspace<float>&, int, ForceSource);
+template void compute_force_source<double>(const Model<double>&, double, const Vec3Array<double>&,
+                                           const Vec3Array<double>&, Vec3Array<double>&,
+                                           ForceWorkspace<double>&, int, ForceSource);
 template void compute_forces<float>(const Model<float>&, double, const Vec3Array<float>&,
                                     const Vec3Array<float>&, Vec3Array<float>&,
                                     ForceWorkspace<float>&, int);

@@ -1,6 +1,7 @@
 // The total force on every vertex: springs, gravity, linear drag and wind.
 #pragma once
 
+#include "sim/forces/force_source.hpp"
 #include "sim/forces/grid_surface.hpp"
 #include "sim/model/model.hpp"
 
@@ -40,6 +41,15 @@ template <class T>
 void compute_external_forces(const Model<T>& m, double t, const Vec3Array<T>& x,
                              const Vec3Array<T>& v, Vec3Array<T>& f, ForceWorkspace<T>& ws,
                              int threads);
+
+// f = one source of F(t, x, v) alone, on all vertices (pinned ones included): total is
+// compute_forces; springs the spring kernel of the model (Hooke plus along-spring damping);
+// gravity m_i g; drag -drag v_i; wind the wind force (zero when the wind is off or calm).
+// springs + gravity + drag + wind equals total up to round-off. For inspection (force display,
+// probes, traces), not the step loop; allocates nothing once ws is sized.
+template <class T>
+void compute_force_source(const Model<T>& m, double t, const Vec3Array<T>& x, const Vec3Array<T>& v,
+                          Vec3Array<T>& f, ForceWorkspace<T>& ws, int threads, ForceSource source);
 
 // Fills ws.normal (unit, area-weighted) and ws.vertex_area for the positions x; used by the wind
 // force and by renderers (Solver::copy_normals), so both see the same surface.

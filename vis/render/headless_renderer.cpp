@@ -8,8 +8,10 @@ HeadlessRenderer::HeadlessRenderer(int width, int height) : target_(width, heigh
 
 std::vector<std::uint8_t> HeadlessRenderer::render(Solver& solver, const ViewSettings& view) {
   renderer_.update_cloth(solver);
+  diagnostics_.update(solver, view, renderer_);
   target_.bind();
   renderer_.draw(view, target_.width(), target_.height());
+  diagnostics_.draw(view, renderer_);
   return target_.read_rgba();
 }
 

@@ -10,6 +10,7 @@
 
 #include "vis/gl/headless_context.hpp"
 #include "vis/gl/offscreen_target.hpp"
+#include "vis/render/diagnostics.hpp"
 #include "vis/render/field_pass.hpp"
 #include "vis/render/renderer.hpp"
 
@@ -20,8 +21,12 @@ class HeadlessRenderer {
   // Throws GlUnavailable (one clear line) without EGL / OpenGL 4.5, ShaderError on a bad shader.
   HeadlessRenderer(int width, int height);
 
-  void set_cloth(Solver& solver) { renderer_.set_cloth(solver); }
-  // Uploads the solver's state, draws and reads back: RGBA rows, top first.
+  void set_cloth(Solver& solver) {
+    renderer_.set_cloth(solver);
+    diagnostics_.set_cloth();
+  }
+  // Uploads the solver's state (and what the view's diagnostics need), draws and reads back:
+  // RGBA rows, top first.
   std::vector<std::uint8_t> render(Solver& solver, const ViewSettings& view);
 
   // The fields under pixel (px, py), row 0 at the top, for the solver's current state seen
@@ -33,11 +38,14 @@ class HeadlessRenderer {
   int width() const { return target_.width(); }
   int height() const { return target_.height(); }
   std::string gl_renderer() const { return context_.renderer(); }
+  // The colour-by range and the arrows of the last render().
+  const Diagnostics& diagnostics() const { return diagnostics_; }
 
  private:
   HeadlessContext context_;  // first: everything below needs the current context
   OffscreenTarget target_;
   Renderer renderer_;
+  Diagnostics diagnostics_;
   std::unique_ptr<FieldPass> fields_;  // only once something probes
 };
 

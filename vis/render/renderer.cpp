@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 
 #include "sim/solver.hpp"
+#include "vis/colormap/colormap_texture.hpp"
 #include "vis/gl/program.hpp"
 #include "vis/textures/fabric_texture.hpp"
 #include "vis/textures/floor_texture.hpp"
@@ -14,7 +16,8 @@ namespace {
 
 // Explicit uniform locations of shaders/floor.vert and shaders/cloth.frag (no lookups per frame).
 constexpr GLint kFloorHalfSize = 0, kFloorTileSize = 1;
-constexpr GLint kClothMode = 0, kClothTextureRepeat = 1;
+constexpr GLint kClothMode = 0, kClothTextureRepeat = 1, kClothColorBy = 2, kClothRange = 3,
+                kClothShaded = 4;
 
 // std140 layout of the Frame block in shaders/frame.glsl.
 struct FrameBlock {
@@ -59,6 +62,7 @@ Renderer::Renderer()
   glNamedBufferStorage(frame_ubo_.get(), sizeof(FrameBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glObjectLabel(GL_TEXTURE, fabric_.get(), -1, "fabric albedo");
   glObjectLabel(GL_TEXTURE, tiles_.get(), -1, "floor tiles");
+  for (ColorMap map : kAllColorMaps) colormaps_[static_cast<int>(map)] = make_colormap_texture(map);
 }
 
 void Renderer::set_cloth(Solver& solver) {
@@ -87,6 +91,7 @@ void Renderer::set_cloth(Solver& solver) {
 
   dynamic_vbo_ = make_buffer();
   static_vbo_ = make_buffer();
+  scalar_vbo_ = make_buffer();
   triangle_ebo_ = make_buffer();
   line_ebo_ = make_buffer();
   auto bytes = [](const auto& v) {
@@ -95,6 +100,9 @@ void Renderer::set_cloth(Solver& solver) {
   glNamedBufferStorage(dynamic_vbo_.get(), static_cast<GLsizeiptr>(6 * n * sizeof(float)), nullptr,
                        GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(static_vbo_.get(), bytes(fixed), fixed.data(), 0);
+  glNamedBufferStorage(scalar_vbo_.get(),
+                       static_cast<GLsizeiptr>(std::max<std::size_t>(1, n) * sizeof(float)),
+                       nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(triangle_ebo_.get(), bytes(triangles), triangles.data(), 0);
   glNamedBufferStorage(line_ebo_.get(), bytes(lines), lines.data(), 0);
 
@@ -111,6 +119,8 @@ void Renderer::set_cloth(Solver& solver) {
                               3 * sizeof(float));  // rest position
     for (GLuint a = 0; a < 4; ++a) attribute(vao, a, a, a == 2 ? 2 : 3);
   }
+  glVertexArrayVertexBuffer(cloth_vao_.get(), 4, scalar_vbo_.get(), 0, sizeof(float));
+  attribute(cloth_vao_.get(), 4, 4, 1);
   glVertexArrayElementBuffer(cloth_vao_.get(), triangle_ebo_.get());
   glVertexArrayElementBuffer(line_vao_.get(), line_ebo_.get());
   staging_.resize(6 * n);
@@ -121,6 +131,14 @@ void Renderer::update_cloth(Solver& solver) {
   solver.copy_normals(staging_.data() + 3 * vertices_);
   glNamedBufferSubData(dynamic_vbo_.get(), 0,
                        static_cast<GLsizeiptr>(staging_.size() * sizeof(float)), staging_.data());
+}
+
+void Renderer::set_scalars(const std::vector<float>& values, ScalarRange range) {
+  if (values.size() != vertices_)
+    throw std::invalid_argument("Renderer::set_scalars: one value per vertex expected");
+  glNamedBufferSubData(scalar_vbo_.get(), 0, static_cast<GLsizeiptr>(values.size() * sizeof(float)),
+                       values.data());
+  scalar_range_ = range;
 }
 
 void Renderer::draw(const ViewSettings& view, int width, int height) {
@@ -158,7 +176,13 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
     glUseProgram(cloth_program_.get());
     glProgramUniform1i(cloth_program_.get(), kClothMode, static_cast<int>(view.mode));
     glProgramUniform1f(cloth_program_.get(), kClothTextureRepeat, view.fabric_repeat);
+    const bool color_by = view.color.field != ScalarField::none;
+    glProgramUniform1i(cloth_program_.get(), kClothColorBy, color_by ? 1 : 0);
+    glProgramUniform2f(cloth_program_.get(), kClothRange, static_cast<float>(scalar_range_.min),
+                       static_cast<float>(scalar_range_.max));
+    glProgramUniform1i(cloth_program_.get(), kClothShaded, view.color.shaded ? 1 : 0);
     glBindTextureUnit(0, fabric_.get());
+    glBindTextureUnit(1, colormap_texture(view.color.map));
     glBindVertexArray(cloth_vao_.get());
     glDrawElements(GL_TRIANGLES, triangle_indices_, GL_UNSIGNED_INT, nullptr);
   }

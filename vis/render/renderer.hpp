@@ -3,6 +3,7 @@
 // creation differs between window and headless. Needs a current OpenGL 4.5 core context.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "vis/gl/objects.hpp"
@@ -24,6 +25,9 @@ class Renderer {
   // Uploads the current positions and smooth normals (computed in parallel by the solver) into
   // the vertex buffer, in place. Call once per frame before draw().
   void update_cloth(Solver& solver);
+  // The colour-by scalar, one per vertex (vertex_count() values), and the range the colour map
+  // spans, for draws while view.color.field is not none.
+  void set_scalars(const std::vector<float>& values, ScalarRange range);
   // Draws the scene into the bound framebuffer of the given size.
   void draw(const ViewSettings& view, int width, int height);
 
@@ -33,6 +37,8 @@ class Renderer {
   GLuint triangle_buffer() const { return triangle_ebo_.get(); }
   GLsizei triangle_index_count() const { return triangle_indices_; }
   std::size_t vertex_count() const { return vertices_; }
+  // The 256 x 1 sRGB table of a colour map (for the arrows and legends that share it).
+  GLuint colormap_texture(ColorMap map) const { return colormaps_[static_cast<int>(map)].get(); }
 
  private:
   Program cloth_program_, floor_program_, springs_program_;
@@ -41,6 +47,9 @@ class Renderer {
   // One vertex buffer for what changes every frame (positions, then normals) and one for what
   // does not (UVs, then rest positions); triangles and spring lines index the same vertices.
   Buffer dynamic_vbo_, static_vbo_, triangle_ebo_, line_ebo_;
+  Buffer scalar_vbo_;  // the colour-by scalar per vertex
+  ScalarRange scalar_range_;
+  std::array<Texture, kAllColorMaps.size()> colormaps_;
   VertexArray cloth_vao_, line_vao_, empty_vao_;
   std::vector<float> staging_;
   std::size_t vertices_ = 0;

@@ -5,6 +5,9 @@
 
 #include <glm/glm.hpp>
 
+#include "sim/forces/force_source.hpp"
+#include "vis/colormap/colormap.hpp"
+
 namespace clothlab {
 class Solver;
 }
@@ -31,8 +34,39 @@ struct OrbitCamera {
   void zoom(float factor);          // distance *= factor
 };
 
+// What the cloth is coloured by in modes 2 and 3 (none: the mode's own colours). Each scalar is
+// computed per vertex on the CPU only while it is shown (vis/render/scalar_field.hpp) and mapped
+// through the colour map per fragment.
+enum class ScalarField { none, force, speed, strain, height };
+
+struct ColorSettings {
+  ScalarField field = ScalarField::none;
+  ColorMap map = ColorMap::viridis;
+  RangeMode range = RangeMode::automatic;
+  ScalarRange fixed{0.0, 1.0};  // used when range is fixed
+  bool shaded = false;          // multiply by the light (shape) or show the exact map colour
+};
+
+// Instanced arrow glyphs at (a subset of) the vertices: F force arrows, N normal arrows.
+enum class ArrowScale { linear, log };
+struct ArrowSettings {
+  bool force = false;    // F
+  bool normals = false;  // N
+  // Every stride-th vertex along both grid directions; 0 chooses a stride that shows at most
+  // about kAutoArrowsPerSide arrows along each side.
+  int stride = 0;
+  // Longest force arrow as a multiple of the spacing between shown vertices (linear: lengths
+  // proportional to |F|; log: 3 decades below the range's top map onto the length).
+  ArrowScale scale = ArrowScale::linear;
+  float length = 0.9f;
+};
+
 struct ViewSettings {
   DisplayMode mode = DisplayMode::lambert;
+  ColorSettings color;
+  ArrowSettings arrows;
+  // Which force the |force| colouring and the force arrows show (probes show the total).
+  ForceSource force_source = ForceSource::total;
   OrbitCamera camera;
   glm::vec3 light_position{1.0f, 4.0f, 2.5f};  // m
   glm::vec3 light_color{1.0f, 0.95f, 0.88f};

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "vis/window/scene_edit.hpp"
+#include "vis/window/views_panel.hpp"
 
 namespace clothlab::vis {
 namespace {
@@ -117,6 +118,15 @@ std::optional<Action> buttons(const SimSession& session) {
   if (ImGui::Button("Reset (R)")) clicked = Action::reset;
   ImGui::SameLine();
   if (ImGui::Button("Screenshot")) clicked = Action::screenshot;
+  // Record writes the CSV trace of the pinned probe's vertex (or the scene's traced vertices).
+  if (ImGui::Button(session.recording() ? "Stop recording" : "Record CSV"))
+    clicked = Action::toggle_record;
+  ImGui::SameLine();
+  if (session.recording())
+    ImGui::TextColored(kErrorColour, "%ld rows to %s", session.recorded_rows(),
+                       session.recording_path().c_str());
+  else
+    ImGui::TextDisabled("pinned probe's vertex, else the scene's [trace]");
   return clicked;
 }
 
@@ -203,6 +213,7 @@ std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view
   view.mode = static_cast<DisplayMode>(mode);
   ImGui::Text("probe (8 force, 9 velocity, 0 position): %s",
               state.probe ? field_name(*state.probe) : "off");
+  draw_view_editors(view);
   ImGui::PopItemWidth();
 
   ImGui::Separator();

@@ -11,23 +11,26 @@
 namespace clothlab::vis {
 
 enum class Action {
-  mode_springs,     // 1: springs <-> the previous shaded mode
-  mode_normals,     // 2
-  mode_lambert,     // 3
-  probe_force,      // 8: probe the force under the cursor (again: off)
-  probe_velocity,   // 9
-  probe_position,   // 0
-  push,             // P
-  toggle_wind,      // W
-  pause,            // Space
-  single_step,      // .
-  reset,            // R
-  more_vertices,    // +
-  fewer_vertices,   // -
-  toggle_parallel,  // M
-  toggle_help,      // H
-  screenshot,       // F12
-  quit,             // Esc
+  mode_springs,          // 1: springs <-> the previous shaded mode
+  mode_normals,          // 2
+  mode_lambert,          // 3
+  probe_force,           // 8: probe the force under the cursor (again: off)
+  probe_velocity,        // 9
+  probe_position,        // 0
+  toggle_force_arrows,   // F
+  toggle_normal_arrows,  // N
+  push,                  // P
+  toggle_wind,           // W
+  pause,                 // Space
+  single_step,           // .
+  reset,                 // R
+  more_vertices,         // +
+  fewer_vertices,        // -
+  toggle_parallel,       // M
+  toggle_help,           // H
+  screenshot,            // F12
+  quit,                  // Esc
+  toggle_record,         // the panel's Record button (no key)
 };
 
 struct KeyBinding {

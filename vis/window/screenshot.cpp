@@ -29,7 +29,10 @@ Image read_default_framebuffer(int width, int height) {
   return image;
 }
 
-std::string screenshot_file_name() {
+namespace {
+
+// "<prefix>_<YYYYmmdd_HHMMSS_mmm><suffix>" in local time.
+std::string stamped_name(const char* prefix, const char* suffix) {
   using namespace std::chrono;
   const auto now = system_clock::now();
   const std::time_t seconds = system_clock::to_time_t(now);
@@ -39,9 +42,19 @@ std::string screenshot_file_name() {
   localtime_r(&seconds, &local);
   char stamp[32];
   std::strftime(stamp, sizeof stamp, "%Y%m%d_%H%M%S", &local);
-  char name[80];
-  std::snprintf(name, sizeof name, "clothlab_screenshot_%s_%03ld.png", stamp, ms);
+  char name[96];
+  std::snprintf(name, sizeof name, "%s_%s_%03ld%s", prefix, stamp, ms, suffix);
   return name;
+}
+
+}  // namespace
+
+std::string screenshot_file_name() {
+  return stamped_name("clothlab_screenshot", ".png");
+}
+
+std::string record_file_name() {
+  return stamped_name("clothlab_record", ".csv");
 }
 
 }  // namespace clothlab::vis

@@ -14,5 +14,7 @@ Image read_default_framebuffer(int width, int height);
 // "clothlab_screenshot_<YYYYmmdd_HHMMSS_mmm>.png": local time, with milliseconds so two quick
 // presses do not overwrite each other.
 std::string screenshot_file_name();
+// "clothlab_record_<YYYYmmdd_HHMMSS_mmm>.csv", likewise: the panel's Record.
+std::string record_file_name();
 
 }  // namespace clothlab::vis

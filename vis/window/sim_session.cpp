@@ -119,6 +119,7 @@ void SimSession::push(const Vec3d& impulse) {
 }
 
 FrameAdvance SimSession::advance(const FrameStepper& stepper, double wall_seconds) {
+  if (recorder_) return advance_recording(stepper, wall_seconds);
   const FrameAdvance r = stepper.advance(*solver_, wall_seconds, 1.0, paused || divergence_);
   if (r.divergence) divergence_ = r.divergence;
   return r;
@@ -128,6 +129,58 @@ void SimSession::single_step() {
   if (divergence_) return;
   const AdvanceResult r = solver_->step(1);
   if (r.divergence) divergence_ = r.divergence;
+  if (recorder_ && !divergence_) record_step();
+}
+
+// The same real-time rule as FrameStepper (the cap included), one step at a time so that each
+// step can be written: the steps whose end lies within the simulated time asked for so far.
+FrameAdvance SimSession::advance_recording(const FrameStepper& stepper, double wall_seconds) {
+  FrameAdvance out;
+  if (paused || divergence_ || !(wall_seconds > 0.0)) return out;
+  const double dt = solver_->dt();
+  double request = wall_seconds;
+  const double cap = static_cast<double>(stepper.max_steps_per_frame()) * dt;
+  if (request > cap) {
+    out.capped = true;
+    out.dropped_seconds = request - cap;
+    request = cap;
+  }
+  record_clock_ += request;
+  while (solver_->time() + 0.5 * dt <= record_clock_) {
+    const AdvanceResult r = solver_->step(1);
+    out.steps += r.steps;
+    if (r.divergence) {
+      divergence_ = out.divergence = r.divergence;
+      break;
+    }
+    record_step();
+  }
+  return out;
+}
+
+void SimSession::record_step() {
+  if ((solver_->step_count() - record_start_step_) % record_spec_.every != 0) return;
+  recorder_->write_step(*solver_);
+  recorded_rows_ += std::max<long>(1, static_cast<long>(record_spec_.vertices.size()));
+}
+
+void SimSession::start_recording(const std::string& path, const TraceSpec& spec) {
+  stop_recording();
+  recorder_ = std::make_unique<TraceWriter>(path, spec, applied_.multi_cloth,
+                                            applied_.solver.precision == Precision::f64);
+  record_spec_ = spec;
+  record_path_ = path;
+  recorded_rows_ = 0;
+  record_start_step_ = solver_->step_count();
+  record_clock_ = solver_->time();
+  if (!divergence_) record_step();  // the state recording starts from
+}
+
+std::string SimSession::stop_recording() {
+  if (!recorder_) return {};
+  recorder_->commit();
+  recorder_.reset();
+  return "recorded " + std::to_string(recorded_rows_) + " rows to " + record_path_;
 }
 
 bool SimSession::structure_pending() const {

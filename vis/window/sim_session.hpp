@@ -12,6 +12,7 @@
 #include "sim/realtime/frame_stepper.hpp"
 #include "sim/scene/scene.hpp"
 #include "sim/solver.hpp"
+#include "sim/trace/csv_trace.hpp"
 
 namespace clothlab::vis {
 
@@ -56,6 +57,18 @@ class SimSession {
   void single_step();  // `.` while paused
   bool paused = false;
 
+  // Recording (the panel's Record): from now on every step the session takes is written as CSV
+  // trace rows of `spec` (design.md "CSV trace"), its `every` counted from the step recording
+  // began, into a temporary file beside `path` that stop_recording() renames to `path`: the
+  // file is complete or absent. Reset, a resolution change and the session's end stop it.
+  // Throws std::runtime_error when the file cannot be opened.
+  void start_recording(const std::string& path, const TraceSpec& spec);
+  // Finishes the file; returns a one-line summary ("recorded N rows to PATH"), empty if none.
+  std::string stop_recording();
+  bool recording() const { return recorder_ != nullptr; }
+  long recorded_rows() const { return recorded_rows_; }
+  const std::string& recording_path() const { return record_path_; }
+
   const std::optional<Divergence>& divergence() const { return divergence_; }
   const std::string& error() const { return error_; }                      // last rejected edit
   const std::string& structure_error() const { return structure_error_; }  // pending resize
@@ -64,6 +77,8 @@ class SimSession {
  private:
   std::unique_ptr<Solver> build(const Scene& scene) const;
   void choose_threads();  // while the user has not pressed M
+  FrameAdvance advance_recording(const FrameStepper& stepper, double wall_seconds);
+  void record_step();
 
   bool parallel_chosen_ = false;  // M was pressed: keep the user's choice
   Scene base_, applied_, draft_;
@@ -71,6 +86,12 @@ class SimSession {
   std::optional<Divergence> divergence_;
   std::string error_, structure_error_;
   long generation_ = 0;
+
+  std::unique_ptr<TraceWriter> recorder_;
+  TraceSpec record_spec_;
+  std::string record_path_;
+  long recorded_rows_ = 0, record_start_step_ = 0;
+  double record_clock_ = 0.0;  // simulated time the recorded stepping has reached, s
 };
 
 }  // namespace clothlab::vis

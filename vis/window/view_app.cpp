@@ -7,14 +7,18 @@
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
+#include <utility>
 
 #include "sim/solver.hpp"
+#include "sim/trace/trace_run.hpp"
 #include "vis/gl/gl.hpp"
+#include "vis/render/diagnostics.hpp"
 #include "vis/render/field_pass.hpp"
 #include "vis/render/renderer.hpp"
 #include "vis/window/imgui_layer.hpp"
 #include "vis/window/scene_edit.hpp"
 #include "vis/window/screenshot.hpp"
+#include "vis/window/views_panel.hpp"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -27,6 +31,7 @@ constexpr double kTitleRefreshSeconds = 0.25;
 constexpr long kDefaultHookFrames = 60;
 constexpr long kMaxStepsPerFrame = 400;     // FrameStepper's default cap
 constexpr double kStepBudgetSeconds = 0.1;  // of solver time per frame: >= ~8 fps
+constexpr double kClickSlopPixels = 4.0;    // a press and release closer than this is a click
 
 // The app behind a GLFW window, set with glfwSetWindowUserPointer (no globals).
 ViewApp& app_of(GLFWwindow* window) {
@@ -56,6 +61,8 @@ ViewHooks ViewHooks::from_environment() {
     const std::vector<std::string> xy = split_commas(cursor);
     if (xy.size() == 2) hooks.cursor = {std::atof(xy[0].c_str()), std::atof(xy[1].c_str())};
   }
+  if (const char* n = std::getenv("CLOTHLAB_VIEW_CLICK")) hooks.click_frame = std::atol(n);
+  if (const char* path = std::getenv("CLOTHLAB_VIEW_RECORD")) hooks.record = path;
   return hooks;
 }
 
@@ -65,6 +72,7 @@ ViewApp::ViewApp(Scene scene, ViewHooks hooks)
       scene_name_(std::filesystem::path(session_.scene().file).filename().string()),
       window_("ClothLab — " + scene_name_, kInitialWidth, kInitialHeight),
       renderer_(std::make_unique<Renderer>()),
+      diagnostics_(std::make_unique<Diagnostics>()),
       view_(default_view(session_.solver())) {
   install_callbacks();
   imgui_ = std::make_unique<ImGuiLayer>(window_.handle());
@@ -77,6 +85,7 @@ ViewApp::ViewApp(Scene scene, ViewHooks hooks)
 ViewApp::~ViewApp() {
   imgui_.reset();
   field_pass_.reset();
+  diagnostics_.reset();
   renderer_.reset();
 }
 
@@ -90,7 +99,17 @@ void ViewApp::install_callbacks() {
     ViewApp& app = app_of(win);
     double x = 0.0, y = 0.0;
     glfwGetCursorPos(win, &x, &y);
-    app.mouse_.button(button, action, mods, app.imgui_ && app.imgui_->wants_mouse(), x, y);
+    const bool ui = app.imgui_ && app.imgui_->wants_mouse();
+    app.mouse_.button(button, action, mods, ui, x, y);
+    // A left press and release in place (not a drag) is a click: it pins the probe.
+    if (button != GLFW_MOUSE_BUTTON_LEFT) return;
+    if (action == GLFW_PRESS && !ui && !(mods & GLFW_MOD_CONTROL)) {
+      app.left_press_ = std::array<double, 2>{x, y};
+    } else if (action == GLFW_RELEASE && app.left_press_) {
+      const auto [x0, y0] = *app.left_press_;
+      app.left_press_.reset();
+      if (std::hypot(x - x0, y - y0) < kClickSlopPixels) app.click(x, y);
+    }
   });
   glfwSetCursorPosCallback(w, [](GLFWwindow* win, double x, double y) {
     ViewApp& app = app_of(win);
@@ -109,6 +128,8 @@ int ViewApp::run() {
     frame();
     if (hooks_.exit_after_frames > 0 && frame_index_ >= hooks_.exit_after_frames) break;
   }
+  // Closing the window while recording finishes the file: it is complete, never cut short.
+  if (session_.recording()) std::printf("clothlab view: %s\n", session_.stop_recording().c_str());
   return 0;
 }
 
@@ -125,6 +146,15 @@ void ViewApp::frame() {
       std::fprintf(stderr, "clothlab view: test hook: unknown key \"%s\"\n",
                    hooks_.keys[hook].c_str());
   }
+  if (frame_index_ == 1 && !hooks_.record.empty()) {
+    try {
+      session_.start_recording(hooks_.record, record_spec());
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "clothlab view: %s\n", e.what());
+    }
+  }
+  if (frame_index_ == hooks_.click_frame && hooks_.cursor)
+    click((*hooks_.cursor)[0], (*hooks_.cursor)[1]);
   for (Action a : pending_actions_) dispatch(a);
   pending_actions_.clear();
 
@@ -197,6 +227,15 @@ void ViewApp::dispatch(Action action) {
     case Action::probe_position:
       toggle_probe(Field::position);
       break;
+    case Action::toggle_force_arrows:
+      view_.arrows.force = !view_.arrows.force;
+      break;
+    case Action::toggle_normal_arrows:
+      view_.arrows.normals = !view_.arrows.normals;
+      break;
+    case Action::toggle_record:
+      toggle_record();
+      break;
     case Action::push:
       push();
       break;
@@ -211,12 +250,15 @@ void ViewApp::dispatch(Action action) {
       session_.paused = true;
       break;
     case Action::reset:
+      stop_recording();  // the rows so far are one run; a new run starts at t = 0
       session_.reset();
       break;
     case Action::more_vertices:
+      stop_recording();  // the traced vertices change with the resolution
       session_.scale_resolution(kResolutionFactor);
       break;
     case Action::fewer_vertices:
+      stop_recording();
       session_.scale_resolution(1.0 / kResolutionFactor);
       break;
     case Action::toggle_parallel:
@@ -245,13 +287,20 @@ void ViewApp::draw(int width, int height) {
   Solver& solver = session_.solver();
   if (rendered_generation_ != session_.generation()) {
     renderer_->set_cloth(solver);  // a reset may have changed the vertex count
+    diagnostics_->set_cloth();
+    pinned_vertex_ = -1;
     rendered_generation_ = session_.generation();
   }
   // A diverged state is all NaN or kilometres away: keep showing the last sane one.
-  if (!session_.divergence()) renderer_->update_cloth(solver);
+  if (!session_.divergence()) {
+    renderer_->update_cloth(solver);
+    diagnostics_->update(solver, view_, *renderer_);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, width, height);
   renderer_->draw(view_, width, height);
+  diagnostics_->draw(view_, *renderer_);
+  draw_legends(view_, *diagnostics_);
   if (panel_.probe) probe_under_cursor(width, height);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, width, height);
@@ -267,14 +316,15 @@ void ViewApp::toggle_probe(Field field) {
     panel_.probe.reset();
     field_pass_.reset();
     probe_title_.clear();
+    pinned_vertex_ = -1;
   } else {
     panel_.probe = field;
   }
   last_title_time_ = -1.0;  // show the change at once
 }
 
-// The field pass at the framebuffer's size, the pixel under the cursor and its nearest vertex:
-// a readout next to the cursor and, shorter, in the title.
+// The field pass at the framebuffer's size, the pixel under the cursor (or under the pinned
+// vertex) and its nearest vertex: a readout next to the cursor and, shorter, in the title.
 void ViewApp::probe_under_cursor(int width, int height) {
   const Field field = *panel_.probe;
   double x = 0.0, y = 0.0;
@@ -289,6 +339,21 @@ void ViewApp::probe_under_cursor(int width, int height) {
   int window_width = 0, window_height = 0;
   glfwGetWindowSize(window_.handle(), &window_width, &window_height);
   if (window_width <= 0 || window_height <= 0) return;
+  Solver& solver = session_.solver();
+  const glm::mat4 view_proj = view_projection(view_.camera, width, height);
+  const std::optional<std::array<double, 2>> clicked = std::exchange(pending_click_, std::nullopt);
+  if (clicked) {
+    x = (*clicked)[0];
+    y = (*clicked)[1];
+  } else if (pinned_vertex_ >= 0) {
+    // A pinned probe reads at its vertex's pixel, wherever the vertex has moved.
+    const Vec3d p = solver.position(pinned_vertex_);
+    const glm::vec4 c = view_proj * glm::vec4(float(p[0]), float(p[1]), float(p[2]), 1.0f);
+    if (c.w > 0.0f) {
+      x = (c.x / c.w * 0.5 + 0.5) * window_width;
+      y = (0.5 - c.y / c.w * 0.5) * window_height;
+    }
+  }
   const int px = static_cast<int>(std::floor(x * width / window_width));
   const int py = static_cast<int>(std::floor(y * height / window_height));
 
@@ -296,45 +361,97 @@ void ViewApp::probe_under_cursor(int width, int height) {
   const char* unit = field == Field::force ? "N" : field == Field::velocity ? "m/s" : "m";
   std::string text;
   char line[160];
-  Solver& solver = session_.solver();
   std::optional<ProbeSample> s;
   if (session_.divergence()) {
     text = std::string(name) + ": simulation diverged";
     probe_title_ = text;
-  } else {
-    if (!field_pass_ || field_pass_->width() != width || field_pass_->height() != height)
-      field_pass_ = std::make_unique<FieldPass>(width, height);
-    s = probe_fields(solver, *renderer_, *field_pass_, view_projection(view_.camera, width, height),
-                     px, py);
-    if (!s) {
-      text = std::string(name) + ": no cloth under the cursor";
-      probe_title_ = text;
-    }
+    draw_probe_overlay(text, static_cast<float>(x), static_cast<float>(y));
+    return;
   }
+  if (!field_pass_ || field_pass_->width() != width || field_pass_->height() != height)
+    field_pass_ = std::make_unique<FieldPass>(width, height);
+  s = probe_fields(solver, *renderer_, *field_pass_, view_proj, px, py);
+  if (clicked) pinned_vertex_ = s ? s->vertex : -1;  // a click off the cloth unpins
+  const int vertex = pinned_vertex_ >= 0 ? pinned_vertex_ : s ? s->vertex : -1;
+  if (vertex < 0) {
+    text = std::string(name) + ": no cloth under the cursor (click the cloth to pin)";
+    probe_title_ = std::string(name) + ": no cloth under the cursor";
+    draw_probe_overlay(text, static_cast<float>(x), static_cast<float>(y));
+    return;
+  }
+  // The pinned vertex may be hidden or off screen: its nodal value still holds (probe_fields
+  // computed the force field whenever it drew; without a draw, compute it here).
+  if (!s && field == Field::force) solver.update_force_field();
+  const Vec3d n = field == Field::force      ? solver.force(vertex)
+                  : field == Field::velocity ? solver.velocity(vertex)
+                                             : solver.position(vertex);
+  const VertexRef ref = solver.vertex_ref(vertex);
+  char vertex_name[64];
+  if (solver.cloths().size() > 1)
+    std::snprintf(vertex_name, sizeof vertex_name, "cloth %d (%d, %d)", ref.cloth, ref.i, ref.j);
+  else
+    std::snprintf(vertex_name, sizeof vertex_name, "(%d, %d)", ref.i, ref.j);
+  double magnitude = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   if (s) {
     const glm::vec3 v = s->value(field);
-    const double magnitude = std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z);
-    const Vec3d n = field == Field::force      ? solver.force(s->vertex)
-                    : field == Field::velocity ? solver.velocity(s->vertex)
-                                               : solver.position(s->vertex);
-    const VertexRef ref = solver.vertex_ref(s->vertex);
+    magnitude = std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z);
     std::snprintf(line, sizeof line, "%s (%s) at pixel (%d, %d)\n", name, unit, px, py);
     text = line;
     std::snprintf(line, sizeof line, "  x %+.4e\n  y %+.4e\n  z %+.4e\n  magnitude %.4e %s\n", v.x,
                   v.y, v.z, magnitude, unit);
     text += line;
-    if (solver.cloths().size() > 1)
-      std::snprintf(line, sizeof line, "nearest vertex: cloth %d (%d, %d)\n", ref.cloth, ref.i,
-                    ref.j);
-    else
-      std::snprintf(line, sizeof line, "nearest vertex (%d, %d)\n", ref.i, ref.j);
-    text += line;
-    std::snprintf(line, sizeof line, "  nodal (%+.4e, %+.4e, %+.4e) %s", n[0], n[1], n[2], unit);
-    text += line;
-    std::snprintf(line, sizeof line, "%s %.3e %s at (%d, %d)", name, magnitude, unit, ref.i, ref.j);
-    probe_title_ = line;
+  } else {
+    text = std::string(name) + " (" + unit + "): pinned vertex hidden or off screen\n";
   }
+  std::snprintf(line, sizeof line, "%s vertex %s\n",
+                pinned_vertex_ >= 0 ? "pinned (click off the cloth unpins)" : "nearest",
+                vertex_name);
+  text += line;
+  std::snprintf(line, sizeof line, "  nodal (%+.4e, %+.4e, %+.4e) %s", n[0], n[1], n[2], unit);
+  text += line;
+  std::snprintf(line, sizeof line, "%s %.3e %s at %s%s", name, magnitude, unit, vertex_name,
+                pinned_vertex_ >= 0 ? " (pinned)" : "");
+  probe_title_ = line;
   draw_probe_overlay(text, static_cast<float>(x), static_cast<float>(y));
+}
+
+// With a probe on, a click on the cloth pins the probe to the vertex nearest the clicked point
+// (it then follows that vertex); a click off the cloth unpins it.
+void ViewApp::click(double x, double y) {
+  if (panel_.probe) pending_click_ = std::array<double, 2>{x, y};
+}
+
+// What Record writes: the pinned probe's vertex, else the scene's [trace] vertices, else the
+// documented default vertex; all fields (the scene's choice of fields and `every` where it has
+// a [trace] table).
+TraceSpec ViewApp::record_spec() const {
+  TraceSpec spec =
+      session_.scene().trace ? *session_.scene().trace : default_trace(session_.scene());
+  if (pinned_vertex_ >= 0) {
+    const VertexRef v = session_.solver().vertex_ref(pinned_vertex_);
+    spec.vertices = {{v.cloth, v.i, v.j}};
+  }
+  return spec;
+}
+
+void ViewApp::toggle_record() {
+  if (session_.recording()) {
+    stop_recording();
+    return;
+  }
+  const std::string path = record_file_name();
+  try {
+    session_.start_recording(path, record_spec());
+    panel_.message = "recording to " + path + " (Stop finishes the file)";
+  } catch (const std::exception& e) {
+    panel_.message = e.what();
+  }
+}
+
+void ViewApp::stop_recording() {
+  if (!session_.recording()) return;
+  panel_.message = session_.stop_recording();
+  std::printf("clothlab view: %s\n", panel_.message.c_str());
 }
 
 void ViewApp::take_screenshot(const std::string& path, int width, int height) {

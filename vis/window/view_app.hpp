@@ -21,6 +21,7 @@
 
 namespace clothlab::vis {
 
+class Diagnostics;
 class FieldPass;
 class ImGuiLayer;
 class Renderer;
@@ -32,12 +33,17 @@ class Renderer;
 //   CLOTHLAB_VIEW_KEYS="H,1,,P"        press these keys, one per frame from frame 1, by their
 //                                      names in the help (an empty entry presses nothing);
 //   CLOTHLAB_VIEW_CURSOR="X,Y"           probes (keys 8 / 9 / 0) read at window point (X, Y)
-//                                      instead of the mouse cursor.
+//                                      instead of the mouse cursor;
+//   CLOTHLAB_VIEW_CLICK=N              a left click at that point on frame N (pins the probe);
+//   CLOTHLAB_VIEW_RECORD=file.csv      press Record on frame 1, writing to file.csv (the window
+//                                      closing while recording must leave it complete).
 struct ViewHooks {
   long exit_after_frames = 0;  // 0: run until the user quits
   std::string screenshot;
   std::vector<std::string> keys;
   std::optional<std::array<double, 2>> cursor;
+  long click_frame = 0;
+  std::string record;
 
   static ViewHooks from_environment();
 };
@@ -61,6 +67,10 @@ class ViewApp {
   void draw(int width, int height);
   void toggle_probe(Field field);
   void probe_under_cursor(int width, int height);
+  void click(double x, double y);  // a left click (press and release in place) on the view
+  void toggle_record();
+  void stop_recording();
+  TraceSpec record_spec() const;
   void take_screenshot(const std::string& path, int width, int height);
   void update_title();
   void push();
@@ -70,9 +80,14 @@ class ViewApp {
   std::string scene_name_;
   GlfwWindow window_;
   std::unique_ptr<Renderer> renderer_;
-  std::unique_ptr<FieldPass> field_pass_;  // only while a probe is on; sized to the framebuffer
-  std::string probe_title_;                // the probe's short readout for the title
-  std::unique_ptr<ImGuiLayer> imgui_;      // created after our GLFW callbacks, which it chains to
+  std::unique_ptr<FieldPass> field_pass_;     // only while a probe is on; sized to the framebuffer
+  std::unique_ptr<Diagnostics> diagnostics_;  // colour-by scalar and arrows (what is on)
+  // Clicking with a probe on pins it to the vertex under the cursor: it follows that vertex.
+  std::optional<std::array<double, 2>> pending_click_;
+  int pinned_vertex_ = -1;
+  std::optional<std::array<double, 2>> left_press_;  // where a left press began, for clicks
+  std::string probe_title_;                          // the probe's short readout for the title
+  std::unique_ptr<ImGuiLayer> imgui_;  // created after our GLFW callbacks, which it chains to
   ViewSettings view_;
   DisplayMode last_shaded_ = DisplayMode::lambert;
   MouseCamera mouse_;

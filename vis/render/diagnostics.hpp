@@ -1,0 +1,60 @@
+// The scientific views drawn over the cloth, shared by the window and headless rendering: the
+// colour-by scalar (ViewSettings::color) and the force and normal arrows (ViewSettings::arrows).
+// Each frame update() computes only what the view shows, from the solver's current state: no
+// force field, no scalar and no arrow buffer exists while everything is off (design.md: no field
+// export unless something displays, probes or traces it).
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "vis/render/arrow_field.hpp"
+#include "vis/render/view_settings.hpp"
+
+namespace clothlab {
+class Solver;
+}
+
+namespace clothlab::vis {
+
+class ArrowPass;
+class Renderer;
+class ScalarFieldSampler;
+
+class Diagnostics {
+ public:
+  Diagnostics();
+  ~Diagnostics();
+  Diagnostics(const Diagnostics&) = delete;
+  Diagnostics& operator=(const Diagnostics&) = delete;
+
+  // Forgets what depends on the cloth's topology; call with Renderer::set_cloth.
+  void set_cloth();
+  // Computes the scalar and the arrows `view` asks for and hands the scalar to `renderer`
+  // (before renderer.draw). Needs a current GL context only when arrows are on.
+  void update(Solver& solver, const ViewSettings& view, Renderer& renderer);
+  // Draws the arrows over the cloth: right after renderer.draw(), into the same framebuffer.
+  void draw(const ViewSettings& view, const Renderer& renderer);
+
+  // What the last update() showed, for legends and tests.
+  const std::optional<ScalarRange>& color_range() const { return color_range_; }
+  const std::optional<ScalarRange>& force_range() const { return force_range_; }
+  const std::vector<ArrowInstance>& force_arrows() const { return force_arrows_; }
+  const std::vector<ArrowInstance>& normal_arrows() const { return normal_arrows_; }
+  const ArrowLayout& arrow_layout() const { return layout_; }
+  // True while any diagnostic state (sampler, arrow pass) is held.
+  bool active() const { return sampler_ || arrows_; }
+
+ private:
+  std::unique_ptr<ScalarFieldSampler> sampler_;  // while colouring by a scalar
+  std::unique_ptr<ArrowPass> arrows_;            // while arrows are shown
+  ArrowLayout layout_;
+  int layout_request_ = -1;  // the stride setting layout_ was built for (-1: none)
+  std::vector<float> scalars_, positions_, vectors_;
+  std::vector<ArrowInstance> force_arrows_, normal_arrows_;
+  std::optional<ScalarRange> color_range_, force_range_;
+};
+
+}  // namespace clothlab::vis

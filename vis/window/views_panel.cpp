@@ -1,0 +1,97 @@
+#include "vis/window/views_panel.hpp"
+
+#include <imgui.h>
+
+#include <string>
+
+#include "vis/render/scalar_field.hpp"
+#include "vis/window/color_bar.hpp"
+
+namespace clothlab::vis {
+namespace {
+
+// A combo over the names of an enum's values (first .. last, contiguous).
+template <class E, class Name>
+bool enum_combo(const char* label, E& value, std::initializer_list<E> values, Name name) {
+  bool changed = false;
+  const std::string current(name(value));
+  if (ImGui::BeginCombo(label, current.c_str())) {
+    for (E v : values) {
+      const std::string item(name(v));
+      if (ImGui::Selectable(item.c_str(), v == value)) {
+        changed = v != value;
+        value = v;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  return changed;
+}
+
+// Bars at the right edge, each with room for its tick labels and a title above it.
+constexpr float kBarWidth = 22.0f, kBarHeight = 260.0f, kBarMargin = 150.0f;
+
+}  // namespace
+
+void draw_view_editors(ViewSettings& view) {
+  if (!ImGui::CollapsingHeader("Scientific views", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  ColorSettings& c = view.color;
+  const ScalarField before = c.field;
+  enum_combo("colour by", c.field,
+             {ScalarField::none, ScalarField::force, ScalarField::speed, ScalarField::strain,
+              ScalarField::height},
+             scalar_field_name);
+  // A signed field starts on the diverging map with a symmetric range; the user may change it.
+  if (c.field != before && scalar_field_signed(c.field)) {
+    c.map = ColorMap::coolwarm;
+    c.range = RangeMode::symmetric;
+  }
+  enum_combo("colour map", c.map,
+             {ColorMap::viridis, ColorMap::magma, ColorMap::turbo, ColorMap::coolwarm},
+             colormap_name);
+  enum_combo("range", c.range, {RangeMode::automatic, RangeMode::symmetric, RangeMode::fixed},
+             range_mode_name);
+  if (c.range == RangeMode::fixed) {
+    double lo_hi[2] = {c.fixed.min, c.fixed.max};
+    if (ImGui::InputScalarN("min, max", ImGuiDataType_Double, lo_hi, 2, nullptr, nullptr, "%.4g") &&
+        lo_hi[0] < lo_hi[1])
+      c.fixed = {lo_hi[0], lo_hi[1]};
+  }
+  ImGui::Checkbox("shaded colours", &c.shaded);
+
+  ArrowSettings& a = view.arrows;
+  ImGui::Checkbox("force arrows (F)", &a.force);
+  ImGui::SameLine();
+  ImGui::Checkbox("normal arrows (N)", &a.normals);
+  enum_combo("force", view.force_source,
+             {ForceSource::total, ForceSource::springs, ForceSource::gravity, ForceSource::drag,
+              ForceSource::wind},
+             force_source_name);
+  ImGui::SliderInt("arrow every", &a.stride, 0, 32, a.stride == 0 ? "auto" : "%d vertices");
+  enum_combo("arrow length", a.scale, {ArrowScale::linear, ArrowScale::log},
+             [](ArrowScale s) { return s == ArrowScale::log ? "log (3 decades)" : "linear"; });
+  ImGui::SliderFloat("longest arrow", &a.length, 0.2f, 5.0f, "%.2g x spacing");
+}
+
+void draw_legends(const ViewSettings& view, const Diagnostics& diagnostics) {
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  float x = viewport->WorkPos.x + viewport->WorkSize.x - kBarMargin;
+  const float y = viewport->WorkPos.y + 0.5f * (viewport->WorkSize.y - kBarHeight);
+  if (const auto& range = diagnostics.color_range()) {
+    const std::string title(scalar_field_title(view.color.field));
+    const std::string unit(scalar_field_unit(view.color.field));
+    draw_color_bar(draw, ImVec2(x, y), ImVec2(kBarWidth, kBarHeight), view.color.map, *range,
+                   title.c_str(), unit.c_str());
+    x -= kBarMargin;
+  }
+  if (const auto& range = diagnostics.force_range()) {
+    // (Built with append: GCC 12 warns falsely, -Wrestrict, on "|" + std::string + "|".)
+    std::string title = "|";
+    title.append(force_source_name(view.force_source)).append(" force|");
+    draw_color_bar(draw, ImVec2(x, y), ImVec2(kBarWidth, kBarHeight), view.color.map, *range,
+                   title.c_str(), "N");
+  }
+}
+
+}  // namespace clothlab::vis
