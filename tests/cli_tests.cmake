@@ -181,6 +181,19 @@ clothlab_cli_test(render.bad_field 2 "--field: density not in"
 clothlab_cli_test(render.bad_video 1 "ffmpeg (failed to write|stopped accepting frames for) '/nonexistent-dir/x.mp4'"
   render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 32x32 --quiet
   --out ${CLOTHLAB_TRACE_OUT}/render_video --video /nonexistent-dir/x.mp4)
+# Scientific views headless: colour by a scalar, arrows, force source; bad values name the option.
+clothlab_cli_test(render.views 0 "render: 2 frames of 96x72 .*colour by strain \\[-?[0-9.e+-]+, [0-9.e+-]+\\].* [0-9]+ force arrows"
+  render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 96x72 --quiet --color-by strain
+  --colormap coolwarm --range symmetric --arrows force,normals --force-source springs
+  --arrow-stride 4 --arrow-scale log --out ${CLOTHLAB_TRACE_OUT}/render_views)
+clothlab_cli_test(render.bad_range 2 "--range: must be auto, symmetric or MIN,MAX with MIN < MAX"
+  render ${CLOTHLAB_DEFAULT_SCENE} --color-by height --range 2,1 --out ${CLOTHLAB_TRACE_OUT}/render_bad)
+clothlab_cli_test(render.bad_arrows 2 "--arrows: velocity not in"
+  render ${CLOTHLAB_DEFAULT_SCENE} --arrows velocity --out ${CLOTHLAB_TRACE_OUT}/render_bad)
+clothlab_cli_test(render.bad_color_by 2 "--color-by: pressure not in"
+  render ${CLOTHLAB_DEFAULT_SCENE} --color-by pressure --out ${CLOTHLAB_TRACE_OUT}/render_bad)
+clothlab_cli_test(render.bad_force_source 2 "--force-source: inertia not in"
+  render ${CLOTHLAB_DEFAULT_SCENE} --arrows force --force-source inertia --out ${CLOTHLAB_TRACE_OUT}/render_bad)
 # Without a display, view says so in one line, suggests render and exits 1 (DISPLAY is removed
 # so the test never opens a window on a developer's desktop).
 add_test(NAME cli.view.no_display
@@ -210,6 +223,28 @@ if(XVFB_RUN)
   set_tests_properties(cli.view.window PROPERTIES TIMEOUT 120 FIXTURES_SETUP view_window
     ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
   set_tests_properties(cli.view.window_screenshot PROPERTIES FIXTURES_REQUIRED view_window)
+  # Probing, pinning and recording: 8 turns the force probe on, a click at the cursor pins it to
+  # the vertex there, Record starts on the next frame and F / N show the arrows; the window
+  # closes by itself while recording, which must finish the CSV (complete, every row whole) for
+  # the pinned vertex, not the scene's default traced vertex (16, 31).
+  set(CLOTHLAB_VIEW_RECORD ${CLOTHLAB_TRACE_OUT}/view_record.csv)
+  add_test(NAME cli.view.record_pinned
+    COMMAND ${CMAKE_COMMAND}
+      "-DCOMMAND=${CMAKE_COMMAND}|-E|env|--unset=WAYLAND_DISPLAY|CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=30|CLOTHLAB_VIEW_KEYS=8,,,,F,N|CLOTHLAB_VIEW_CURSOR=640,400|CLOTHLAB_VIEW_CLICK=3|CLOTHLAB_VIEW_RECORD=${CLOTHLAB_VIEW_RECORD}|${XVFB_RUN}|-a|-s|-screen 0 1280x800x24|$<TARGET_FILE:clothlab>|view|${CLOTHLAB_DEFAULT_SCENE}"
+      "-DEXPECT_RC=0"
+      "-DEXPECT_REGEX=clothlab view: recorded [1-9][0-9]* rows to .*view_record.csv"
+      -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
+  set(csv_number "-?[0-9][0-9.e+-]*")
+  add_test(NAME cli.view.record_pinned_csv
+    COMMAND ${CMAKE_COMMAND} -DFILE=${CLOTHLAB_VIEW_RECORD}
+      "-DHEADER_REGEX=^step,time,vertex_i,vertex_j,px,py,pz,vx,vy,vz,fx,fy,fz,kinetic,elastic,gravity,total$"
+      "-DROW_REGEX=^[0-9]+,${csv_number},[0-9]+,[0-9]+(,${csv_number})+$"
+      "-DFORBID_REGEX=^[0-9]+,[^,]+,16,31,"
+      -DMIN_ROWS=2
+      -P ${CMAKE_CURRENT_LIST_DIR}/check_csv.cmake)
+  set_tests_properties(cli.view.record_pinned PROPERTIES TIMEOUT 120 FIXTURES_SETUP view_record
+    ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
+  set_tests_properties(cli.view.record_pinned_csv PROPERTIES FIXTURES_REQUIRED view_record)
 else()
   message(WARNING "xvfb-run not found: the window test is not run (scripts/deps installs it)")
 endif()

@@ -80,6 +80,33 @@ void apply_view_options(const RenderArgs& args, vis::ViewSettings& view) {
   if (args.arrow_scale == "log") view.arrows.scale = vis::ArrowScale::log;
 }
 
+// One line on what the last frame's scientific views showed: the colour range with its unit
+// and the arrows (nothing when no view was on).
+void print_views(const vis::Diagnostics& d, const vis::ViewSettings& view) {
+  std::string line;
+  char part[160];
+  if (const auto& r = d.color_range()) {
+    const std::string unit(vis::scalar_field_unit(view.color.field));
+    std::snprintf(part, sizeof part, "colour by %s [%.6g, %.6g]%s%s (%s)",
+                  std::string(vis::scalar_field_name(view.color.field)).c_str(), r->min, r->max,
+                  unit.empty() ? "" : " ", unit.c_str(),
+                  std::string(vis::colormap_name(view.color.map)).c_str());
+    line += part;
+  }
+  if (const auto& r = d.force_range()) {
+    std::snprintf(part, sizeof part, "%s%zu force arrows (%s, |F| %.6g..%.6g N)",
+                  line.empty() ? "" : "; ", d.force_arrows().size(),
+                  std::string(force_source_name(view.force_source)).c_str(), r->min, r->max);
+    line += part;
+  }
+  if (!d.normal_arrows().empty()) {
+    std::snprintf(part, sizeof part, "%s%zu normal arrows", line.empty() ? "" : "; ",
+                  d.normal_arrows().size());
+    line += part;
+  }
+  if (!line.empty()) std::printf("views: %s\n", line.c_str());
+}
+
 }  // namespace
 
 int run_render(const RenderArgs& args) {
@@ -140,6 +167,7 @@ int run_render(const RenderArgs& args) {
         1e3 * simulate / frames, frames > 1 ? double(steps) / (frames - 1) : 0.0, solver->dt(),
         1e3 * draw / frames, 1e3 * output / frames, args.out.c_str(), video ? " and " : "",
         args.video.c_str());
+    print_views(renderer.diagnostics(), view);
     return 0;
   } catch (const vis::GlUnavailable& e) {
     std::fprintf(stderr, "clothlab render: %s\n", e.what());

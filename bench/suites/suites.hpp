@@ -21,7 +21,10 @@ std::vector<Table> accuracy_suite(const SuiteOptions& options);
 std::vector<Table> stability_suite(const SuiteOptions& options);
 std::vector<Table> scaling_suite(const SuiteOptions& options);
 std::vector<Table> features_suite(const SuiteOptions& options);
+// Needs EGL / OpenGL 4.5 (throws vis::GlUnavailable without): headless rendering.
+std::vector<Table> views_suite(const SuiteOptions& options);
 
-inline constexpr const char* kSuiteNames[] = {"accuracy", "stability", "scaling", "features"};
+inline constexpr const char* kSuiteNames[] = {"accuracy", "stability", "scaling", "features",
+                                              "views"};
 
 }  // namespace clothlab::bench

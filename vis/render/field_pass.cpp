@@ -125,7 +125,10 @@ std::optional<ProbeSample> probe_fields(Solver& solver, const Renderer& renderer
                                         const glm::mat4& view_proj, int px, int py) {
   if (px < 0 || py < 0 || px >= pass.width() || py >= pass.height()) return std::nullopt;
   const std::size_t n = solver.vertex_count();
-  std::vector<float> force(3 * n), velocity(3 * n);
+  std::vector<float>& force = pass.force_scratch;
+  std::vector<float>& velocity = pass.velocity_scratch;
+  force.resize(3 * n);
+  velocity.resize(3 * n);
   solver.update_force_field();
   for (std::size_t v = 0; v < n; ++v) {
     const Vec3d f = solver.force(static_cast<int>(v));

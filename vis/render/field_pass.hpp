@@ -48,6 +48,9 @@ class FieldPass {
 
   int width() const { return width_; }
   int height() const { return height_; }
+  // Scratch for probe_fields: force and velocity per vertex, kept so a probe every frame does
+  // not allocate.
+  std::vector<float> force_scratch, velocity_scratch;
 
  private:
   int width_, height_;

@@ -146,7 +146,9 @@ FrameAdvance SimSession::advance_recording(const FrameStepper& stepper, double w
     request = cap;
   }
   record_clock_ += request;
-  while (solver_->time() + 0.5 * dt <= record_clock_) {
+  // Whole steps only, as Solver::advance takes them (the remainder waits for the next frame).
+  const auto target = static_cast<long>(std::floor(record_clock_ / dt * (1.0 + 1e-12)));
+  while (solver_->step_count() < target) {
     const AdvanceResult r = solver_->step(1);
     out.steps += r.steps;
     if (r.divergence) {

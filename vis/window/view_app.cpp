@@ -146,7 +146,8 @@ void ViewApp::frame() {
       std::fprintf(stderr, "clothlab view: test hook: unknown key \"%s\"\n",
                    hooks_.keys[hook].c_str());
   }
-  if (frame_index_ == 1 && !hooks_.record.empty()) {
+  // The record hook presses Record after the click hook (if any), so a pinned vertex is traced.
+  if (!hooks_.record.empty() && frame_index_ == std::max(1L, hooks_.click_frame + 1)) {
     try {
       session_.start_recording(hooks_.record, record_spec());
     } catch (const std::exception& e) {

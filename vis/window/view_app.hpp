@@ -35,8 +35,9 @@ class Renderer;
 //   CLOTHLAB_VIEW_CURSOR="X,Y"           probes (keys 8 / 9 / 0) read at window point (X, Y)
 //                                      instead of the mouse cursor;
 //   CLOTHLAB_VIEW_CLICK=N              a left click at that point on frame N (pins the probe);
-//   CLOTHLAB_VIEW_RECORD=file.csv      press Record on frame 1, writing to file.csv (the window
-//                                      closing while recording must leave it complete).
+//   CLOTHLAB_VIEW_RECORD=file.csv      press Record on frame 1 (or the frame after the click),
+//                                      writing to file.csv (the window closing while recording
+//                                      must leave it complete).
 struct ViewHooks {
   long exit_after_frames = 0;  // 0: run until the user quits
   std::string screenshot;

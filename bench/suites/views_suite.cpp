@@ -1,0 +1,231 @@
+// `clothlab bench --suite views`: what the scientific views (colour by a scalar, force and normal
+// arrows, the probe's field pass) cost per displayed frame, headless, as ratios to a frame with
+// every view off; and the check that turning everything off again brings the frame back to the
+// reference with no diagnostic state held. One frame = the solver advanced by 1/60 s (the steps
+// real time takes) + HeadlessRenderer::render (upload, diagnostics, draw, MSAA resolve and pixel
+// readback) + for the probe variants one probe at the image centre. The same frames are also
+// timed without the readback: the identical draw on a second renderer in the same context,
+// finished with glFinish instead of resolve + read. Variants are measured round-robin, several
+// rounds, and each ratio is the median over rounds of the ratio within a round (features_suite).
+#include <cmath>
+#include <functional>
+#include <ostream>
+#include <stdexcept>
+
+#include "bench/suites/suites.hpp"
+#include "sim/scene/scene_parser.hpp"
+#include "sim/solver.hpp"
+#include "vis/gl/gl.hpp"
+#include "vis/gl/offscreen_target.hpp"
+#include "vis/render/diagnostics.hpp"
+#include "vis/render/headless_renderer.hpp"
+#include "vis/render/renderer.hpp"
+
+namespace clothlab::bench {
+
+namespace {
+
+struct Variant {
+  std::string name;
+  std::function<void(vis::ViewSettings&)> edit;
+  bool probe = false;  // one probe at the image centre after the render
+};
+
+// HeadlessRenderer::render without the resolve and readback: the same upload, diagnostics and
+// draw into a target of the same size and samples, then glFinish so the GPU's work is counted.
+class DrawOnly {
+ public:
+  DrawOnly(int width, int height) : target_(width, height) {}
+  void set_cloth(Solver& solver) {
+    renderer_.set_cloth(solver);
+    diagnostics_.set_cloth();
+  }
+  void draw(Solver& solver, const vis::ViewSettings& view) {
+    renderer_.update_cloth(solver);
+    diagnostics_.update(solver, view, renderer_);
+    target_.bind();
+    renderer_.draw(view, target_.width(), target_.height());
+    diagnostics_.draw(view, renderer_);
+    glFinish();
+  }
+  bool active() const { return diagnostics_.active(); }
+
+ private:
+  vis::OffscreenTarget target_;
+  vis::Renderer renderer_;
+  vis::Diagnostics diagnostics_;
+};
+
+// Per variant, one value per round.
+struct Series {
+  std::vector<double> simulate, render, draw;                 // s per frame
+  std::vector<double> total_ratio, render_ratio, draw_ratio;  // to the round's "all off"
+  bool active = false;  // diagnostics().active() after the variant's last frame
+  int probe_hits = 0, probes = 0;
+};
+
+constexpr double kAgainLimit = 0.05;  // "all off again" within 5 % of "all off"
+
+Scene default_scene(int res, int threads) {
+  std::vector<std::string> overrides = {"solver.threads=" + std::to_string(threads)};
+  if (res != 32) {
+    const std::string r = std::to_string(res), last = std::to_string(res - 1);
+    overrides.push_back("cloth.resolution=[" + r + "," + r + "]");
+    overrides.push_back("cloth.pins=[[0,0],[" + last + ",0]]");
+  }
+  return parse_scene_file(CLOTHLAB_DEFAULT_SCENE, overrides);
+}
+
+}  // namespace
+
+std::vector<Table> views_suite(const SuiteOptions& o) {
+  const int width = o.quick ? 320 : 1280, height = o.quick ? 240 : 720;
+  const std::vector<int> resolutions = o.quick ? std::vector<int>{32} : std::vector<int>{32, 128};
+  const int rounds = o.quick ? 2 : 5;
+  const int frames = o.quick ? 2 : 4;  // timed frames per variant, round and path
+  const double frame_seconds = 1.0 / 60.0;
+
+  const std::vector<Variant> variants = {
+      {"all off", [](vis::ViewSettings&) {}},
+      {"colour by |force|", [](vis::ViewSettings& v) { v.color.field = vis::ScalarField::force; }},
+      {"colour by strain", [](vis::ViewSettings& v) { v.color.field = vis::ScalarField::strain; }},
+      {"force arrows", [](vis::ViewSettings& v) { v.arrows.force = true; }},
+      {"normal arrows", [](vis::ViewSettings& v) { v.arrows.normals = true; }},
+      {"force + normal arrows",
+       [](vis::ViewSettings& v) {
+         v.arrows.force = true;
+         v.arrows.normals = true;
+       }},
+      {"probe (field pass + 1 pixel)", [](vis::ViewSettings&) {}, true},
+      {"everything on (|force| colour + both arrows + probe)",
+       [](vis::ViewSettings& v) {
+         v.color.field = vis::ScalarField::force;
+         v.arrows.force = true;
+         v.arrows.normals = true;
+       },
+       true},
+      // Right after "everything on" in every round, on the same renderer: the "removes" claim.
+      {"all off again (after everything on)", [](vis::ViewSettings&) {}},
+  };
+
+  vis::HeadlessRenderer renderer(width, height);
+  DrawOnly draw_only(width, height);
+  const std::string gl = renderer.gl_renderer();
+  if (o.log) *o.log << "views: GL renderer " << gl << "\n";
+
+  Table table;
+  table.title =
+      "Scientific view costs per frame: scenes/default.toml, headless " + std::to_string(width) +
+      "x" + std::to_string(height) + " (4x MSAA) on " + gl + ", " + std::to_string(o.threads) +
+      " solver thread(s); frame = advance 1/60 s + render (+ probe); render includes "
+      "the probe; w/o readback = same draw, glFinish instead of resolve + read; mean of " +
+      std::to_string(frames) + " frames per round, median of " + std::to_string(rounds) + " rounds";
+  table.columns = {"scene",
+                   "variant",
+                   "simulate (ms/frame)",
+                   "render (ms/frame)",
+                   "render w/o readback (ms/frame)",
+                   "total (ms/frame)",
+                   "total / all off",
+                   "render / all off",
+                   "w/o readback / all off",
+                   "diagnostics active",
+                   "verdict"};
+
+  for (const int res : resolutions) {
+    const Scene scene = default_scene(res, o.threads);
+    auto solver = make_solver(scene);
+    const long steps_per_frame = std::max(1L, std::lround(frame_seconds / solver->dt()));
+    const vis::ViewSettings base = vis::default_view(*solver);
+    renderer.set_cloth(*solver);
+    draw_only.set_cloth(*solver);
+    std::vector<Series> series(variants.size());
+
+    auto advance = [&] {
+      const AdvanceResult r = solver->advance(frame_seconds);
+      if (r.divergence) throw std::runtime_error("views: " + r.divergence->message());
+    };
+    for (int round = 0; round < rounds; ++round) {
+      double ref_total = NAN, ref_render = NAN, ref_draw = NAN;
+      for (std::size_t v = 0; v < variants.size(); ++v) {
+        vis::ViewSettings view = base;
+        variants[v].edit(view);
+        Series& s = series[v];
+        double simulate = 0.0, render = 0.0, draw = 0.0;
+        auto probe = [&] {
+          if (!variants[v].probe) return;
+          const auto sample = renderer.probe(*solver, view, width / 2, height / 2);
+          ++s.probes;
+          if (sample) ++s.probe_hits;
+        };
+        // One untimed frame per path first: building or dropping the views' state on a switch.
+        for (int f = 0; f <= frames; ++f) {
+          Stopwatch sim_clock;
+          advance();
+          const double t_sim = sim_clock.seconds();
+          Stopwatch render_clock;
+          (void)renderer.render(*solver, view);
+          probe();
+          if (f > 0) {
+            simulate += t_sim;
+            render += render_clock.seconds();
+          }
+        }
+        for (int f = 0; f <= frames; ++f) {
+          Stopwatch sim_clock;
+          advance();
+          const double t_sim = sim_clock.seconds();
+          Stopwatch draw_clock;
+          draw_only.draw(*solver, view);
+          probe();
+          if (f > 0) {
+            simulate += t_sim;
+            draw += draw_clock.seconds();
+          }
+        }
+        simulate /= 2.0 * frames;
+        render /= frames;
+        draw /= frames;
+        if (v == 0) {
+          ref_total = simulate + render;
+          ref_render = render;
+          ref_draw = draw;
+        }
+        s.simulate.push_back(simulate);
+        s.render.push_back(render);
+        s.draw.push_back(draw);
+        s.total_ratio.push_back((simulate + render) / ref_total);
+        s.render_ratio.push_back(render / ref_render);
+        s.draw_ratio.push_back(draw / ref_draw);
+        s.active = renderer.diagnostics().active() || draw_only.active();
+      }
+      if (o.log)
+        *o.log << "views: " << res << "x" << res << " round " << round + 1 << " of " << rounds
+               << " done\n";
+    }
+
+    const std::string scene_name = std::to_string(res) + "x" + std::to_string(res) + " (" +
+                                   std::to_string(steps_per_frame) + " steps/frame)";
+    for (std::size_t v = 0; v < variants.size(); ++v) {
+      const Series& s = series[v];
+      const double sim = median(s.simulate), ren = median(s.render);
+      const double tr = median(s.total_ratio);
+      std::string verdict = "-";
+      if (v == 0) verdict = "reference";
+      if (variants[v].probe)
+        verdict =
+            "probe hit the cloth " + std::to_string(s.probe_hits) + "/" + std::to_string(s.probes);
+      if (v + 1 == variants.size())
+        verdict = (!s.active && std::abs(tr - 1.0) <= kAgainLimit)
+                      ? "ok: back to reference (within 5 %), no state held"
+                      : "FAIL: " + pct(tr - 1.0) + (s.active ? ", state still held" : "");
+      table.add({scene_name, variants[v].name, fixed(1e3 * sim, 2), fixed(1e3 * ren, 2),
+                 fixed(1e3 * median(s.draw), 2), fixed(1e3 * (sim + ren), 2), fixed(tr, 3),
+                 fixed(median(s.render_ratio), 3), fixed(median(s.draw_ratio), 3),
+                 s.active ? "yes" : "no", verdict});
+    }
+  }
+  return {table};
+}
+
+}  // namespace clothlab::bench

@@ -1,0 +1,31 @@
+# Checks a CSV file written by clothlab (a trace or a recording): it exists, its header matches
+# HEADER_REGEX, it has at least MIN_ROWS rows, every row matches ROW_REGEX (so no row is cut
+# short), and no row matches FORBID_REGEX (optional).
+#   cmake -DFILE=x.csv -DHEADER_REGEX=... -DROW_REGEX=... -DMIN_ROWS=2 [-DFORBID_REGEX=...]
+#         -P check_csv.cmake
+if(NOT EXISTS "${FILE}")
+  message(FATAL_ERROR "${FILE} does not exist")
+endif()
+file(STRINGS "${FILE}" lines)
+list(LENGTH lines count)
+if(count LESS 1)
+  message(FATAL_ERROR "${FILE} is empty")
+endif()
+list(GET lines 0 header)
+if(NOT header MATCHES "${HEADER_REGEX}")
+  message(FATAL_ERROR "${FILE}: header '${header}' does not match /${HEADER_REGEX}/")
+endif()
+math(EXPR rows "${count} - 1")
+if(rows LESS MIN_ROWS)
+  message(FATAL_ERROR "${FILE}: ${rows} rows, expected at least ${MIN_ROWS}")
+endif()
+list(REMOVE_AT lines 0)
+foreach(line IN LISTS lines)
+  if(NOT line MATCHES "${ROW_REGEX}")
+    message(FATAL_ERROR "${FILE}: row '${line}' does not match /${ROW_REGEX}/")
+  endif()
+  if(DEFINED FORBID_REGEX AND line MATCHES "${FORBID_REGEX}")
+    message(FATAL_ERROR "${FILE}: row '${line}' matches the forbidden /${FORBID_REGEX}/")
+  endif()
+endforeach()
+message(STATUS "ok: ${FILE}: ${rows} rows")
