@@ -123,6 +123,35 @@ TEST_F(DiagnosticsTest, InterpolatedValuesAreMappedPerFragment) {
   }
 }
 
+// The colour bar shows the cloth's colours: its pixel at the height of tick value v equals the
+// cloth's pixel where the scalar is v (within 3/255: the bar's strips blend in sRGB, the cloth in
+// linear light), and it spans the range the cloth was coloured with.
+TEST_F(DiagnosticsTest, ColourBarMatchesTheCloth) {
+  const auto solver = make_solver(flat_sheet(0.5));
+  renderer_->set_cloth(*solver);
+  vis::ViewSettings view = top_view(*solver);
+  view.color.field = vis::ScalarField::height;
+  view.color.map = vis::ColorMap::turbo;
+  const std::vector<std::uint8_t> image = renderer_->render(*solver, view);
+  ASSERT_EQ(renderer_->legends().size(), 1u);
+  const vis::LegendBar& bar = renderer_->legends()[0];
+  EXPECT_NEAR(bar.range.min, 1.0, 1e-6);
+  EXPECT_NEAR(bar.range.max, 1.5, 1e-6);
+  const double depth = std::sqrt(0.75);
+  for (double v : {1.1, 1.2, 1.3, 1.4}) {
+    const double f = (v - 1.0) / 0.5;
+    const auto [cx, cy] = pixel_of(view, glm::vec3{0.03f, float(v), float(-0.5 + depth * f)});
+    const int bx = static_cast<int>(bar.top_left.x + 0.5f * bar.size.x);
+    const int by = static_cast<int>(bar.top_left.y + bar.size.y * float(1.0 - f));
+    const std::array<int, 3> c = pixel(image, cx, cy), b = pixel(image, bx, by);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(b[k], c[k], 3) << "value " << v << " channel " << k;
+  }
+  // Without legends nothing is drawn there.
+  view.legends = false;
+  renderer_->render(*solver, view);
+  EXPECT_TRUE(renderer_->legends().empty());
+}
+
 // Gravity arrows all have magnitude m g: with the range fixed at [0, 2 m g] each shows the
 // map's middle colour on the side facing the camera, one arrow per shown vertex.
 TEST_F(DiagnosticsTest, ArrowsComeOnePerShownVertexInTheMapsColour) {
@@ -165,6 +194,7 @@ TEST_F(DiagnosticsTest, ZeroArrowsDrawNothing) {
   const auto solver = make_solver(flat_sheet(0.2));
   renderer_->set_cloth(*solver);
   vis::ViewSettings view = vis::default_view(*solver);
+  view.legends = false;  // the arrows' colour bar would differ; the arrows must not
   const std::vector<std::uint8_t> plain = renderer_->render(*solver, view);
   view.arrows.force = true;
   view.force_source = ForceSource::wind;

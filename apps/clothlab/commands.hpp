@@ -46,6 +46,7 @@ struct RenderArgs {
   std::string force_source;         // total | springs | gravity | drag | wind
   int arrow_stride = 0;             // 0: automatic
   std::string arrow_scale;          // linear | log
+  bool no_legend = false;           // no colour bars in the images
 };
 
 struct ViewArgs {

@@ -78,6 +78,7 @@ void apply_view_options(const RenderArgs& args, vis::ViewSettings& view) {
   if (!args.force_source.empty()) view.force_source = *parse_force_source(args.force_source);
   view.arrows.stride = args.arrow_stride;
   if (args.arrow_scale == "log") view.arrows.scale = vis::ArrowScale::log;
+  view.legends = !args.no_legend;
 }
 
 // One line on what the last frame's scientific views showed: the colour range with its unit

@@ -1,10 +1,13 @@
 #include "vis/render/headless_renderer.hpp"
 
 #include "sim/solver.hpp"
+#include "vis/overlay/headless_overlay.hpp"
+#include "vis/overlay/legends.hpp"
 
 namespace clothlab::vis {
 
 HeadlessRenderer::HeadlessRenderer(int width, int height) : target_(width, height) {}
+HeadlessRenderer::~HeadlessRenderer() = default;
 
 std::vector<std::uint8_t> HeadlessRenderer::render(Solver& solver, const ViewSettings& view) {
   renderer_.update_cloth(solver);
@@ -12,6 +15,14 @@ std::vector<std::uint8_t> HeadlessRenderer::render(Solver& solver, const ViewSet
   target_.bind();
   renderer_.draw(view, target_.width(), target_.height());
   diagnostics_.draw(view, renderer_);
+  legends_.clear();
+  if (view.legends && (diagnostics_.color_range() || diagnostics_.force_range())) {
+    if (!overlay_) overlay_ = std::make_unique<HeadlessOverlay>();
+    const ImVec2 size(static_cast<float>(width()), static_cast<float>(height()));
+    overlay_->draw(width(), height(), [&](ImDrawList* draw) {
+      legends_ = draw_legends(draw, ImVec2(0.0f, 0.0f), size, view, diagnostics_);
+    });
+  }
   return target_.read_rgba();
 }
 

@@ -10,16 +10,20 @@
 
 #include "vis/gl/headless_context.hpp"
 #include "vis/gl/offscreen_target.hpp"
+#include "vis/overlay/legends.hpp"
 #include "vis/render/diagnostics.hpp"
 #include "vis/render/field_pass.hpp"
 #include "vis/render/renderer.hpp"
 
 namespace clothlab::vis {
 
+class HeadlessOverlay;
+
 class HeadlessRenderer {
  public:
   // Throws GlUnavailable (one clear line) without EGL / OpenGL 4.5, ShaderError on a bad shader.
   HeadlessRenderer(int width, int height);
+  ~HeadlessRenderer();
 
   void set_cloth(Solver& solver) {
     renderer_.set_cloth(solver);
@@ -40,13 +44,17 @@ class HeadlessRenderer {
   std::string gl_renderer() const { return context_.renderer(); }
   // The colour-by range and the arrows of the last render().
   const Diagnostics& diagnostics() const { return diagnostics_; }
+  // The colour bars drawn into the last render() (ViewSettings::legends), right-most first.
+  const std::vector<LegendBar>& legends() const { return legends_; }
 
  private:
   HeadlessContext context_;  // first: everything below needs the current context
   OffscreenTarget target_;
   Renderer renderer_;
   Diagnostics diagnostics_;
-  std::unique_ptr<FieldPass> fields_;  // only once something probes
+  std::unique_ptr<HeadlessOverlay> overlay_;  // only once a legend is drawn
+  std::vector<LegendBar> legends_;
+  std::unique_ptr<FieldPass> fields_;         // only once something probes
 };
 
 }  // namespace clothlab::vis

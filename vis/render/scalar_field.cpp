@@ -16,7 +16,7 @@ constexpr std::array<FieldInfo, 5> kFields{{
     {ScalarField::none, "none", "", ""},
     {ScalarField::force, "force", "N", "|force|"},
     {ScalarField::speed, "speed", "m/s", "|velocity|"},
-    {ScalarField::strain, "strain", "", "strain (l - l0) / l0"},
+    {ScalarField::strain, "strain", "", "strain (l-l0)/l0"},
     {ScalarField::height, "height", "m", "height"},
 }};
 

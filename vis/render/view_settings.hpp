@@ -65,6 +65,7 @@ struct ViewSettings {
   DisplayMode mode = DisplayMode::lambert;
   ColorSettings color;
   ArrowSettings arrows;
+  bool legends = true;  // colour bars for the colour-by scalar and the force arrows
   // Which force the |force| colouring and the force arrows show (probes show the total).
   ForceSource force_source = ForceSource::total;
   OrbitCamera camera;

@@ -4,8 +4,8 @@
 
 #include <string>
 
+#include "vis/overlay/legends.hpp"
 #include "vis/render/scalar_field.hpp"
-#include "vis/window/color_bar.hpp"
 
 namespace clothlab::vis {
 namespace {
@@ -27,9 +27,6 @@ bool enum_combo(const char* label, E& value, std::initializer_list<E> values, Na
   }
   return changed;
 }
-
-// Bars at the right edge, each with room for its tick labels and a title above it.
-constexpr float kBarWidth = 22.0f, kBarHeight = 260.0f, kBarMargin = 150.0f;
 
 }  // namespace
 
@@ -58,6 +55,8 @@ void draw_view_editors(ViewSettings& view) {
       c.fixed = {lo_hi[0], lo_hi[1]};
   }
   ImGui::Checkbox("shaded colours", &c.shaded);
+  ImGui::SameLine();
+  ImGui::Checkbox("colour bars", &view.legends);
 
   ArrowSettings& a = view.arrows;
   ImGui::Checkbox("force arrows (F)", &a.force);
@@ -75,23 +74,9 @@ void draw_view_editors(ViewSettings& view) {
 
 void draw_legends(const ViewSettings& view, const Diagnostics& diagnostics) {
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
-  ImDrawList* draw = ImGui::GetBackgroundDrawList();
-  float x = viewport->WorkPos.x + viewport->WorkSize.x - kBarMargin;
-  const float y = viewport->WorkPos.y + 0.5f * (viewport->WorkSize.y - kBarHeight);
-  if (const auto& range = diagnostics.color_range()) {
-    const std::string title(scalar_field_title(view.color.field));
-    const std::string unit(scalar_field_unit(view.color.field));
-    draw_color_bar(draw, ImVec2(x, y), ImVec2(kBarWidth, kBarHeight), view.color.map, *range,
-                   title.c_str(), unit.c_str());
-    x -= kBarMargin;
-  }
-  if (const auto& range = diagnostics.force_range()) {
-    // (Built with append: GCC 12 warns falsely, -Wrestrict, on "|" + std::string + "|".)
-    std::string title = "|";
-    title.append(force_source_name(view.force_source)).append(" force|");
-    draw_color_bar(draw, ImVec2(x, y), ImVec2(kBarWidth, kBarHeight), view.color.map, *range,
-                   title.c_str(), "N");
-  }
+  const ImVec2 max(viewport->WorkPos.x + viewport->WorkSize.x,
+                   viewport->WorkPos.y + viewport->WorkSize.y);
+  draw_legends(ImGui::GetBackgroundDrawList(), viewport->WorkPos, max, view, diagnostics);
 }
 
 }  // namespace clothlab::vis

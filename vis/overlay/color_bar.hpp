@@ -4,6 +4,8 @@
 
 #include <imgui.h>
 
+#include <string>
+
 #include "vis/colormap/colormap.hpp"
 
 namespace clothlab::vis {
@@ -13,6 +15,12 @@ namespace clothlab::vis {
 // the bar and "title [unit]" above it (no brackets when unit is null or empty), all outside the
 // given rectangle; text has a dark shadow so it reads over any background. Needs a current
 // ImGui context (for the font).
+// "title [unit]" (no brackets without a unit), the heading drawn above the bar.
+std::string color_bar_heading(const char* title, const char* unit);
+// The width draw_color_bar covers from top_left.x: the bar and its tick labels, or the heading
+// where that is wider. Needs a current ImGui context.
+float color_bar_extent(ImVec2 size, ScalarRange range, const char* title, const char* unit);
+
 void draw_color_bar(ImDrawList* draw, ImVec2 top_left, ImVec2 size, ColorMap map, ScalarRange range,
                     const char* title, const char* unit);
 

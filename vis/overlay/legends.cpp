@@ -1,0 +1,48 @@
+#include "vis/overlay/legends.hpp"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "vis/overlay/color_bar.hpp"
+#include "vis/render/scalar_field.hpp"
+
+namespace clothlab::vis {
+
+namespace {
+
+struct Bar {
+  std::string title, unit;
+  ScalarRange range;
+};
+
+}  // namespace
+
+std::vector<LegendBar> draw_legends(ImDrawList* draw, ImVec2 area_min, ImVec2 area_max,
+                                    const ViewSettings& view, const Diagnostics& diagnostics) {
+  std::vector<Bar> bars;
+  if (const auto& range = diagnostics.color_range())
+    bars.push_back({std::string(scalar_field_title(view.color.field)),
+                    std::string(scalar_field_unit(view.color.field)), *range});
+  if (const auto& range = diagnostics.force_range()) {
+    // (Built with append: GCC 12 warns falsely, -Wrestrict, on "|" + std::string + "|".)
+    std::string title = "|";
+    title.append(force_source_name(view.force_source)).append(" force|");
+    bars.push_back({title, "N", *range});
+  }
+  const float height = std::min(kLegendBarHeight, 0.6f * (area_max.y - area_min.y));
+  const float top = area_min.y + 0.5f * (area_max.y - area_min.y - height);
+  const ImVec2 size(kLegendBarWidth, height);
+  float right = area_max.x - kLegendGap;
+  std::vector<LegendBar> placed;
+  for (const Bar& b : bars) {
+    const float x = right - color_bar_extent(size, b.range, b.title.c_str(), b.unit.c_str());
+    draw_color_bar(draw, ImVec2(x, top), size, view.color.map, b.range, b.title.c_str(),
+                   b.unit.c_str());
+    placed.push_back({ImVec2(x, top), size, b.range});
+    right = x - kLegendGap;
+  }
+  return placed;
+}
+
+}  // namespace clothlab::vis
