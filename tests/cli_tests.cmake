@@ -136,6 +136,13 @@ clothlab_cli_test(bench.stability_quick 0 "Largest stable dt.*wrote .*stability\
   bench --suite stability --quick --out ${CLOTHLAB_TRACE_OUT}/bench/stability.csv)
 clothlab_cli_test(bench.bad_suite 2 "--suite: speed not in"
   bench --suite speed)
+# The views suite renders headless (EGL, so the GL tests' environment): a reduced run prints the
+# GL renderer and every variant, and after turning everything off again no diagnostic state is
+# held (the timing verdict beside it is not checked: ctest -j shares the cores).
+clothlab_cli_test(bench.views_quick 0
+  "Scientific view costs per frame: .* on [^,]+,.*everything on .*all off again \\(after everything on\\)[ 0-9.]+ no .*wrote .*views\\.csv"
+  bench --suite views --quick --out ${CLOTHLAB_TRACE_OUT}/bench/views.csv)
+set_tests_properties(cli.bench.views_quick PROPERTIES ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
 
 clothlab_cli_test(trace.bad_duration 2 "--duration: must be a finite number"
   trace ${CLOTHLAB_DEFAULT_SCENE} --duration -1 --out ${CLOTHLAB_TRACE_OUT}/bad.csv)

@@ -123,6 +123,9 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--arrow-scale", render.arrow_scale, "force arrow length: linear or log")
       ->check(CLI::IsMember({"linear", "log"}));
 
+  render_cmd->add_flag("--no-legend", render.no_legend,
+                       "no colour bars (they show with --color-by and force arrows)");
+
   ViewArgs view;
   auto* view_cmd = app.add_subcommand("view", "open a window on a scene (default scene if none)");
   add_scene_options(*view_cmd, view.scene, view.overrides, false);
@@ -130,7 +133,8 @@ int main(int argc, char** argv) {
   BenchArgs bench;
   auto* bench_cmd = app.add_subcommand(
       "bench", "run time against error, stability, scaling and feature costs (tables + CSV)");
-  bench_cmd->add_option("--suite", bench.suite, "accuracy, stability, scaling, features, views or all")
+  bench_cmd
+      ->add_option("--suite", bench.suite, "accuracy, stability, scaling, features, views or all")
       ->check(CLI::IsMember({"accuracy", "stability", "scaling", "features", "views", "all"}));
   bench_cmd->add_option("--out", bench.out,
                         "CSV file (one suite) or directory (all); default out/bench/SUITE.csv");

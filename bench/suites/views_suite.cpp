@@ -2,13 +2,14 @@
 // arrows, the probe's field pass) cost per displayed frame, headless, as ratios to a frame with
 // every view off; and the check that turning everything off again brings the frame back to the
 // reference with no diagnostic state held. One frame = the solver advanced by 1/60 s (the steps
-// real time takes) + HeadlessRenderer::render (upload, diagnostics, draw, MSAA resolve and pixel
-// readback) + for the probe variants one probe at the image centre. The same frames are also
-// timed without the readback: the identical draw on a second renderer in the same context,
-// finished with glFinish instead of resolve + read. Variants are measured round-robin, several
+// real time takes) + HeadlessRenderer::render (upload, diagnostics, draw, colour bars, MSAA
+// resolve and pixel readback) + for the probe variants one probe at the image centre. The same
+// frames are also timed without the readback: HeadlessRenderer::draw, finished with glFinish
+// instead of resolve + read. Variants are measured round-robin, several
 // rounds, and each ratio is the median over rounds of the ratio within a round (features_suite).
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <ostream>
 #include <stdexcept>
 
@@ -16,10 +17,7 @@
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
 #include "vis/gl/gl.hpp"
-#include "vis/gl/offscreen_target.hpp"
-#include "vis/render/diagnostics.hpp"
 #include "vis/render/headless_renderer.hpp"
-#include "vis/render/renderer.hpp"
 
 namespace clothlab::bench {
 
@@ -29,31 +27,6 @@ struct Variant {
   std::string name;
   std::function<void(vis::ViewSettings&)> edit;
   bool probe = false;  // one probe at the image centre after the render
-};
-
-// HeadlessRenderer::render without the resolve and readback: the same upload, diagnostics and
-// draw into a target of the same size and samples, then glFinish so the GPU's work is counted.
-class DrawOnly {
- public:
-  DrawOnly(int width, int height) : target_(width, height) {}
-  void set_cloth(Solver& solver) {
-    renderer_.set_cloth(solver);
-    diagnostics_.set_cloth();
-  }
-  void draw(Solver& solver, const vis::ViewSettings& view) {
-    renderer_.update_cloth(solver);
-    diagnostics_.update(solver, view, renderer_);
-    target_.bind();
-    renderer_.draw(view, target_.width(), target_.height());
-    diagnostics_.draw(view, renderer_);
-    glFinish();
-  }
-  bool active() const { return diagnostics_.active(); }
-
- private:
-  vis::OffscreenTarget target_;
-  vis::Renderer renderer_;
-  vis::Diagnostics diagnostics_;
 };
 
 // Per variant, one value per round.
@@ -82,7 +55,7 @@ std::vector<Table> views_suite(const SuiteOptions& o) {
   const int width = o.quick ? 320 : 1280, height = o.quick ? 240 : 720;
   const std::vector<int> resolutions = o.quick ? std::vector<int>{32} : std::vector<int>{32, 128};
   const int rounds = o.quick ? 2 : 5;
-  const int frames = o.quick ? 2 : 4;  // timed frames per variant, round and path
+  const int frames = o.quick ? 2 : 3;  // timed frames per variant, round and path
   const double frame_seconds = 1.0 / 60.0;
 
   const std::vector<Variant> variants = {
@@ -109,7 +82,6 @@ std::vector<Table> views_suite(const SuiteOptions& o) {
   };
 
   vis::HeadlessRenderer renderer(width, height);
-  DrawOnly draw_only(width, height);
   const std::string gl = renderer.gl_renderer();
   if (o.log) *o.log << "views: GL renderer " << gl << "\n";
 
@@ -118,7 +90,8 @@ std::vector<Table> views_suite(const SuiteOptions& o) {
       "Scientific view costs per frame: scenes/default.toml, headless " + std::to_string(width) +
       "x" + std::to_string(height) + " (4x MSAA) on " + gl + ", " + std::to_string(o.threads) +
       " solver thread(s); frame = advance 1/60 s + render (+ probe); render includes "
-      "the probe; w/o readback = same draw, glFinish instead of resolve + read; mean of " +
+      "colour bars and the probe; w/o readback = same draw, glFinish instead of resolve + read; "
+      "mean of " +
       std::to_string(frames) + " frames per round, median of " + std::to_string(rounds) + " rounds";
   table.columns = {"scene",
                    "variant",
@@ -138,7 +111,6 @@ std::vector<Table> views_suite(const SuiteOptions& o) {
     const long steps_per_frame = std::max(1L, std::lround(frame_seconds / solver->dt()));
     const vis::ViewSettings base = vis::default_view(*solver);
     renderer.set_cloth(*solver);
-    draw_only.set_cloth(*solver);
     std::vector<Series> series(variants.size());
 
     auto advance = [&] {
@@ -176,7 +148,8 @@ std::vector<Table> views_suite(const SuiteOptions& o) {
           advance();
           const double t_sim = sim_clock.seconds();
           Stopwatch draw_clock;
-          draw_only.draw(*solver, view);
+          renderer.draw(*solver, view);  // render() without the resolve and readback
+          glFinish();                    // count the GPU's work
           probe();
           if (f > 0) {
             simulate += t_sim;
@@ -197,7 +170,7 @@ std::vector<Table> views_suite(const SuiteOptions& o) {
         s.total_ratio.push_back((simulate + render) / ref_total);
         s.render_ratio.push_back(render / ref_render);
         s.draw_ratio.push_back(draw / ref_draw);
-        s.active = renderer.diagnostics().active() || draw_only.active();
+        s.active = renderer.diagnostics().active();
       }
       if (o.log)
         *o.log << "views: " << res << "x" << res << " round " << round + 1 << " of " << rounds

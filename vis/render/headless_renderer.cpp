@@ -9,7 +9,7 @@ namespace clothlab::vis {
 HeadlessRenderer::HeadlessRenderer(int width, int height) : target_(width, height) {}
 HeadlessRenderer::~HeadlessRenderer() = default;
 
-std::vector<std::uint8_t> HeadlessRenderer::render(Solver& solver, const ViewSettings& view) {
+void HeadlessRenderer::draw(Solver& solver, const ViewSettings& view) {
   renderer_.update_cloth(solver);
   diagnostics_.update(solver, view, renderer_);
   target_.bind();
@@ -23,6 +23,10 @@ std::vector<std::uint8_t> HeadlessRenderer::render(Solver& solver, const ViewSet
       legends_ = draw_legends(draw, ImVec2(0.0f, 0.0f), size, view, diagnostics_);
     });
   }
+}
+
+std::vector<std::uint8_t> HeadlessRenderer::render(Solver& solver, const ViewSettings& view) {
+  draw(solver, view);
   return target_.read_rgba();
 }
 

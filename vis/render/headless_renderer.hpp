@@ -29,8 +29,10 @@ class HeadlessRenderer {
     renderer_.set_cloth(solver);
     diagnostics_.set_cloth();
   }
-  // Uploads the solver's state (and what the view's diagnostics need), draws and reads back:
-  // RGBA rows, top first.
+  // Uploads the solver's state (and what the view's diagnostics need) and draws the frame, with
+  // its colour bars, into the multisampled target, without reading it back.
+  void draw(Solver& solver, const ViewSettings& view);
+  // draw(), then the resolved image: RGBA rows, top first.
   std::vector<std::uint8_t> render(Solver& solver, const ViewSettings& view);
 
   // The fields under pixel (px, py), row 0 at the top, for the solver's current state seen
@@ -54,7 +56,7 @@ class HeadlessRenderer {
   Diagnostics diagnostics_;
   std::unique_ptr<HeadlessOverlay> overlay_;  // only once a legend is drawn
   std::vector<LegendBar> legends_;
-  std::unique_ptr<FieldPass> fields_;         // only once something probes
+  std::unique_ptr<FieldPass> fields_;  // only once something probes
 };
 
 }  // namespace clothlab::vis
