@@ -1,5 +1,6 @@
 #version 450 core
 #include "frame.glsl"
+#include "lighting.glsl"
 
 // Colour by a scalar through a colour map (ViewSettings::color), or
 // 2: world-space normal as colour (n * 0.5 + 0.5); 3: Lambert with the fabric texture.
@@ -28,7 +29,7 @@ void main() {
     // ends; texel centres at (0.5 + 255 t) / 256 so t = 0 and 1 give the table's end entries.
     float t = clamp((v_scalar - u_range.x) / (u_range.y - u_range.x), 0.0, 1.0);
     vec3 mapped = isnan(v_scalar) ? kNanColor : texture(u_lut, vec2((0.5 + 255.0 * t) / 256.0, 0.5)).rgb;
-    color = vec4(u_shaded == 1 ? lambert_point_light(v_world, n, mapped) : mapped, 1.0);
+    color = vec4(u_shaded == 1 ? lambert_lit(v_world, n, mapped) : mapped, 1.0);
     return;
   }
   if (u_mode == 2) {
@@ -36,5 +37,5 @@ void main() {
     return;
   }
   vec3 albedo = texture(u_fabric, v_uv * u_texture_repeat).rgb;
-  color = vec4(lambert_point_light(v_world, n, albedo), 1.0);
+  color = vec4(lambert_lit(v_world, n, albedo), 1.0);
 }

@@ -1,5 +1,6 @@
 #version 450 core
 #include "frame.glsl"
+#include "lighting.glsl"
 
 layout(binding = 0) uniform sampler2D u_tiles;
 
@@ -9,5 +10,5 @@ out vec4 color;
 
 void main() {
   vec3 albedo = texture(u_tiles, v_uv).rgb;
-  color = vec4(lambert_point_light(v_world, vec3(0.0, 1.0, 0.0), albedo), 1.0);
+  color = vec4(lambert_lit(v_world, vec3(0.0, 1.0, 0.0), albedo), 1.0);
 }

@@ -67,8 +67,8 @@ clothlab_bad_set(unknown_key "--set solver\\.dtt=0\\.1: solver\\.dtt: unknown ke
   --set solver.dtt=0.1)
 clothlab_bad_set(unknown_table "--set physics\\.dt=1: physics: unknown top-level key"
   --set physics.dt=1)
-clothlab_bad_set(not_supported "--set render\\.mode=3: render: is not supported yet"
-  --set render.mode=3)
+clothlab_bad_set(not_supported "--set music\\.file=a\\.wav: music: is not supported yet"
+  --set music.file=a.wav)
 clothlab_bad_set(unknown_integrator "solver\\.integrator: unknown integrator .rk5."
   --set solver.integrator=rk5)
 clothlab_bad_set(resolution_type "cloth\\.resolution: expected an array"
@@ -165,8 +165,12 @@ clothlab_cli_test(render.small 0
   --out ${CLOTHLAB_TRACE_OUT}/render_small)
 clothlab_cli_test(render.bad_size 2 "--size: must be WxH"
   render ${CLOTHLAB_DEFAULT_SCENE} --size 64 --out ${CLOTHLAB_TRACE_OUT}/render_bad)
-clothlab_cli_test(render.bad_mode 2 "--mode: Value 7 not in range"
-  render ${CLOTHLAB_DEFAULT_SCENE} --mode 7 --out ${CLOTHLAB_TRACE_OUT}/render_bad)
+clothlab_cli_test(render.bad_mode 2 "--mode: 5 not in .1,2,3,7."
+  render ${CLOTHLAB_DEFAULT_SCENE} --mode 5 --out ${CLOTHLAB_TRACE_OUT}/render_bad)
+clothlab_cli_test(render.bad_scene_mode 2 "--set render\\.mode=4.*render\\.mode: must be a display mode 1, 2, 3 or 7"
+  render ${CLOTHLAB_DEFAULT_SCENE} --set render.mode=4 --out ${CLOTHLAB_TRACE_OUT}/render_bad)
+clothlab_cli_test(render.bad_shadows 2 "render\\.shadows: unknown shadow filter .vsm."
+  render ${CLOTHLAB_DEFAULT_SCENE} --set render.shadows=vsm --out ${CLOTHLAB_TRACE_OUT}/render_bad)
 # --probe prints one JSON line with the field under the pixel (centre of the default view: cloth).
 clothlab_cli_test(render.probe 0
   "{\"field\": \"velocity\", \"pixel\": \\[80, 60\\], \"value\": \\[[-0-9.e+]+, [-0-9.e+]+, [-0-9.e+]+\\], \"magnitude\": [0-9.e+-]+, \"vertex\": \\[[0-9]+, [0-9]+\\], \"vertex_value\": \\[[-0-9.e+]+, [-0-9.e+]+, [-0-9.e+]+\\]}"

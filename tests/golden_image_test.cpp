@@ -68,6 +68,14 @@ class GoldenImage : public ::testing::TestWithParam<int> {
     solver_ = std::make_unique<SolverT<float>>(golden_scene());
     ASSERT_TRUE(solver_->step(600).ok());
     renderer_->set_cloth(*solver_);
+    // The pole from the pins and a sphere beside the cloth: casters and receivers besides it.
+    RenderSpec spec;
+    MeshSpec sphere;
+    sphere.center = {0.9, 0.35, 0.5};
+    sphere.radius = 0.3;
+    sphere.color = {0.3, 0.5, 0.8};
+    spec.meshes = {sphere};
+    renderer_->set_scene(spec, *solver_);
   }
   static void TearDownTestSuite() {
     solver_.reset();
@@ -112,6 +120,21 @@ TEST_P(GoldenImage, MatchesTheStoredImage) {
   vis::ViewSettings view = vis::default_view(*solver_);
   view.mode = static_cast<vis::DisplayMode>(mode);
   check_golden(*renderer_, *solver_, view, "mode" + std::to_string(mode));
+}
+
+// Shadow filters (mode 3) and the light's depth map (key 7) on the same scene.
+TEST_F(GoldenImage, ShadowFilters) {
+  for (ShadowFilter f : {ShadowFilter::none, ShadowFilter::pcf, ShadowFilter::pcss}) {
+    vis::ViewSettings view = vis::default_view(*solver_);
+    view.shadows = f;
+    check_golden(*renderer_, *solver_, view, std::string("shadows_") + to_string(f));
+  }
+}
+
+TEST_F(GoldenImage, LightDepthView) {
+  vis::ViewSettings view = vis::default_view(*solver_);
+  view.mode = vis::DisplayMode::light_depth;
+  check_golden(*renderer_, *solver_, view, "mode7");
 }
 
 // Force arrows (springs only, so every vertex has one, log scale, magma) over mode 3, and normal

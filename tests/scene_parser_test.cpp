@@ -226,10 +226,87 @@ TEST(SceneParser, UnknownKeys) {
                "forces.wind.gusts", 10, "unknown key");
   expect_error(kMinimal + "[[colliders]]\ntype = \"sphere\"\n", "colliders", 9,
                "not supported yet");
-  expect_error(kMinimal + "[render]\nmode = 3\n", "render", 9, "not supported yet");
+  expect_error(kMinimal + "[music]\nfile = \"a.wav\"\n", "music", 9, "not supported yet");
+  expect_error(kMinimal + "[render]\nshade = 3\n", "render.shade", 10, "unknown key");
+  expect_error(kMinimal + "[render.light]\nkind = \"spot\"\n", "render.light.kind", 10,
+               "unknown key");
   expect_error("[[cloth]]\n[[cloth]]\nwidth = 2\n", "cloth[1].width", 3, "unknown key");
   expect_error("[cloth]\nsprings = { stiffness = 1, damp = 2 }\n", "cloth.springs.damp", 2,
                "unknown key");
+}
+
+// [render]: every value read, and bad ones named with their key and line.
+TEST(SceneParser, RenderSection) {
+  const Scene s = parse_scene_string(kMinimal + R"([render]
+mode = 7
+shadows = "pcss"
+shadow_map_size = 1024
+light = { type = "directional", direction = [0, -1, -1], color = [1, 1, 1], intensity = 2, size = 0.02 }
+sky = { enabled = false, turbidity = 5 }
+pole = { radius = 0.03 }
+[render.cloth]
+roughness = 0.8
+threads = "silver"
+[[render.meshes]]
+type = "torus_knot"
+center = [1, 0.5, 0]
+radius = 0.4
+color = [0.2, 0.4, 0.8]
+[[render.meshes]]
+type = "box"
+half_extents = [0.1, 0.2, 0.3]
+rotation = [0, 45, 0]
+)",
+                                     "t.toml");
+  const RenderSpec& r = s.render;
+  EXPECT_EQ(r.mode, 7);
+  EXPECT_EQ(r.shadows, ShadowFilter::pcss);
+  EXPECT_EQ(r.shadow_map_size, 1024);
+  EXPECT_EQ(r.light.type, LightType::directional);
+  EXPECT_EQ(r.light.direction, (Vec3d{0, -1, -1}));
+  EXPECT_EQ(r.light.intensity, 2.0);
+  EXPECT_EQ(r.light.size, 0.02);
+  EXPECT_FALSE(r.sky.enabled);
+  EXPECT_EQ(r.sky.turbidity, 5.0);
+  EXPECT_TRUE(r.pole.enabled);
+  EXPECT_EQ(r.pole.radius, 0.03);
+  EXPECT_EQ(r.cloth.roughness, 0.8);
+  EXPECT_EQ(r.cloth.threads, ThreadMetal::silver);
+  ASSERT_EQ(r.meshes.size(), 2u);
+  EXPECT_EQ(r.meshes[0].kind, MeshKind::torus_knot);
+  EXPECT_EQ(r.meshes[0].center, (Vec3d{1, 0.5, 0}));
+  EXPECT_EQ(r.meshes[1].kind, MeshKind::box);
+  EXPECT_EQ(r.meshes[1].half_extents, (Vec3d{0.1, 0.2, 0.3}));
+  EXPECT_EQ(r.meshes[1].key, "render.meshes[1]");
+  // Defaults without a [render] table.
+  const Scene d = parse_scene_string(kMinimal, "t.toml");
+  EXPECT_EQ(d.render.mode, 3);
+  EXPECT_EQ(d.render.shadows, ShadowFilter::pcf);
+  EXPECT_TRUE(d.render.meshes.empty());
+
+  expect_error(kMinimal + "[render]\nmode = 9\n", "render.mode", 10, "1, 2, 3 or 7");
+  expect_error(kMinimal + "[render]\nshadows = \"vsm\"\n", "render.shadows", 10,
+               "unknown shadow filter \"vsm\" (valid: none, pcf, pcss)");
+  expect_error(kMinimal + "[render]\nshadow_map_size = 100\n", "render.shadow_map_size", 10,
+               "between 256 and 8192");
+  expect_error(kMinimal + "[render.light]\nintensity = -1\n", "render.light.intensity", 10,
+               ">= 0");
+  expect_error(kMinimal + "[render.light]\nposition = [0, 1, 0]\ntarget = [0, 1, 0]\n",
+               "render.light.target", 11, "must differ");
+  expect_error(kMinimal + "[render.sky]\nturbidity = 20\n", "render.sky.turbidity", 10,
+               "between 1.7 and 10");
+  expect_error(kMinimal + "[render.pole]\nradius = 0\n", "render.pole.radius", 10, "between");
+  expect_error(kMinimal + "[[render.meshes]]\ntype = \"sphere\"\nradius = -1\n",
+               "render.meshes[0].radius", 11, "> 0");
+  expect_error(kMinimal + "[[render.meshes]]\ntype = \"box\"\nhalf_extents = [1, 0, 1]\n",
+               "render.meshes[0].half_extents[1]", 11, "> 0");
+  // A missing key is reported at its table's header.
+  expect_error(kMinimal + "[[render.meshes]]\nradius = 1\n", "render.meshes[0].type", 9,
+               "missing");
+  expect_error(kMinimal + "[[render.meshes]]\ntype = \"teapot\"\n", "render.meshes[0].type",
+               10, "unknown mesh type \"teapot\"");
+  expect_error(kMinimal + "[render.cloth]\nopacity = 1.5\n", "render.cloth.opacity", 10,
+               "between 0 and 1");
 }
 
 TEST(SceneParser, UnknownIntegratorListsValidNames) {
@@ -328,7 +405,7 @@ TEST(SceneOverrides, ErrorsNameTheSetArgument) {
   EXPECT_EQ(error_of(file, {"solver.dtt=0.1"}).loc.file, "--set solver.dtt=0.1");
   expect_error(file, "physics", 0, "unknown top-level key", {"physics.dt=0.1"});
   EXPECT_EQ(error_of(file, {"physics.dt=0.1"}).loc.file, "--set physics.dt=0.1");
-  expect_error(file, "render", 0, "not supported yet", {"render.mode=3"});
+  expect_error(file, "music", 0, "not supported yet", {"music.file=a.wav"});
   expect_error(file, "solver.integrator", 0, "unknown integrator", {"solver.integrator=rk5"});
   // A value error in the file is still reported at the file when another key is overridden.
   e = error_of(file + "threads = -3\n", {"solver.dt=0.01"});

@@ -27,7 +27,7 @@ struct RenderArgs {
   std::string scene;
   std::vector<std::string> overrides;
   int frames = 60;
-  int mode = 3;  // display mode, keys 1-3
+  int mode = 0;  // display mode (keys 1-3, 7); 0: the scene's render.mode
   int width = 1280, height = 720;
   double fps = 60.0;   // simulated time per frame = 1 / fps
   std::string out;     // directory for frame_00000.png, ...

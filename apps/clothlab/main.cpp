@@ -66,8 +66,11 @@ int main(int argc, char** argv) {
   add_scene_options(*render_cmd, render.scene, render.overrides);
   render_cmd->add_option("--frames", render.frames, "frames to render")
       ->check(CLI::Range(1, 1000000));
-  render_cmd->add_option("--mode", render.mode, "1 springs, 2 normals, 3 Lambert + texture")
-      ->check(CLI::Range(1, 3));
+  render_cmd
+      ->add_option("--mode", render.mode,
+                   "1 springs, 2 normals, 3 Lambert + texture, 7 the light's depth map "
+                   "(default: the scene's render.mode)")
+      ->check(CLI::IsMember({1, 2, 3, 7}));
   std::string size = "1280x720";
   render_cmd->add_option("--size", size, "image size WxH")
       ->check(CLI::Validator(

@@ -125,8 +125,9 @@ int run_render(const RenderArgs& args) {
   try {
     vis::HeadlessRenderer renderer(args.width, args.height);
     renderer.set_cloth(*solver);
-    vis::ViewSettings view = vis::default_view(*solver);
-    view.mode = static_cast<vis::DisplayMode>(args.mode);
+    renderer.set_scene(scene.render, *solver);
+    vis::ViewSettings view = vis::scene_view(scene, *solver);
+    if (args.mode != 0) view.mode = static_cast<vis::DisplayMode>(args.mode);
     apply_view_options(args, view);
     std::unique_ptr<VideoPipe> video;
     if (!args.video.empty())
@@ -164,10 +165,10 @@ int run_render(const RenderArgs& args) {
     std::printf(
         "render: %d frames of %dx%d (mode %d) on %s: %.2f ms/frame simulation (%.1f steps of "
         "%g s), %.2f ms/frame rendering, %.2f ms/frame writing; %s%s%s\n",
-        args.frames, args.width, args.height, args.mode, renderer.gl_renderer().c_str(),
-        1e3 * simulate / frames, frames > 1 ? double(steps) / (frames - 1) : 0.0, solver->dt(),
-        1e3 * draw / frames, 1e3 * output / frames, args.out.c_str(), video ? " and " : "",
-        args.video.c_str());
+        args.frames, args.width, args.height, static_cast<int>(view.mode),
+        renderer.gl_renderer().c_str(), 1e3 * simulate / frames,
+        frames > 1 ? double(steps) / (frames - 1) : 0.0, solver->dt(), 1e3 * draw / frames,
+        1e3 * output / frames, args.out.c_str(), video ? " and " : "", args.video.c_str());
     print_views(renderer.diagnostics(), view);
     return 0;
   } catch (const vis::GlUnavailable& e) {

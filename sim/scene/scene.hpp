@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-namespace clothlab {
+#include "sim/scene/render_spec.hpp"
 
-using Vec3d = std::array<double, 3>;
+namespace clothlab {
 
 // Where a value came from: a scene file position, or a --set argument (line 0, file holds the
 // argument text). Used by every error that names a value.
@@ -116,6 +116,7 @@ struct Scene {
   ForceSpec forces;
   SolverSpec solver;
   std::optional<TraceSpec> trace;  // absent: `clothlab trace` uses its documented default
+  RenderSpec render;               // [render]: how the scene is shown (vis/ only)
   // Source location of every value read, by key path ("solver.dt", "cloth[1].pins[2]").
   std::map<std::string, SourceLoc> locations;
 

@@ -67,8 +67,8 @@ std::string list_names(Names names) {
   return text;
 }
 
-constexpr std::string_view kTopKeys[] = {"cloth", "springs", "forces", "solver", "trace"};
-constexpr std::string_view kPlannedTopKeys[] = {"colliders", "render", "music", "mannequin"};
+constexpr std::string_view kTopKeys[] = {"cloth", "springs", "forces", "solver", "trace", "render"};
+constexpr std::string_view kPlannedTopKeys[] = {"colliders", "music", "mannequin"};
 constexpr std::string_view kClothKeys[] = {"shape",  "size", "resolution", "origin", "u_axis",
                                            "v_axis", "mass", "pins",       "springs"};
 constexpr std::string_view kSpringKeys[] = {"rule", "stiffness", "damping"};
@@ -79,6 +79,16 @@ constexpr std::string_view kSolverKeys[] = {"integrator", "dt",           "subst
                                             "threads",    "precision",    "backend"};
 constexpr std::string_view kTraceKeys[] = {"vertices", "fields", "every"};
 constexpr std::string_view kTraceFields[] = {"position", "velocity", "force", "energy"};
+constexpr std::string_view kRenderKeys[] = {"mode", "shadows", "shadow_map_size", "light",
+                                            "sky",  "pole",    "meshes",          "cloth"};
+constexpr std::string_view kLightKeys[] = {"type",  "position",  "target", "direction",
+                                           "color", "intensity", "size"};
+constexpr std::string_view kSkyKeys[] = {"enabled", "turbidity"};
+constexpr std::string_view kPoleKeys[] = {"enabled", "radius"};
+constexpr std::string_view kMeshKeys[] = {"type",         "center",   "radius",
+                                          "half_extents", "rotation", "color"};
+constexpr std::string_view kLookKeys[] = {"roughness", "sheen",           "sheen_roughness",
+                                          "threads",   "thread_fraction", "opacity"};
 
 class Reader {
  public:
@@ -92,6 +102,7 @@ class Reader {
     if (const toml::node* node = root.get("forces")) read_forces(table(*node, "forces"));
     if (const toml::node* node = root.get("solver")) read_solver(table(*node, "solver"));
     if (const toml::node* node = root.get("trace")) scene_.trace = read_trace(*node);
+    if (const toml::node* node = root.get("render")) read_render(*node);
   }
 
  private:
@@ -418,6 +429,102 @@ class Reader {
       if (*flag) fail(k, *a.get(n), "field \"" + name + "\" is listed twice");
       *flag = true;
     }
+  }
+
+  // A name from a fixed table (enum value and its scene-file spelling).
+  template <class E, std::size_t N>
+  E choice(const toml::node& node, const std::string& key,
+           const std::array<std::pair<E, const char*>, N>& names, std::string_view what) const {
+    const std::string name = text(node, key);
+    std::string valid;
+    for (const auto& [value, spelling] : names) {
+      if (name == spelling) return value;
+      valid += (valid.empty() ? "" : ", ") + std::string(spelling);
+    }
+    fail(key, node, "unknown " + std::string(what) + " \"" + name + "\" (valid: " + valid + ")");
+  }
+
+  bool boolean(const toml::node& node, const std::string& key) const {
+    const auto* b = node.as_boolean();
+    if (!b) fail(key, node, "expected true or false, got " + describe(node));
+    return b->get();
+  }
+
+  void read_render(const toml::node& node) {
+    const std::string key = "render";
+    note(key, node);
+    const toml::table& t = table(node, key);
+    check_keys(t, key, kRenderKeys);
+    RenderSpec& r = scene_.render;
+    field(t, key, "mode", [&](auto& n, auto& k) { r.mode = small_integer(n, k); });
+    field(t, key, "shadows",
+          [&](auto& n, auto& k) { r.shadows = choice(n, k, kShadowFilterNames, "shadow filter"); });
+    field(t, key, "shadow_map_size",
+          [&](auto& n, auto& k) { r.shadow_map_size = small_integer(n, k); });
+    field(t, key, "light", [&](auto& n, auto& k) { read_light(table(n, k), k, r.light); });
+    field(t, key, "sky", [&](auto& n, auto& k) {
+      const toml::table& s = table(n, k);
+      check_keys(s, k, kSkyKeys);
+      field(s, k, "enabled", [&](auto& m, auto& q) { r.sky.enabled = boolean(m, q); });
+      field(s, k, "turbidity", [&](auto& m, auto& q) { r.sky.turbidity = number(m, q); });
+    });
+    field(t, key, "pole", [&](auto& n, auto& k) {
+      const toml::table& p = table(n, k);
+      check_keys(p, k, kPoleKeys);
+      field(p, k, "enabled", [&](auto& m, auto& q) { r.pole.enabled = boolean(m, q); });
+      field(p, k, "radius", [&](auto& m, auto& q) { r.pole.radius = number(m, q); });
+    });
+    field(t, key, "meshes", [&](auto& n, auto& k) {
+      const toml::array& a = array(n, k, std::nullopt, " of tables ([[render.meshes]])");
+      for (std::size_t m = 0; m < a.size(); ++m) {
+        const std::string mk = k + "[" + std::to_string(m) + "]";
+        note(mk, *a.get(m));
+        r.meshes.push_back(read_mesh(table(*a.get(m), mk), mk));
+      }
+    });
+    field(t, key, "cloth", [&](auto& n, auto& k) { read_look(table(n, k), k, r.cloth); });
+  }
+
+  void read_light(const toml::table& t, const std::string& key, LightSpec& light) {
+    check_keys(t, key, kLightKeys);
+    field(t, key, "type",
+          [&](auto& n, auto& k) { light.type = choice(n, k, kLightTypeNames, "light type"); });
+    field(t, key, "position", [&](auto& n, auto& k) { light.position = numbers<3>(n, k); });
+    field(t, key, "target", [&](auto& n, auto& k) { light.target = numbers<3>(n, k); });
+    field(t, key, "direction", [&](auto& n, auto& k) { light.direction = numbers<3>(n, k); });
+    field(t, key, "color", [&](auto& n, auto& k) { light.color = numbers<3>(n, k); });
+    field(t, key, "intensity", [&](auto& n, auto& k) { light.intensity = number(n, k); });
+    field(t, key, "size", [&](auto& n, auto& k) { light.size = number(n, k); });
+  }
+
+  MeshSpec read_mesh(const toml::table& t, const std::string& key) {
+    check_keys(t, key, kMeshKeys);
+    MeshSpec mesh;
+    mesh.key = key;
+    if (!t.contains("type"))
+      fail(key + ".type", t, "missing (a mesh needs type = \"sphere\", \"box\" or \"torus_knot\")");
+    field(t, key, "type",
+          [&](auto& n, auto& k) { mesh.kind = choice(n, k, kMeshKindNames, "mesh type"); });
+    field(t, key, "center", [&](auto& n, auto& k) { mesh.center = numbers<3>(n, k); });
+    field(t, key, "radius", [&](auto& n, auto& k) { mesh.radius = number(n, k); });
+    field(t, key, "half_extents", [&](auto& n, auto& k) { mesh.half_extents = numbers<3>(n, k); });
+    field(t, key, "rotation", [&](auto& n, auto& k) { mesh.rotation = numbers<3>(n, k); });
+    field(t, key, "color", [&](auto& n, auto& k) { mesh.color = numbers<3>(n, k); });
+    return mesh;
+  }
+
+  void read_look(const toml::table& t, const std::string& key, ClothLookSpec& look) {
+    check_keys(t, key, kLookKeys);
+    field(t, key, "roughness", [&](auto& n, auto& k) { look.roughness = number(n, k); });
+    field(t, key, "sheen", [&](auto& n, auto& k) { look.sheen = number(n, k); });
+    field(t, key, "sheen_roughness",
+          [&](auto& n, auto& k) { look.sheen_roughness = number(n, k); });
+    field(t, key, "threads", [&](auto& n, auto& k) {
+      look.threads = choice(n, k, kThreadMetalNames, "thread metal");
+    });
+    field(t, key, "thread_fraction",
+          [&](auto& n, auto& k) { look.thread_fraction = number(n, k); });
+    field(t, key, "opacity", [&](auto& n, auto& k) { look.opacity = number(n, k); });
   }
 
   const OverrideOrigins& origins_;

@@ -19,7 +19,33 @@ constexpr std::array<std::pair<IntegratorKind, const char*>, 8> kIntegratorNames
     {IntegratorKind::local_global, "local_global"},
 }};
 
+template <class E, std::size_t N>
+const char* name_of(const std::array<std::pair<E, const char*>, N>& names, E value) {
+  for (const auto& [k, name] : names)
+    if (k == value) return name;
+  return "unknown";
+}
+
 }  // namespace
+
+const std::array<std::pair<ShadowFilter, const char*>, 3> kShadowFilterNames{
+    {{ShadowFilter::none, "none"}, {ShadowFilter::pcf, "pcf"}, {ShadowFilter::pcss, "pcss"}}};
+const std::array<std::pair<LightType, const char*>, 2> kLightTypeNames{
+    {{LightType::spot, "spot"}, {LightType::directional, "directional"}}};
+const std::array<std::pair<MeshKind, const char*>, 3> kMeshKindNames{
+    {{MeshKind::sphere, "sphere"}, {MeshKind::box, "box"}, {MeshKind::torus_knot, "torus_knot"}}};
+const std::array<std::pair<ThreadMetal, const char*>, 3> kThreadMetalNames{
+    {{ThreadMetal::none, "none"}, {ThreadMetal::gold, "gold"}, {ThreadMetal::silver, "silver"}}};
+
+const char* to_string(ShadowFilter filter) {
+  return name_of(kShadowFilterNames, filter);
+}
+const char* to_string(MeshKind kind) {
+  return name_of(kMeshKindNames, kind);
+}
+const char* to_string(ThreadMetal metal) {
+  return name_of(kThreadMetalNames, metal);
+}
 
 const char* to_string(IntegratorKind kind) {
   for (const auto& [k, name] : kIntegratorNames)

@@ -37,6 +37,7 @@ class Validator {
     check_forces();
     check_solver();
     if (scene_.trace) check_trace(*scene_.trace);
+    check_render(scene_.render);
   }
 
  private:
@@ -187,6 +188,54 @@ class Validator {
                                            " (got " + std::to_string(s.cg_max_iterations) + ")");
     if (s.precision != Precision::f32 && s.precision != Precision::f64)
       fail("solver.precision", "must be \"float\" or \"double\"");
+  }
+
+  // A value in [lo, hi].
+  void within(const std::string& key, double value, double lo, double hi) const {
+    finite(key, value);
+    if (!(value >= lo && value <= hi))
+      fail(key, "must be between " + format_number(lo) + " and " + format_number(hi) + " (got " +
+                    format_number(value) + ")");
+  }
+  void colour(const std::string& key, const Vec3d& c, double hi) const {
+    for (std::size_t k = 0; k < 3; ++k) within(key + "[" + std::to_string(k) + "]", c[k], 0.0, hi);
+  }
+  void check_render(const RenderSpec& r) const {
+    // Modes 4-6 (cloth BRDF, translucency, weave) are the realistic-rendering work in progress.
+    if (r.mode < 1 || r.mode > 7 || (r.mode >= 4 && r.mode <= 6))
+      fail("render.mode", "must be a display mode 1, 2, 3 or 7 (got " + std::to_string(r.mode) +
+                              "; modes 4-6 are not available yet)");
+    if (r.shadow_map_size < 256 || r.shadow_map_size > 8192)
+      fail("render.shadow_map_size",
+           "must be between 256 and 8192 texels (got " + std::to_string(r.shadow_map_size) + ")");
+    const LightSpec& l = r.light;
+    if (l.position) finite3("render.light.position", *l.position);
+    if (l.target) finite3("render.light.target", *l.target);
+    if (l.position && l.target &&
+        length({(*l.target)[0] - (*l.position)[0], (*l.target)[1] - (*l.position)[1],
+                (*l.target)[2] - (*l.position)[2]}) < 1e-6)
+      fail("render.light.target", "must differ from render.light.position");
+    finite3("render.light.direction", l.direction);
+    if (length(l.direction) < 1e-9) fail("render.light.direction", "must not be zero");
+    colour("render.light.color", l.color, 1e3);
+    non_negative("render.light.intensity", l.intensity);
+    non_negative("render.light.size", l.size);
+    within("render.sky.turbidity", r.sky.turbidity, 1.7, 10.0);  // Preetham's fitted range
+    within("render.pole.radius", r.pole.radius, 1e-4, 1.0);
+    for (const MeshSpec& m : r.meshes) {
+      finite3(m.key + ".center", m.center);
+      positive(m.key + ".radius", m.radius);
+      for (std::size_t k = 0; k < 3; ++k)
+        positive(m.key + ".half_extents[" + std::to_string(k) + "]", m.half_extents[k]);
+      finite3(m.key + ".rotation", m.rotation);
+      colour(m.key + ".color", m.color, 1.0);
+    }
+    const ClothLookSpec& c = r.cloth;
+    within("render.cloth.roughness", c.roughness, 0.0, 1.0);
+    within("render.cloth.sheen", c.sheen, 0.0, 1.0);
+    within("render.cloth.sheen_roughness", c.sheen_roughness, 0.07, 1.0);
+    within("render.cloth.thread_fraction", c.thread_fraction, 0.0, 1.0);
+    within("render.cloth.opacity", c.opacity, 0.0, 1.0);
   }
 
   static bool to_string_known(IntegratorKind kind) {

@@ -29,6 +29,10 @@ class HeadlessRenderer {
     renderer_.set_cloth(solver);
     diagnostics_.set_cloth();
   }
+  // The scenery of the scene's [render] table (pole, meshes); after set_cloth.
+  void set_scene(const RenderSpec& spec, const Solver& solver) {
+    renderer_.set_scene(spec, solver);
+  }
   // Uploads the solver's state (and what the view's diagnostics need) and draws the frame, with
   // its colour bars, into the multisampled target, without reading it back.
   void draw(Solver& solver, const ViewSettings& view);
@@ -44,6 +48,8 @@ class HeadlessRenderer {
   int width() const { return target_.width(); }
   int height() const { return target_.height(); }
   std::string gl_renderer() const { return context_.renderer(); }
+  // The light as the last render() placed it (its shadow-map matrices).
+  const LightRig& light() const { return renderer_.light(); }
   // The colour-by range and the arrows of the last render().
   const Diagnostics& diagnostics() const { return diagnostics_; }
   // The colour bars drawn into the last render() (ViewSettings::legends), right-most first.

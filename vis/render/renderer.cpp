@@ -8,6 +8,9 @@
 #include "sim/solver.hpp"
 #include "vis/colormap/colormap_texture.hpp"
 #include "vis/gl/program.hpp"
+#include "vis/passes/shadow_pass.hpp"
+#include "vis/passes/sky_pass.hpp"
+#include "vis/render/scenery.hpp"
 #include "vis/textures/fabric_texture.hpp"
 #include "vis/textures/floor_texture.hpp"
 
@@ -22,11 +25,16 @@ constexpr GLint kClothMode = 0, kClothTextureRepeat = 1, kClothColorBy = 2, kClo
 // std140 layout of the Frame block in shaders/frame.glsl.
 struct FrameBlock {
   glm::mat4 view_proj;
+  glm::mat4 light_view_proj;
   glm::vec4 eye;
-  glm::vec4 light_position;
-  glm::vec4 light_color;  // rgb intensity, a ambient
-  glm::vec4 params;       // x strain range, y floor height
+  glm::vec4 light_position;   // w: 0 spot, 1 directional
+  glm::vec4 light_direction;  // w: cone edge cosine
+  glm::vec4 light_color;      // rgb intensity, a ambient
+  glm::vec4 params;           // x strain range, y floor height
+  glm::vec4 shadow;           // x filter, y 1 / size, z light size (uv), w normal offset
+  glm::vec4 shadow_range;     // x near, y far, z orthographic
 };
+constexpr GLint kDepthViewViewport = 0;  // explicit uniform location in shaders/depth_view.frag
 
 Texture upload_texture(const Image& image) {
   Texture t = make_texture(GL_TEXTURE_2D);
@@ -55,6 +63,8 @@ Renderer::Renderer()
     : cloth_program_(build_program({"cloth.vert", "cloth.frag"})),
       floor_program_(build_program({"floor.vert", "floor.frag"})),
       springs_program_(build_program({"springs.vert", "springs.geom", "springs.frag"})),
+      depth_view_program_(build_program({"depth_view.vert", "depth_view.frag"})),
+      scenery_(std::make_unique<Scenery>()),
       fabric_(upload_texture(make_fabric_texture())),
       tiles_(upload_texture(make_floor_texture())),
       frame_ubo_(make_buffer()),
@@ -63,6 +73,12 @@ Renderer::Renderer()
   glObjectLabel(GL_TEXTURE, fabric_.get(), -1, "fabric albedo");
   glObjectLabel(GL_TEXTURE, tiles_.get(), -1, "floor tiles");
   for (ColorMap map : kAllColorMaps) colormaps_[static_cast<int>(map)] = make_colormap_texture(map);
+}
+
+Renderer::~Renderer() = default;
+
+void Renderer::set_scene(const RenderSpec& spec, const Solver& solver) {
+  scenery_->set_scene(spec, solver);
 }
 
 void Renderer::set_cloth(Solver& solver) {
@@ -80,6 +96,7 @@ void Renderer::set_cloth(Solver& solver) {
     }
   }
   solver.copy_rest_positions(fixed.data() + 2 * n);
+
   std::vector<std::uint32_t> triangles;
   for (const auto& t : solver.triangles())
     for (int v : t) triangles.push_back(static_cast<std::uint32_t>(v));
@@ -128,6 +145,18 @@ void Renderer::set_cloth(Solver& solver) {
 
 void Renderer::update_cloth(Solver& solver) {
   solver.copy_positions(staging_.data());
+  // The cloth's current bounds: the light's frustum follows the cloth, so the shadow map spends
+  // its texels on it wherever it has moved.
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (std::size_t v = 0; v < vertices_; ++v) {
+    const glm::vec3 p(staging_[3 * v], staging_[3 * v + 1], staging_[3 * v + 2]);
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  if (vertices_ == 0 || !std::isfinite(lo.x + hi.x + lo.y + hi.y + lo.z + hi.z))
+    lo = hi = glm::vec3(0.0f);
+  shadow_centre_ = 0.5f * (lo + hi);
+  shadow_radius_ = std::max(0.1f, 0.5f * glm::length(hi - lo));
   solver.copy_normals(staging_.data() + 3 * vertices_);
   glNamedBufferSubData(dynamic_vbo_.get(), 0,
                        static_cast<GLsizeiptr>(staging_.size() * sizeof(float)), staging_.data());
@@ -142,14 +171,48 @@ void Renderer::set_scalars(const std::vector<float>& values, ScalarRange range) 
 }
 
 void Renderer::draw(const ViewSettings& view, int width, int height) {
+  GLint target = 0;  // the caller's framebuffer: the shadow pass binds its own first
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+  const bool depth_view = view.mode == DisplayMode::light_depth;
+  const bool shadows = view.shadows != ShadowFilter::none || depth_view;
+  // The region the light must see: the cloth, the floor below it and the scenery.
+  glm::vec3 lo = shadow_centre_ - glm::vec3(shadow_radius_);
+  glm::vec3 hi = shadow_centre_ + glm::vec3(shadow_radius_);
+  lo.y = std::min(lo.y, view.floor_height);
+  if (!scenery_->empty()) {
+    lo = glm::min(lo, scenery_->lo());
+    hi = glm::max(hi, scenery_->hi());
+  }
+  const glm::vec3 centre = 0.5f * (lo + hi);
+  const float radius = 0.5f * glm::length(hi - lo);
+  light_ = fit_light(view, centre, radius, view.shadow_map_size);
+
   FrameBlock frame;
   frame.view_proj = view_projection(view.camera, width, height);
+  frame.light_view_proj = light_.view_proj;
   frame.eye = glm::vec4(view.camera.eye(), 1.0f);
-  frame.light_position = glm::vec4(view.light_position, 1.0f);
+  frame.light_position = glm::vec4(light_.position, light_.directional ? 1.0f : 0.0f);
+  frame.light_direction = glm::vec4(light_.direction, light_.cone_cos);
   frame.light_color = glm::vec4(view.light_color * view.light_intensity, view.ambient);
   frame.params = glm::vec4(view.strain_range, view.floor_height, 0.0f, 0.0f);
+  const float filter = view.shadows == ShadowFilter::pcss  ? 2.0f
+                       : view.shadows == ShadowFilter::pcf ? 1.0f
+                                                           : 0.0f;
+  frame.shadow =
+      glm::vec4(filter, 1.0f / float(view.shadow_map_size), light_.size_uv, light_.normal_offset);
+  frame.shadow_range = glm::vec4(light_.near, light_.far, light_.directional ? 1.0f : 0.0f, 0.0f);
   glNamedBufferSubData(frame_ubo_.get(), 0, sizeof frame, &frame);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, frame_ubo_.get());
+
+  if (shadows) {
+    draw_shadow_map(view);
+    shadow_->bind_textures();
+  } else {
+    shadow_.reset();  // nothing needs the map: its memory goes too
+  }
+  // The main pass draws into what the caller bound (the shadow pass bound its own).
+  glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+  glViewport(0, 0, width, height);
 
   glEnable(GL_FRAMEBUFFER_SRGB);
   glEnable(GL_DEPTH_TEST);
@@ -160,6 +223,18 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
   glClearBufferfv(GL_COLOR, 0, clear);
   glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
 
+  if (depth_view) {
+    glUseProgram(depth_view_program_.get());
+    glProgramUniform2f(depth_view_program_.get(), kDepthViewViewport, float(width), float(height));
+    glBindTextureUnit(1, colormap_texture(ColorMap::turbo));
+    glBindVertexArray(empty_vao_.get());
+    glDisable(GL_DEPTH_TEST);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glEnable(GL_DEPTH_TEST);
+    glBindVertexArray(0);
+    return;
+  }
+
   // Floor.
   glUseProgram(floor_program_.get());
   glProgramUniform1f(floor_program_.get(), kFloorHalfSize, view.floor_half_size);
@@ -167,6 +242,8 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
   glBindTextureUnit(0, tiles_.get());
   glBindVertexArray(empty_vao_.get());
   glDrawArrays(GL_TRIANGLES, 0, 6);
+
+  scenery_->draw();
 
   if (view.mode == DisplayMode::springs) {
     glUseProgram(springs_program_.get());
@@ -187,6 +264,26 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
     glDrawElements(GL_TRIANGLES, triangle_indices_, GL_UNSIGNED_INT, nullptr);
   }
   glBindVertexArray(0);
+
+  // The sky last among the opaque passes: it fills only what nothing else covered.
+  if (view.sky) {
+    if (!sky_) sky_ = std::make_unique<SkyPass>();
+    const glm::vec3 sun = light_.directional ? -light_.direction : light_.position - centre;
+    sky_->draw(sun, view.sky_turbidity, frame.view_proj, view.camera.eye());
+  } else {
+    sky_.reset();
+  }
+}
+
+// Every caster into the light's depth map: the floor, then the cloth (its current positions).
+void Renderer::draw_shadow_map(const ViewSettings& view) {
+  if (!shadow_) shadow_ = std::make_unique<ShadowPass>();
+  shadow_->begin(view.shadow_map_size);
+  shadow_->draw_floor(view.floor_height, view.floor_half_size);
+  if (triangle_indices_ > 0)
+    shadow_->draw_triangles(cloth_vao_.get(), triangle_indices_, glm::mat4(1.0f));
+  scenery_->draw_shadow(*shadow_);
+  shadow_->end();
 }
 
 }  // namespace clothlab::vis

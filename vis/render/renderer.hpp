@@ -6,7 +6,10 @@
 #include <array>
 #include <vector>
 
+#include <memory>
+
 #include "vis/gl/objects.hpp"
+#include "vis/render/light_rig.hpp"
 #include "vis/render/view_settings.hpp"
 
 namespace clothlab {
@@ -15,21 +18,32 @@ class Solver;
 
 namespace clothlab::vis {
 
+class Scenery;
+class ShadowPass;
+class SkyPass;
+
 class Renderer {
  public:
   Renderer();
+  ~Renderer();
 
   // (Re)builds the cloth's static buffers: UVs, rest positions, triangle and spring indices.
   // Call after building or resizing the solver.
   void set_cloth(Solver& solver);
+  // (Re)builds the scenery of the scene's [render] table: the pole from the solver's pins and
+  // the extra meshes. Call after set_cloth.
+  void set_scene(const RenderSpec& spec, const Solver& solver);
   // Uploads the current positions and smooth normals (computed in parallel by the solver) into
   // the vertex buffer, in place. Call once per frame before draw().
   void update_cloth(Solver& solver);
   // The colour-by scalar, one per vertex (vertex_count() values), and the range the colour map
   // spans, for draws while view.color.field is not none.
   void set_scalars(const std::vector<float>& values, ScalarRange range);
-  // Draws the scene into the bound framebuffer of the given size.
+  // Draws the scene into the bound framebuffer of the given size: first the shadow map when
+  // the view needs one (a shadow filter, or key 7), then the view.
   void draw(const ViewSettings& view, int width, int height);
+  // The light as the last draw() placed it (tests project through its matrices).
+  const LightRig& light() const { return light_; }
 
   // For passes that draw the same cloth (FieldPass): the buffer whose first 3 floats per vertex
   // are the positions of the last update_cloth(), and the triangles' index buffer.
@@ -41,7 +55,17 @@ class Renderer {
   GLuint colormap_texture(ColorMap map) const { return colormaps_[static_cast<int>(map)].get(); }
 
  private:
-  Program cloth_program_, floor_program_, springs_program_;
+  void draw_shadow_map(const ViewSettings& view);
+
+  Program cloth_program_, floor_program_, springs_program_, depth_view_program_;
+  std::unique_ptr<ShadowPass> shadow_;  // only while shadows or the depth view are on
+  std::unique_ptr<SkyPass> sky_;        // only while the sky is shown
+  std::unique_ptr<Scenery> scenery_;
+  LightRig light_;
+  // A sphere around the cloth's current positions (update_cloth); the light's frustum holds it
+  // and the floor below it.
+  glm::vec3 shadow_centre_{0.0f};
+  float shadow_radius_ = 1.0f;
   Texture fabric_, tiles_;
   Buffer frame_ubo_;
   // One vertex buffer for what changes every frame (positions, then normals) and one for what

@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <vector>
 
+#include "sim/scene/scene.hpp"
 #include "sim/solver.hpp"
 
 namespace clothlab::vis {
@@ -65,8 +66,42 @@ ViewSettings default_view(const Solver& solver) {
   // Irradiance of about 1 at the cloth, whatever its size.
   const float d = glm::length(s.light_position - centre);
   s.light_intensity = 1.2f * d * d;
-  s.floor_half_size = std::max(6.0f, 4.0f * radius);
+  s.floor_half_size = std::max(30.0f, 15.0f * radius);  // out to near the horizon
   s.floor_tile_size = std::max(2.0f, 1.5f * radius);  // 4 x 4 stone tiles per repeat
+  return s;
+}
+
+namespace {
+
+glm::vec3 to_glm(const Vec3d& v) {
+  return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
+}
+
+}  // namespace
+
+ViewSettings scene_view(const Scene& scene, const Solver& solver) {
+  ViewSettings s = default_view(solver);
+  const RenderSpec& r = scene.render;
+  s.mode = static_cast<DisplayMode>(r.mode);
+  s.shadows = r.shadows;
+  s.shadow_map_size = r.shadow_map_size;
+  s.sky = r.sky.enabled;
+  s.sky_turbidity = static_cast<float>(r.sky.turbidity);
+  const LightSpec& l = r.light;
+  s.light_type = l.type;
+  s.light_color = to_glm(l.color);
+  s.light_size = static_cast<float>(l.size);
+  s.light_direction = to_glm(l.direction);
+  if (l.position) s.light_position = to_glm(*l.position);
+  if (l.target) s.light_target = to_glm(*l.target);
+  if (l.type == LightType::directional) {
+    s.light_intensity = static_cast<float>(l.intensity);
+  } else {
+    // Irradiance `intensity` at the cloth's centre (the camera's target), whatever the distance.
+    const float d =
+        glm::length(s.light_position - (s.light_target ? *s.light_target : s.camera.target));
+    s.light_intensity = static_cast<float>(l.intensity) * d * d;
+  }
   return s;
 }
 

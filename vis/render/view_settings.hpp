@@ -5,18 +5,31 @@
 
 #include <glm/glm.hpp>
 
+#include <optional>
+
 #include "sim/forces/force_source.hpp"
+#include "sim/scene/render_spec.hpp"
 #include "vis/colormap/colormap.hpp"
 
 namespace clothlab {
 class Solver;
-}
+struct Scene;
+}  // namespace clothlab
 
 namespace clothlab::vis {
 
-// Keys 1-3 (design.md): springs as lines coloured by strain, world normals as colour, Lambert
-// with the fabric texture.
-enum class DisplayMode { springs = 1, normals = 2, lambert = 3 };
+// Keys 1-7 (design.md): springs as lines coloured by strain, world normals as colour, Lambert
+// with the fabric texture, the cloth BRDF, translucent cloth, the normal-mapped weave, and the
+// light's depth map.
+enum class DisplayMode {
+  springs = 1,
+  normals = 2,
+  lambert = 3,
+  cloth_brdf = 4,
+  translucent = 5,
+  weave = 6,
+  light_depth = 7
+};
 
 // A camera orbiting a target point: yaw about +y, pitch above the horizon, distance in metres.
 struct OrbitCamera {
@@ -69,9 +82,19 @@ struct ViewSettings {
   // Which force the |force| colouring and the force arrows show (probes show the total).
   ForceSource force_source = ForceSource::total;
   OrbitCamera camera;
+  // The scene's light ([render.light]): a spot at light_position aimed at light_target (the
+  // scene's centre when unset), or a directional light travelling along light_direction.
+  LightType light_type = LightType::spot;
   glm::vec3 light_position{1.0f, 4.0f, 2.5f};  // m
+  std::optional<glm::vec3> light_target;
+  glm::vec3 light_direction{-0.35f, -1.0f, -0.55f};
   glm::vec3 light_color{1.0f, 0.95f, 0.88f};
-  float light_intensity = 16.0f;  // scales light_color; irradiance falls off as 1/d^2
+  float light_intensity = 16.0f;  // scales light_color; spot: irradiance falls off as 1/d^2
+  float light_size = 0.15f;       // m (spot) or radians (directional): the penumbrae of PCSS
+  ShadowFilter shadows = ShadowFilter::pcf;
+  int shadow_map_size = 2048;
+  bool sky = true;
+  float sky_turbidity = 3.0f;
   float ambient = 0.05f;
   float strain_range = 0.02f;                 // springs colour map saturates at +-2 % strain
   float floor_height = 0.0f;                  // m
@@ -88,5 +111,8 @@ glm::mat4 view_projection(const OrbitCamera& camera, int width, int height);
 // Settings framing the solver's cloth: camera on its bounding box, floor below its lowest point
 // (at 0 when the cloth is above 0), light above and in front.
 ViewSettings default_view(const Solver& solver);
+
+// default_view with the scene's [render] choices: display mode, shadows, light, sky.
+ViewSettings scene_view(const Scene& scene, const Solver& solver);
 
 }  // namespace clothlab::vis

@@ -109,6 +109,23 @@ bool structure_editors(Scene& draft) {
   return edited;
 }
 
+// Shadows: the filter and the map's size (rendering.md section 6).
+void shadow_editors(ViewSettings& view) {
+  if (ImGui::BeginCombo("shadows", to_string(view.shadows))) {
+    for (const auto& [filter, name] : kShadowFilterNames)
+      if (ImGui::Selectable(name, filter == view.shadows)) view.shadows = filter;
+    ImGui::EndCombo();
+  }
+  int size_log2 = static_cast<int>(std::lround(std::log2(view.shadow_map_size)));
+  if (ImGui::SliderInt("shadow map", &size_log2, 9, 12, "")) view.shadow_map_size = 1 << size_log2;
+  ImGui::SameLine();
+  ImGui::TextDisabled("%d^2", view.shadow_map_size);
+  float size = view.light_size;
+  if (ImGui::SliderFloat(view.light_type == LightType::spot ? "light size (m)" : "light size (rad)",
+                         &size, 0.0f, 0.5f, "%.3g"))
+    view.light_size = size;
+}
+
 std::optional<Action> buttons(const SimSession& session) {
   std::optional<Action> clicked;
   if (ImGui::Button(session.paused ? "Run (Space)" : "Pause (Space)")) clicked = Action::pause;
@@ -210,7 +227,10 @@ std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view
   ImGui::RadioButton("2 normals", &mode, 2);
   ImGui::SameLine();
   ImGui::RadioButton("3 shaded", &mode, 3);
+  ImGui::SameLine();
+  ImGui::RadioButton("7 light depth", &mode, 7);
   view.mode = static_cast<DisplayMode>(mode);
+  shadow_editors(view);
   ImGui::Text("probe (8 force, 9 velocity, 0 position): %s",
               state.probe ? field_name(*state.probe) : "off");
   draw_view_editors(view);

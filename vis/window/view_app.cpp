@@ -73,7 +73,7 @@ ViewApp::ViewApp(Scene scene, ViewHooks hooks)
       window_("ClothLab — " + scene_name_, kInitialWidth, kInitialHeight),
       renderer_(std::make_unique<Renderer>()),
       diagnostics_(std::make_unique<Diagnostics>()),
-      view_(default_view(session_.solver())) {
+      view_(scene_view(session_.scene(), session_.solver())) {
   install_callbacks();
   imgui_ = std::make_unique<ImGuiLayer>(window_.handle());
   // A push of 0.5 m/s on average over the whole cloth: visible, never violent.
@@ -217,6 +217,7 @@ void ViewApp::dispatch(Action action) {
     case Action::mode_springs:
     case Action::mode_normals:
     case Action::mode_lambert:
+    case Action::mode_light_depth:
       select_mode(view_, last_shaded_, action);
       break;
     case Action::probe_force:
@@ -288,6 +289,7 @@ void ViewApp::draw(int width, int height) {
   Solver& solver = session_.solver();
   if (rendered_generation_ != session_.generation()) {
     renderer_->set_cloth(solver);  // a reset may have changed the vertex count
+    renderer_->set_scene(session_.scene().render, solver);
     diagnostics_->set_cloth();
     pinned_vertex_ = -1;
     rendered_generation_ = session_.generation();

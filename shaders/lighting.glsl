@@ -1,0 +1,109 @@
+// Shadowed lighting for fragment shaders (include after frame.glsl): the scene's shadow map and
+// the lit surface models that use it. Fragment-only: the kernels turn with gl_FragCoord.
+
+// The shadow map (vis/render/shadow_pass.cpp): one depth texture read through two samplers, a
+// comparing one for PCF and a plain one for the blocker search (rendering.md section 0).
+layout(binding = 6) uniform sampler2DShadow u_shadow_compare;
+layout(binding = 7) uniform sampler2D u_shadow_depth;
+
+// Interleaved gradient noise (Jimenez 2014, "Next Generation Post Processing in Call of Duty:
+// Advanced Warfare"): a per-pixel rotation for the filter kernels, so banding becomes fine noise.
+float interleaved_gradient_noise(vec2 pixel) {
+  return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
+}
+
+// 16 points of a Poisson disk in the unit circle.
+const vec2 kPoisson[16] = vec2[](
+    vec2(-0.94201624, -0.39906216), vec2(0.94558609, -0.76890725), vec2(-0.09418410, -0.92938870),
+    vec2(0.34495938, 0.29387760), vec2(-0.91588581, 0.45771432), vec2(-0.81544232, -0.87912464),
+    vec2(-0.38277543, 0.27676845), vec2(0.97484398, 0.75648379), vec2(0.44323325, -0.97511554),
+    vec2(0.53742981, -0.47373420), vec2(-0.26496911, -0.41893023), vec2(0.79197514, 0.19090188),
+    vec2(-0.24188840, 0.99706507), vec2(-0.81409955, 0.91437590), vec2(0.19984126, 0.78641367),
+    vec2(0.14383161, -0.14100790));
+
+// A depth-map value as distance from the light along its axis (m): perspective maps store
+// non-linear depth (LearnOpenGL "Shadow mapping", linearised depth); orthographic ones are linear.
+float linear_light_depth(float d) {
+  float n = shadow_range.x, f = shadow_range.y;
+  if (shadow_range.z > 0.5) return n + d * (f - n);
+  return 2.0 * n * f / (f + n - (2.0 * d - 1.0) * (f - n));
+}
+
+// Percentage-closer filtering over a rotated Poisson disk of radius `radius` (shadow-map uv),
+// each tap a hardware 2x2 comparison (Reeves, Salesin & Cook 1987) against the receiver's depth
+// carried along its own plane to the tap (receiver-plane depth bias, Isidoro 2006), so wide
+// kernels on sloped receivers do not shadow the receiver itself.
+float pcf(vec3 coord, vec2 dz_duv, float radius, mat2 rotation) {
+  float lit = 0.0;
+  for (int i = 0; i < 16; ++i) {
+    vec2 offset = rotation * kPoisson[i] * radius;
+    float z = coord.z + dot(dz_duv, offset);
+    lit += texture(u_shadow_compare, vec3(coord.xy + offset, z));
+  }
+  return lit / 16.0;
+}
+
+// Percentage-closer soft shadows (Fernando 2005; NVIDIA's "PCSS Integration" formulas): the
+// average depth of the blockers found in a search region sized by the light, the penumbra
+// width from similar triangles, then PCF over that width.
+float pcss(vec3 coord, vec2 dz_duv, mat2 rotation) {
+  float z_receiver = linear_light_depth(coord.z);
+  float n = shadow_range.x;
+  float light_uv = shadow.z;
+  bool ortho = shadow_range.z > 0.5;
+  // Blockers lie in the cone from the receiver to the light's extent: its width at the near
+  // plane (perspective) or per metre of depth (orthographic, light_uv = angular size / width).
+  float search = ortho ? light_uv * (z_receiver - n) : light_uv * (z_receiver - n) / z_receiver;
+  search = clamp(search, 2.0 * shadow.y, 0.08);
+  float blockers = 0.0, sum = 0.0;
+  for (int i = 0; i < 16; ++i) {
+    vec2 offset = rotation * kPoisson[i] * search;
+    float d = texture(u_shadow_depth, coord.xy + offset).r;
+    // A blocker lies in front of the receiver's plane at that tap (plus a texel's slack).
+    if (d < coord.z + dot(dz_duv, offset) - 2.0 * shadow.y * length(dz_duv) - 1e-5) {
+      sum += linear_light_depth(d);
+      blockers += 1.0;
+    }
+  }
+  if (blockers == 0.0) return 1.0;
+  float z_blocker = sum / blockers;
+  // Penumbra width at the receiver, as a fraction of the map: w = size (z_r - z_b) / z_b for a
+  // point-like frustum; for an orthographic map the light's angular size times the distance.
+  float penumbra = ortho ? light_uv * (z_receiver - z_blocker)
+                         : light_uv * (z_receiver - z_blocker) / z_blocker * n / z_receiver;
+  return pcf(coord, dz_duv, clamp(penumbra, shadow.y, 0.08), rotation);
+}
+
+// How much of the light reaches p (0 shadowed .. 1 lit) on a surface of normal n. The receiver
+// is moved along its normal by about a texel (normal-offset shadows, Holbert 2011) and the
+// casters were drawn with a slope-scaled depth offset, so neither acne nor peter-panning shows.
+float shadow_visibility(vec3 p, vec3 n) {
+  if (shadow.x < 0.5) return 1.0;
+  vec3 l = light_vector(p);
+  float slope = 1.0 - abs(dot(n, l));
+  vec4 c = light_view_proj * vec4(p + n * shadow.w * (0.5 + slope), 1.0);
+  vec3 coord = c.xyz / c.w * 0.5 + 0.5;
+  // The receiver's depth gradient in shadow-map uv, from its screen-space derivatives (taken
+  // here, in uniform control flow: callers must not branch around this function).
+  vec3 dx = dFdx(coord), dy = dFdy(coord);
+  float det = dx.x * dy.y - dx.y * dy.x;
+  vec2 dz_duv = abs(det) > 1e-12 ? vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z) / det
+                                 : vec2(0.0);
+  dz_duv = clamp(dz_duv, vec2(-8.0), vec2(8.0));  // grazing receivers: bounded
+  // Beyond the map's depth range or its borders: lit (the map covers every caster).
+  if (coord.z >= 1.0 || any(lessThan(coord.xy, vec2(0.0))) || any(greaterThan(coord.xy, vec2(1.0))))
+    return 1.0;
+  float angle = 6.2831853 * interleaved_gradient_noise(gl_FragCoord.xy);
+  mat2 rotation = mat2(cos(angle), sin(angle), -sin(angle), cos(angle));
+  if (shadow.x < 1.5) return pcf(coord, dz_duv, 1.5 * shadow.y, rotation);
+  return pcss(coord, dz_duv, rotation);
+}
+
+// Lambert (1760) under the scene's light, shadowed, plus a constant ambient: outgoing radiance
+// albedo / pi * E, with the 1/pi folded into the light's intensity.
+vec3 lambert_lit(vec3 p, vec3 n, vec3 albedo) {
+  vec3 l = light_vector(p);
+  float cos_theta = max(dot(n, l), 0.0);
+  float vis = shadow_visibility(p, n);  // outside any branch: it takes derivatives
+  return albedo * (light_irradiance(p) * cos_theta * vis + vec3(light_color.a));
+}

@@ -1,0 +1,259 @@
+// Lighting and shadows on real pixels (headless EGL; llvmpipe on CI), measured in image regions
+// rather than whole images so they survive a change of Mesa or CPU (rendering.md section 0):
+// linear lighting (the cosine law), no shadow acne on a lit floor, no peter-panning at a post's
+// foot, PCSS penumbrae that widen with the distance to the blocker while PCF's stay put, the
+// depth view (key 7) separating floor, cloth and an object, and a sky that does not move with
+// the camera.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "sim/solver.hpp"
+#include "test_scenes.hpp"
+#include "vis/render/headless_renderer.hpp"
+
+namespace clothlab {
+namespace {
+
+constexpr int kW = 320, kH = 240;
+
+// sRGB byte -> linear (IEC 61966-2-1).
+double linear(int byte) {
+  const double c = byte / 255.0;
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+struct Shot {
+  std::vector<std::uint8_t> rgba;
+  double lum(int x, int y) const {  // linear, mean of the channels
+    const std::size_t k = 4 * (static_cast<std::size_t>(y) * kW + static_cast<std::size_t>(x));
+    return (linear(rgba[k]) + linear(rgba[k + 1]) + linear(rgba[k + 2])) / 3.0;
+  }
+  int byte(int x, int y, int c) const {
+    return rgba[4 * (static_cast<std::size_t>(y) * kW + static_cast<std::size_t>(x)) + c];
+  }
+};
+
+// A small cloth (the renderer needs one) hanging far off to the side at x = 3, out of the way.
+Scene side_cloth() {
+  Scene s = testing::sheet(4, 0.3, 0.05, 100.0, IntegratorKind::symplectic_euler, 1e-3);
+  s.cloths[0].origin = {3.0, 1.0, 0.0};
+  s.cloths[0].pins = {{0, 0}, {3, 0}};
+  return s;
+}
+
+MeshSpec box(Vec3d center, Vec3d half, Vec3d color = {1.0, 1.0, 1.0}) {
+  MeshSpec m;
+  m.kind = MeshKind::box;
+  m.center = center;
+  m.half_extents = half;
+  m.color = color;
+  return m;
+}
+
+class ShadowTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    renderer_ = std::make_unique<vis::HeadlessRenderer>(kW, kH);
+    solver_ = make_solver(side_cloth());
+    renderer_->set_cloth(*solver_);
+  }
+  static void TearDownTestSuite() {
+    solver_.reset();
+    renderer_.reset();
+  }
+
+  // A view of the floor around the origin from above, a directional light `from_vertical_deg`
+  // off the vertical (travelling towards +x), no sky, no ambient.
+  static vis::ViewSettings view(float from_vertical_deg, ShadowFilter filter) {
+    vis::ViewSettings v = vis::default_view(*solver_);
+    v.floor_height = 0.0f;
+    v.camera.target = {0.0f, 0.0f, 0.0f};
+    v.camera.pitch_deg = 80.0f;
+    v.camera.yaw_deg = 0.0f;
+    v.camera.distance = 3.0f;
+    v.light_type = LightType::directional;
+    const float a = glm::radians(from_vertical_deg);
+    v.light_direction = {std::sin(a), -std::cos(a), 0.0f};
+    v.light_intensity = 1.0f;
+    v.light_color = {1.0f, 1.0f, 1.0f};
+    v.light_size = 0.05f;
+    v.ambient = 0.0f;
+    v.sky = false;
+    v.shadows = filter;
+    return v;
+  }
+  static Shot shoot(const std::vector<MeshSpec>& meshes, const vis::ViewSettings& v) {
+    RenderSpec spec;
+    spec.pole.enabled = false;
+    spec.meshes = meshes;
+    renderer_->set_scene(spec, *solver_);
+    return {renderer_->render(*solver_, v)};
+  }
+  static glm::vec2 pixel(const vis::ViewSettings& v, glm::vec3 p) {
+    const glm::vec4 c = vis::view_projection(v.camera, kW, kH) * glm::vec4(p, 1.0f);
+    return {(c.x / c.w * 0.5f + 0.5f) * kW, (0.5f - c.y / c.w * 0.5f) * kH};
+  }
+
+  static std::unique_ptr<vis::HeadlessRenderer> renderer_;
+  static std::unique_ptr<Solver> solver_;
+};
+std::unique_ptr<vis::HeadlessRenderer> ShadowTest::renderer_;
+std::unique_ptr<Solver> ShadowTest::solver_;
+
+// Lighting is linear: the top of a white box lit at 60 degrees from its normal is half as bright
+// (decoded from sRGB) as lit head-on, within 1 %.
+TEST_F(ShadowTest, CosineLawInLinearLight) {
+  const std::vector<MeshSpec> top = {box({0.0, 0.2, 0.0}, {0.4, 0.2, 0.4})};
+  const vis::ViewSettings head_on = view(0.0f, ShadowFilter::none);
+  const glm::vec2 p = pixel(head_on, {0.0f, 0.4f, 0.0f});
+  const double lit0 = shoot(top, head_on).lum(int(p.x), int(p.y));
+  const double lit60 = shoot(top, view(60.0f, ShadowFilter::none)).lum(int(p.x), int(p.y));
+  EXPECT_GT(lit0, 0.2);
+  EXPECT_NEAR(lit60 / lit0, 0.5, 0.01);
+}
+
+// No acne: a floor with nothing above it looks the same with shadows as without, at a light
+// 0, 45 and 75 degrees off the vertical (every pixel of the floor region within 1/255).
+TEST_F(ShadowTest, LitFloorHasNoAcne) {
+  for (float angle : {0.0f, 45.0f, 75.0f}) {
+    for (ShadowFilter f : {ShadowFilter::pcf, ShadowFilter::pcss}) {
+      // A box far off (the light's region must hold a caster) that shadows nothing in view.
+      const std::vector<MeshSpec> away = {box({-4.0, 0.2, 3.0}, {0.2, 0.2, 0.2})};
+      const Shot plain = shoot(away, view(angle, ShadowFilter::none));
+      const Shot shadowed = shoot(away, view(angle, f));
+      long differ = 0, total = 0;
+      for (int y = kH / 4; y < 3 * kH / 4; ++y)
+        for (int x = kW / 4; x < 3 * kW / 4; ++x, ++total)
+          for (int c = 0; c < 3; ++c)
+            if (std::abs(plain.byte(x, y, c) - shadowed.byte(x, y, c)) > 1) {
+              ++differ;
+              break;
+            }
+      EXPECT_LE(double(differ) / double(total), 0.001)
+          << differ << " of " << total << " pixels differ at " << angle << " degrees, "
+          << to_string(f);
+    }
+  }
+}
+
+// How much light reaches the floor point p: the shadowed render over the same render without
+// shadows at p's pixel (the floor's texture cancels).
+double visibility(const Shot& shadowed, const Shot& plain, const vis::ViewSettings& v,
+                  glm::vec3 p) {
+  const glm::vec4 c = vis::view_projection(v.camera, kW, kH) * glm::vec4(p, 1.0f);
+  const int x = int((c.x / c.w * 0.5f + 0.5f) * kW), y = int((0.5f - c.y / c.w * 0.5f) * kH);
+  return shadowed.lum(x, y) / std::max(plain.lum(x, y), 1e-6);
+}
+
+// No peter-panning: the shadow of a post standing on the floor starts at its foot. With the
+// light 45 degrees off the vertical towards +x, floor points 2 cm and 10 cm beyond the post's
+// +x face get under 20 % of the light, points beside it and behind it (-x) all of it (> 90 %).
+TEST_F(ShadowTest, PostShadowTouchesItsFoot) {
+  const std::vector<MeshSpec> post = {box({0.0, 0.5, 0.0}, {0.05, 0.5, 0.05})};
+  vis::ViewSettings v = view(45.0f, ShadowFilter::pcf);
+  const Shot s = shoot(post, v);
+  v.shadows = ShadowFilter::none;
+  const Shot plain = shoot(post, v);
+  EXPECT_LT(visibility(s, plain, v, {0.07f, 0.0f, 0.0f}), 0.2);
+  EXPECT_LT(visibility(s, plain, v, {0.15f, 0.0f, 0.0f}), 0.2);
+  EXPECT_GT(visibility(s, plain, v, {0.0f, 0.0f, 0.4f}), 0.9);
+  EXPECT_GT(visibility(s, plain, v, {-0.1f, 0.0f, 0.0f}), 0.9);
+}
+
+// Width (m on the floor) over which the shadow of a plate's edge at x = 0 goes from 20 % to 80 %
+// of the light, measured along +x between -0.4 and 0.4 m.
+double penumbra_width(const Shot& s, const Shot& plain, const vis::ViewSettings& v) {
+  double x20 = -0.4, x80 = -0.4;
+  for (float x = -0.4f; x <= 0.4f; x += 0.002f) {  // inside the image on both sides
+    const double f = visibility(s, plain, v, {x, 0.0f, 0.0f});
+    if (f < 0.2) x20 = x;
+    if (f < 0.8) x80 = x;
+  }
+  return x80 - x20;
+}
+
+// PCSS: a plate 0.8 m above the floor casts a wider penumbra than the same plate 0.2 m above it
+// (similar triangles: the width grows with the distance to the blocker, here by more than 2x);
+// with PCF the width is the kernel's, the same at both heights (within 1 cm).
+TEST_F(ShadowTest, PcssPenumbraWidensWithDistance) {
+  // A plate covering x < 0, lit straight from above by a light 0.1 rad wide.
+  auto plate = [](double h) {
+    return std::vector<MeshSpec>{box({-1.0, h, 0.0}, {1.0, 0.01, 1.0})};
+  };
+  auto width = [&](double h, ShadowFilter f) {
+    vis::ViewSettings v = view(0.0f, f);
+    // Low, from +z, close: the line of sight passes under the plate to the floor in its
+    // shadow, and x runs across the image (about 4 mm per pixel at the edge).
+    v.camera.pitch_deg = 8.0f;
+    v.camera.yaw_deg = 0.0f;
+    v.camera.distance = 1.2f;
+    v.light_size = 0.1f;  // rad: penumbrae of 2 and 8 cm
+    const Shot s = shoot(plate(h), v);
+    v.shadows = ShadowFilter::none;
+    return penumbra_width(s, shoot(plate(h), v), v);
+  };
+  const double low = width(0.2, ShadowFilter::pcss), high = width(0.8, ShadowFilter::pcss);
+  EXPECT_GT(high, 2.0 * low) << "PCSS penumbra " << low << " m at 0.2 m, " << high << " m at 0.8 m";
+  EXPECT_GT(low, 0.0);
+  const double pcf_low = width(0.2, ShadowFilter::pcf), pcf_high = width(0.8, ShadowFilter::pcf);
+  EXPECT_NEAR(pcf_low, pcf_high, 0.01);
+  EXPECT_LT(pcf_high, high);
+}
+
+// Key 7: the floor, the cloth and a box have separable depths in the light's depth map: the
+// depth view's pixels where each lands differ clearly in colour.
+TEST_F(ShadowTest, DepthViewSeparatesFloorClothAndObject) {
+  const std::vector<MeshSpec> tall = {box({2.0, 0.6, 0.0}, {0.2, 0.6, 0.2})};
+  vis::ViewSettings v = view(20.0f, ShadowFilter::pcf);
+  v.mode = vis::DisplayMode::light_depth;
+  const Shot s = shoot(tall, v);
+  const vis::LightRig& light = renderer_->light();
+  auto colour_at = [&](glm::vec3 p) {
+    const glm::vec4 c = light.view_proj * glm::vec4(p, 1.0f);
+    const glm::vec2 uv = glm::vec2(c.x, c.y) / c.w * 0.5f + 0.5f;
+    const float side = 0.95f * std::min(kW, kH);
+    const float px = 0.5f * (kW - side) + uv.x * side, py = kH - (0.5f * (kH - side) + uv.y * side);
+    return std::array<int, 3>{s.byte(int(px), int(py), 0), s.byte(int(px), int(py), 1),
+                              s.byte(int(px), int(py), 2)};
+  };
+  const Vec3d cloth = solver_->position(solver_->vertex_index({0, 1, 1}));
+  const auto floor = colour_at({2.6f, 0.0f, 0.5f});
+  const auto top = colour_at({2.0f, 1.2f, 0.0f});
+  const auto sheet = colour_at({float(cloth[0]), float(cloth[1]), float(cloth[2])});
+  auto distance = [](const std::array<int, 3>& a, const std::array<int, 3>& b) {
+    return std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]);
+  };
+  EXPECT_GT(distance(floor, top), 40);
+  EXPECT_GT(distance(floor, sheet), 40);
+  EXPECT_GT(distance(top, sheet), 20);
+}
+
+// The sky is at infinity: moving the camera without turning it leaves the sky's pixels as they
+// were (within 1/255), and it is brighter towards the sun than away from it.
+TEST_F(ShadowTest, SkyStaysPutWhenTheCameraMoves) {
+  vis::ViewSettings v = view(40.0f, ShadowFilter::none);
+  v.sky = true;
+  v.camera.pitch_deg = -20.0f;  // looking up: the top half is sky
+  v.camera.yaw_deg = 90.0f;     // the eye on +x looking towards -x, where the light comes from
+  v.camera.target = {0.0f, 2.0f, 0.0f};
+  const Shot a = shoot({}, v);
+  v.camera.target += glm::vec3(0.0f, 0.5f, 0.3f);
+  const Shot b = shoot({}, v);
+  int worst = 0;
+  for (int y = 0; y < kH / 3; ++y)
+    for (int x = 0; x < kW; ++x)
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(a.byte(x, y, c) - b.byte(x, y, c)));
+  EXPECT_LE(worst, 1);
+  // Towards the light (the sun) against the opposite direction.
+  v.camera.yaw_deg = -90.0f;
+  const Shot away = shoot({}, v);
+  EXPECT_GT(a.lum(kW / 2, kH / 6), 1.5 * away.lum(kW / 2, kH / 6));
+}
+
+}  // namespace
+}  // namespace clothlab

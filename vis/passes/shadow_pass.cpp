@@ -1,0 +1,93 @@
+#include "vis/passes/shadow_pass.hpp"
+
+#include "vis/gl/program.hpp"
+
+namespace clothlab::vis {
+namespace {
+
+// Explicit uniform locations in shaders/shadow_depth.vert.
+constexpr GLint kModel = 0, kFloor = 1, kFloorAt = 2;
+// Slope-scaled depth offset for the casters (glPolygonOffset(factor, units)): the receiver's
+// normal offset handles the rest of the acne.
+constexpr float kOffsetFactor = 1.5f, kOffsetUnits = 2.0f;
+
+}  // namespace
+
+ShadowPass::Samplers::~Samplers() {
+  if (compare) glDeleteSamplers(1, &compare);
+  if (plain) glDeleteSamplers(1, &plain);
+}
+
+ShadowPass::ShadowPass()
+    : program_(build_program({"shadow_depth.vert", "shadow_depth.frag"})),
+      fbo_(make_framebuffer()),
+      empty_vao_(make_vertex_array()) {
+  glCreateSamplers(1, &samplers_.compare);
+  glCreateSamplers(1, &samplers_.plain);
+  // Outside the map: depth 1, so the compare says lit.
+  const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  for (GLuint s : {samplers_.compare, samplers_.plain}) {
+    glSamplerParameteri(s, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glSamplerParameteri(s, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    glSamplerParameterfv(s, GL_TEXTURE_BORDER_COLOR, border);
+  }
+  glSamplerParameteri(samplers_.compare, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glSamplerParameteri(samplers_.compare, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(samplers_.compare, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glSamplerParameteri(samplers_.compare, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glSamplerParameteri(samplers_.plain, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glSamplerParameteri(samplers_.plain, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glObjectLabel(GL_FRAMEBUFFER, fbo_.get(), -1, "shadow map");
+}
+
+void ShadowPass::begin(int size) {
+  if (size != size_) {
+    depth_ = make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(depth_.get(), 1, GL_DEPTH_COMPONENT32F, size, size);
+    glNamedFramebufferTexture(fbo_.get(), GL_DEPTH_ATTACHMENT, depth_.get(), 0);
+    glNamedFramebufferDrawBuffer(fbo_.get(), GL_NONE);
+    glNamedFramebufferReadBuffer(fbo_.get(), GL_NONE);
+    glObjectLabel(GL_TEXTURE, depth_.get(), -1, "shadow depth");
+    size_ = size;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
+  glViewport(0, 0, size_, size_);
+  const float far = 1.0f;
+  glClearBufferfv(GL_DEPTH, 0, &far);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_MULTISAMPLE);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(kOffsetFactor, kOffsetUnits);
+  glUseProgram(program_.get());
+}
+
+void ShadowPass::draw_triangles(GLuint vao, GLsizei index_count, const glm::mat4& model) {
+  glProgramUniformMatrix4fv(program_.get(), kModel, 1, GL_FALSE, &model[0][0]);
+  glProgramUniform1i(program_.get(), kFloor, 0);
+  glBindVertexArray(vao);
+  glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, nullptr);
+}
+
+void ShadowPass::draw_floor(float height, float half_size) {
+  glProgramUniform1i(program_.get(), kFloor, 1);
+  glProgramUniform2f(program_.get(), kFloorAt, height, half_size);
+  glBindVertexArray(empty_vao_.get());
+  glDrawArrays(GL_TRIANGLES, 0, 6);
+}
+
+void ShadowPass::end() {
+  glBindVertexArray(0);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glEnable(GL_MULTISAMPLE);
+}
+
+void ShadowPass::bind_textures() const {
+  glBindTextureUnit(6, depth_.get());
+  glBindTextureUnit(7, depth_.get());
+  glBindSampler(6, samplers_.compare);
+  glBindSampler(7, samplers_.plain);
+}
+
+}  // namespace clothlab::vis

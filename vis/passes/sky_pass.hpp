@@ -1,0 +1,35 @@
+// The sky behind everything (rendering.md section 7): Preetham's daylight model (vis/sky/) baked
+// once into a cube map for the sun's direction and the turbidity, drawn as a full-screen
+// triangle at the far plane where nothing else was drawn. Baked again only when the sun or the
+// turbidity changes.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "vis/gl/objects.hpp"
+
+namespace clothlab::vis {
+
+class SkyPass {
+ public:
+  explicit SkyPass(int face_size = 128);
+
+  // Draws the sky for the sun towards `sun` (need not be normalised) into the bound
+  // framebuffer's empty pixels: call after the opaque geometry, with its depth buffer.
+  void draw(glm::vec3 sun, float turbidity, const glm::mat4& view_proj, glm::vec3 eye);
+
+  int bakes() const { return bakes_; }  // how often the cube map was baked (tests)
+
+ private:
+  void bake(glm::vec3 sun, float turbidity);
+
+  int face_size_;
+  Program program_;
+  Texture cube_;
+  VertexArray empty_vao_;
+  glm::vec3 baked_sun_{0.0f};
+  float baked_turbidity_ = -1.0f;
+  int bakes_ = 0;
+};
+
+}  // namespace clothlab::vis

@@ -1,0 +1,30 @@
+// Per-vertex tangent frame of a grid cloth for normal mapping, recomputed every frame from the
+// current positions and normals (rendering.md section 3). Plain arrays, no solver dependency.
+#pragma once
+
+namespace clothlab {
+
+// Grid cloth of nu x nv vertices, vertex (i, j) at index i + j * nu with UV
+// (i / (nu - 1), j / (nv - 1)); `positions` and `normals` hold 3 floats per vertex, the normals
+// unit length (as Solver::copy_normals gives them; they are renormalised here anyway). Writes 4
+// floats per vertex to `tangents`:
+//   xyz: T = normalize(dP/du - N (N . dP/du)), with dP/du by central differences along i
+//        (one-sided on the first and last column);
+//   w:   the handedness sign((dP/du x dP/dv) . N), +1 or -1 (+1 when that product is 0), so the
+//        bitangent is B = w * (N x T) and points along dP/dv; det[T, B, N] = w.
+// For a GridCloth, whose triangles (a, b, c) wind so that their normal is dP/du x dP/dv, w = +1
+// unless the normals are flipped or the UVs mirrored.
+// Degenerate cases, where dP/du has no part orthogonal to N (collapsed column, nu == 1, dP/du
+// along N): T = normalize(dP/dv x N), the direction a right-handed frame with B along dP/dv
+// would have; if that is degenerate too, a fixed function of N alone (Duff et al., "Building an
+// orthonormal basis, revisited", JCGT 2017). A zero normal gives T = (1, 0, 0), w = +1.
+// Allocation-free; each output depends only on the inputs, so rows may run in parallel.
+// Does nothing when nu or nv < 1.
+void compute_grid_tangents(int nu, int nv, const float* positions, const float* normals,
+                           float* tangents);
+
+// One row j of compute_grid_tangents (for callers that split rows between threads).
+void compute_grid_tangent_row(int nu, int nv, int j, const float* positions, const float* normals,
+                              float* tangents);
+
+}  // namespace clothlab
