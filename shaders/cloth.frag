@@ -1,6 +1,7 @@
 #version 450 core
 #include "frame.glsl"
 #include "lighting.glsl"
+#include "brdf.glsl"
 
 // Colour by a scalar through a colour map (ViewSettings::color), or
 // 2: world-space normal as colour (n * 0.5 + 0.5); 3: Lambert with the fabric texture.
@@ -9,8 +10,14 @@ layout(location = 1) uniform float u_texture_repeat;  // fabric repeats per clot
 layout(location = 2) uniform int u_color_by;   // 1: colour by the scalar through the map
 layout(location = 3) uniform vec2 u_range;      // the scalar's min and max
 layout(location = 4) uniform int u_shaded;      // 1: the mapped colour lit as an albedo
+// Mode 4, the cloth's look ([render.cloth]): x Oren-Nayar roughness, y sheen strength, z sheen
+// alpha; the metal threads' F0 (linear, 0 when there are none) and their glint lights.
+layout(location = 5) uniform vec3 u_look;
+layout(location = 6) uniform vec3 u_metal_f0;
+layout(location = 7) uniform vec3 u_glint_lights[2];  // positions (m), specular only
 layout(binding = 0) uniform sampler2D u_fabric;
 layout(binding = 1) uniform sampler2D u_lut;  // 256 x 1 colour map, sRGB
+layout(binding = 2) uniform sampler2D u_threads;  // r: metal thread mask, g: weft on top (linear)
 
 const vec3 kNanColor = vec3(1.0, 0.0, 1.0);  // magenta: no finite value
 
@@ -18,7 +25,46 @@ in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
 in float v_scalar;
+in vec4 v_tangent;
 out vec4 color;
+
+// Key 4: the layered cloth BRDF (Oren-Nayar base under a Charlie sheen, shaders/brdf.glsl) and,
+// where the thread mask says so, gold or silver threads: anisotropic GGX with its long axis along
+// the thread (the weft runs along the tangent, the warp along the bitangent). Radiance is
+// pi * f * E * cos, so a Lambert surface gives mode 3's albedo * E * cos; two glint lights near
+// the camera add the metal lobe only.
+vec3 cloth_brdf_lit(vec3 n, vec3 albedo) {
+  vec3 v = normalize(eye.xyz - v_world);
+  vec3 l = light_vector(v_world);
+  float vis = shadow_visibility(v_world, n);  // outside branches: it takes derivatives
+  vec3 t = normalize(v_tangent.xyz - n * dot(n, v_tangent.xyz));
+  float w = v_tangent.w < 0.0 ? -1.0 : 1.0;
+  vec3 b = w * cross(n, t);
+  if (!gl_FrontFacing) b = -b;  // n was turned to the viewer: keep the frame right-handed
+  vec2 thread = texture(u_threads, v_uv * u_texture_repeat).rg;
+  float metal = dot(u_metal_f0, vec3(1.0)) > 0.0 ? thread.r : 0.0;
+  vec3 along = thread.g > 0.5 ? t : b;  // the thread on top here
+  vec3 across = thread.g > 0.5 ? b : -t;
+  float sigma = on_sigma_from_roughness(u_look.x);
+  vec3 sheen = sqrt(albedo) * u_look.y;
+  float nl = dot(n, l);
+  vec3 radiance = vec3(0.0);
+  if (nl > 0.0) {
+    vec3 f = brdf_cloth(n, v, l, albedo, sigma, sheen, u_look.z);
+    vec3 fm = brdf_metal_aniso(u_metal_f0, 0.35, 0.08, n, along, across, v, l);
+    radiance = kPi * mix(f, fm, metal) * light_irradiance(v_world) * nl * vis;
+  }
+  for (int i = 0; i < 2; ++i) {
+    vec3 to_glint = u_glint_lights[i] - v_world;
+    vec3 gl = normalize(to_glint);
+    float gnl = dot(n, gl);
+    if (gnl > 0.0 && metal > 0.0) {
+      vec3 fm = brdf_metal_aniso(u_metal_f0, 0.35, 0.08, n, along, across, v, gl);
+      radiance += kPi * metal * fm * 0.25 * light_irradiance(v_world) * gnl;
+    }
+  }
+  return radiance + albedo * light_color.a;
+}
 
 void main() {
   // Cloth has two sides: shade the side we see, with the normal turned towards us.
@@ -37,5 +83,9 @@ void main() {
     return;
   }
   vec3 albedo = texture(u_fabric, v_uv * u_texture_repeat).rgb;
+  if (u_mode == 4) {
+    color = vec4(cloth_brdf_lit(n, albedo), 1.0);
+    return;
+  }
   color = vec4(lambert_lit(v_world, n, albedo), 1.0);
 }

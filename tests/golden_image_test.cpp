@@ -131,6 +131,49 @@ TEST_F(GoldenImage, ShadowFilters) {
   }
 }
 
+TEST_F(GoldenImage, ClothBrdfMode4) {
+  vis::ViewSettings view = vis::default_view(*solver_);
+  view.mode = vis::DisplayMode::cloth_brdf;
+  check_golden(*renderer_, *solver_, view, "mode4");
+}
+
+// Mode 4's terms where they show: gold threads add their colour (green rises on the red cloth
+// where silver or none would not add it), and the sheen brightens the cloth seen at grazing
+// angles more than where it faces the camera (the rim over centre ratio rises).
+TEST_F(GoldenImage, ClothBrdfThreadsAndSheen) {
+  vis::ViewSettings view = vis::default_view(*solver_);
+  view.mode = vis::DisplayMode::cloth_brdf;
+  view.shadows = ShadowFilter::none;
+  auto mean = [&](const vis::ViewSettings& v, int channel, int x0, int x1, int y0, int y1) {
+    const std::vector<std::uint8_t> img = renderer_->render(*solver_, v);
+    double sum = 0.0;
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) sum += img[4 * (std::size_t(y) * kWidth + x) + channel];
+    return sum / ((x1 - x0) * (y1 - y0));
+  };
+  // The cloth's middle (it fills the centre of the default view).
+  const int x0 = kWidth / 2 - 30, x1 = kWidth / 2 + 30, y0 = kHeight / 2 - 30,
+            y1 = kHeight / 2 + 30;
+  view.look.threads = ThreadMetal::none;
+  const double plain_green = mean(view, 1, x0, x1, y0, y1);
+  view.look.threads = ThreadMetal::gold;
+  view.look.thread_fraction = 0.5;
+  const double gold_green = mean(view, 1, x0, x1, y0, y1);
+  EXPECT_GT(gold_green, plain_green + 3.0) << plain_green << " -> " << gold_green;
+  // Sheen: seen almost edge-on (yaw 80 degrees) the cloth brightens more than head-on.
+  view.look.threads = ThreadMetal::none;
+  auto brightness = [&](float sheen, float yaw) {
+    vis::ViewSettings v = view;
+    v.look.sheen = sheen;
+    v.camera.yaw_deg = yaw;
+    return mean(v, 0, x0 + 20, x1 - 20, y0, y1);
+  };
+  const double gain_grazing = brightness(1.0f, 78.0f) / brightness(0.0f, 78.0f);
+  const double gain_facing = brightness(1.0f, 0.0f) / brightness(0.0f, 0.0f);
+  EXPECT_GT(gain_grazing, gain_facing)
+      << "sheen gain " << gain_facing << " facing, " << gain_grazing << " grazing";
+}
+
 TEST_F(GoldenImage, LightDepthView) {
   vis::ViewSettings view = vis::default_view(*solver_);
   view.mode = vis::DisplayMode::light_depth;

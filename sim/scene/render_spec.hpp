@@ -57,7 +57,7 @@ struct ClothLookSpec {
   double sheen = 1.0;            // sheen strength, 0..1 (sheen colour = sqrt(albedo) * sheen)
   double sheen_roughness = 0.5;  // Charlie alpha, 0.07..1
   ThreadMetal threads = ThreadMetal::gold;
-  double thread_fraction = 0.25;  // of weft threads that are metallic
+  double thread_fraction = 0.125;  // of weft threads that are metallic
   double opacity = 0.85;          // mode 5: thread coverage c (1 - light let through the gaps)
 };
 

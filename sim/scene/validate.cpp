@@ -201,10 +201,10 @@ class Validator {
     for (std::size_t k = 0; k < 3; ++k) within(key + "[" + std::to_string(k) + "]", c[k], 0.0, hi);
   }
   void check_render(const RenderSpec& r) const {
-    // Modes 4-6 (cloth BRDF, translucency, weave) are the realistic-rendering work in progress.
-    if (r.mode < 1 || r.mode > 7 || (r.mode >= 4 && r.mode <= 6))
-      fail("render.mode", "must be a display mode 1, 2, 3 or 7 (got " + std::to_string(r.mode) +
-                              "; modes 4-6 are not available yet)");
+    // Modes 5 and 6 (translucency, weave) are the realistic-rendering work in progress.
+    if (r.mode < 1 || r.mode > 7 || r.mode == 5 || r.mode == 6)
+      fail("render.mode", "must be a display mode 1, 2, 3, 4 or 7 (got " + std::to_string(r.mode) +
+                              "; modes 5 and 6 are not available yet)");
     if (r.shadow_map_size < 256 || r.shadow_map_size > 8192)
       fail("render.shadow_map_size",
            "must be between 256 and 8192 texels (got " + std::to_string(r.shadow_map_size) + ")");

@@ -11,8 +11,10 @@
 #include "vis/passes/shadow_pass.hpp"
 #include "vis/passes/sky_pass.hpp"
 #include "vis/render/scenery.hpp"
+#include "vis/textures/cloth_tangents.hpp"
 #include "vis/textures/fabric_texture.hpp"
 #include "vis/textures/floor_texture.hpp"
+#include "vis/textures/weave_maps.hpp"
 
 namespace clothlab::vis {
 namespace {
@@ -20,7 +22,8 @@ namespace {
 // Explicit uniform locations of shaders/floor.vert and shaders/cloth.frag (no lookups per frame).
 constexpr GLint kFloorHalfSize = 0, kFloorTileSize = 1;
 constexpr GLint kClothMode = 0, kClothTextureRepeat = 1, kClothColorBy = 2, kClothRange = 3,
-                kClothShaded = 4;
+                kClothShaded = 4, kClothLook = 5, kClothMetalF0 = 6, kClothGlints = 7;
+constexpr int kThreadTextureSize = 256;  // as the fabric albedo, so the weaves line up
 
 // std140 layout of the Frame block in shaders/frame.glsl.
 struct FrameBlock {
@@ -109,6 +112,10 @@ void Renderer::set_cloth(Solver& solver) {
   dynamic_vbo_ = make_buffer();
   static_vbo_ = make_buffer();
   scalar_vbo_ = make_buffer();
+  tangent_vbo_ = make_buffer();
+  grids_ = solver.cloths();
+  tangents_.assign(4 * n, 0.0f);
+  tangents_stale_ = true;
   triangle_ebo_ = make_buffer();
   line_ebo_ = make_buffer();
   auto bytes = [](const auto& v) {
@@ -138,6 +145,11 @@ void Renderer::set_cloth(Solver& solver) {
   }
   glVertexArrayVertexBuffer(cloth_vao_.get(), 4, scalar_vbo_.get(), 0, sizeof(float));
   attribute(cloth_vao_.get(), 4, 4, 1);
+  glNamedBufferStorage(tangent_vbo_.get(),
+                       static_cast<GLsizeiptr>(std::max<std::size_t>(1, 4 * n) * sizeof(float)),
+                       nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glVertexArrayVertexBuffer(cloth_vao_.get(), 5, tangent_vbo_.get(), 0, 4 * sizeof(float));
+  attribute(cloth_vao_.get(), 5, 5, 4);
   glVertexArrayElementBuffer(cloth_vao_.get(), triangle_ebo_.get());
   glVertexArrayElementBuffer(line_vao_.get(), line_ebo_.get());
   staging_.resize(6 * n);
@@ -157,9 +169,53 @@ void Renderer::update_cloth(Solver& solver) {
     lo = hi = glm::vec3(0.0f);
   shadow_centre_ = 0.5f * (lo + hi);
   shadow_radius_ = std::max(0.1f, 0.5f * glm::length(hi - lo));
+  tangents_stale_ = true;
   solver.copy_normals(staging_.data() + 3 * vertices_);
   glNamedBufferSubData(dynamic_vbo_.get(), 0,
                        static_cast<GLsizeiptr>(staging_.size() * sizeof(float)), staging_.data());
+}
+
+// The tangent frame of every grid cloth from the positions and normals of the last
+// update_cloth(), only when a mode that needs it is drawn.
+void Renderer::update_tangents() {
+  if (!tangents_stale_ || vertices_ == 0) return;
+  const float* positions = staging_.data();
+  const float* normals = staging_.data() + 3 * vertices_;
+  for (const ClothRange& c : grids_) {
+    const std::size_t o = static_cast<std::size_t>(c.offset);
+    compute_grid_tangents(c.nu, c.nv, positions + 3 * o, normals + 3 * o, tangents_.data() + 4 * o);
+  }
+  glNamedBufferSubData(tangent_vbo_.get(), 0,
+                       static_cast<GLsizeiptr>(tangents_.size() * sizeof(float)), tangents_.data());
+  tangents_stale_ = false;
+}
+
+// The thread texture for a metal fraction: r the mask of metal threads, g where the weft is on
+// top (vis/textures/weave_maps.hpp), both linear, mipmapped like the fabric.
+void Renderer::set_thread_fraction(double fraction) {
+  if (fraction == thread_fraction_ && threads_) return;
+  const float limit = max_metal_fraction(kThreadTextureSize);
+  const Image mask = make_thread_mask(kThreadTextureSize, std::min(float(fraction), limit));
+  const Image direction = make_thread_direction(kThreadTextureSize);
+  std::vector<std::uint8_t> rg(2 * static_cast<std::size_t>(kThreadTextureSize) *
+                               kThreadTextureSize);
+  for (std::size_t i = 0; i < rg.size() / 2; ++i) {
+    rg[2 * i] = mask.rgba[4 * i];
+    rg[2 * i + 1] = direction.rgba[4 * i];
+  }
+  threads_ = make_texture(GL_TEXTURE_2D);
+  const int levels = 1 + static_cast<int>(std::log2(kThreadTextureSize));
+  glTextureStorage2D(threads_.get(), levels, GL_RG8, kThreadTextureSize, kThreadTextureSize);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(threads_.get(), 0, 0, 0, kThreadTextureSize, kThreadTextureSize, GL_RG,
+                      GL_UNSIGNED_BYTE, rg.data());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glGenerateTextureMipmap(threads_.get());
+  glTextureParameteri(threads_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(threads_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameterf(threads_.get(), GL_TEXTURE_MAX_ANISOTROPY, 8.0f);
+  glObjectLabel(GL_TEXTURE, threads_.get(), -1, "thread mask and direction");
+  thread_fraction_ = fraction;
 }
 
 void Renderer::set_scalars(const std::vector<float>& values, ScalarRange range) {
@@ -260,6 +316,26 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
     glProgramUniform1i(cloth_program_.get(), kClothShaded, view.color.shaded ? 1 : 0);
     glBindTextureUnit(0, fabric_.get());
     glBindTextureUnit(1, colormap_texture(view.color.map));
+    if (view.mode == DisplayMode::cloth_brdf) {
+      update_tangents();
+      set_thread_fraction(view.look.thread_fraction);
+      glBindTextureUnit(2, threads_.get());
+      const ClothLookSpec& look = view.look;
+      glProgramUniform3f(cloth_program_.get(), kClothLook, float(look.roughness), float(look.sheen),
+                         float(look.sheen_roughness));
+      const glm::vec3 f0 = look.threads == ThreadMetal::gold     ? glm::vec3(1.00f, 0.71f, 0.29f)
+                           : look.threads == ThreadMetal::silver ? glm::vec3(0.95f, 0.93f, 0.88f)
+                                                                 : glm::vec3(0.0f);
+      glProgramUniform3f(cloth_program_.get(), kClothMetalF0, f0.x, f0.y, f0.z);
+      // Two glint lights beside the camera (specular only), so the threads sparkle from where
+      // one looks.
+      const glm::mat4 v = view.camera.view();
+      const glm::vec3 right(v[0][0], v[1][0], v[2][0]), up(v[0][1], v[1][1], v[2][1]);
+      const glm::vec3 eye = view.camera.eye(), d = glm::vec3(0.3f * view.camera.distance);
+      const glm::vec3 glints[2] = {eye + d * (0.6f * right + 0.4f * up),
+                                   eye + d * (-0.7f * right + 0.2f * up)};
+      glProgramUniform3fv(cloth_program_.get(), kClothGlints, 2, &glints[0][0]);
+    }
     glBindVertexArray(cloth_vao_.get());
     glDrawElements(GL_TRIANGLES, triangle_indices_, GL_UNSIGNED_INT, nullptr);
   }

@@ -8,6 +8,7 @@
 
 #include <memory>
 
+#include "sim/model/model.hpp"
 #include "vis/gl/objects.hpp"
 #include "vis/render/light_rig.hpp"
 #include "vis/render/view_settings.hpp"
@@ -56,6 +57,8 @@ class Renderer {
 
  private:
   void draw_shadow_map(const ViewSettings& view);
+  void update_tangents();
+  void set_thread_fraction(double fraction);
 
   Program cloth_program_, floor_program_, springs_program_, depth_view_program_;
   std::unique_ptr<ShadowPass> shadow_;  // only while shadows or the depth view are on
@@ -71,7 +74,13 @@ class Renderer {
   // One vertex buffer for what changes every frame (positions, then normals) and one for what
   // does not (UVs, then rest positions); triangles and spring lines index the same vertices.
   Buffer dynamic_vbo_, static_vbo_, triangle_ebo_, line_ebo_;
-  Buffer scalar_vbo_;  // the colour-by scalar per vertex
+  Buffer scalar_vbo_;   // the colour-by scalar per vertex
+  Buffer tangent_vbo_;  // modes 4-6: per-vertex tangent frame (xyz, handedness)
+  bool tangents_stale_ = true;
+  std::vector<float> tangents_;
+  std::vector<ClothRange> grids_;  // the cloths' grids, for the tangents
+  Texture threads_;                // r: metal thread mask, g: weft on top
+  double thread_fraction_ = -1.0;
   ScalarRange scalar_range_;
   std::array<Texture, kAllColorMaps.size()> colormaps_;
   VertexArray cloth_vao_, line_vao_, empty_vao_;

@@ -67,7 +67,7 @@ ViewSettings default_view(const Solver& solver) {
   const float d = glm::length(s.light_position - centre);
   s.light_intensity = 1.2f * d * d;
   s.floor_half_size = std::max(30.0f, 15.0f * radius);  // out to near the horizon
-  s.floor_tile_size = std::max(2.0f, 1.5f * radius);  // 4 x 4 stone tiles per repeat
+  s.floor_tile_size = std::max(2.0f, 1.5f * radius);    // 4 x 4 stone tiles per repeat
   return s;
 }
 
@@ -87,6 +87,7 @@ ViewSettings scene_view(const Scene& scene, const Solver& solver) {
   s.shadow_map_size = r.shadow_map_size;
   s.sky = r.sky.enabled;
   s.sky_turbidity = static_cast<float>(r.sky.turbidity);
+  s.look = r.cloth;
   const LightSpec& l = r.light;
   s.light_type = l.type;
   s.light_color = to_glm(l.color);

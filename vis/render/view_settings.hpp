@@ -95,6 +95,7 @@ struct ViewSettings {
   int shadow_map_size = 2048;
   bool sky = true;
   float sky_turbidity = 3.0f;
+  ClothLookSpec look;  // mode 4-6 material ([render.cloth])
   float ambient = 0.05f;
   float strain_range = 0.02f;                 // springs colour map saturates at +-2 % strain
   float floor_height = 0.0f;                  // m

@@ -23,6 +23,11 @@ constexpr KeyBinding kBindings[] = {
      {GLFW_KEY_2, GLFW_KEY_KP_2},
      false},
     {Action::mode_lambert, "3", "Lambert + cloth texture", {GLFW_KEY_3, GLFW_KEY_KP_3}, false},
+    {Action::mode_cloth_brdf,
+     "4",
+     "cloth BRDF: Oren-Nayar + sheen, gold or silver threads",
+     {GLFW_KEY_4, GLFW_KEY_KP_4},
+     false},
     {Action::mode_light_depth,
      "7",
      "the light's depth map (the shadow map), coloured near to far",
@@ -108,6 +113,9 @@ void select_mode(ViewSettings& view, DisplayMode& last_shaded, Action action) {
       break;
     case Action::mode_lambert:
       view.mode = DisplayMode::lambert;
+      break;
+    case Action::mode_cloth_brdf:
+      view.mode = DisplayMode::cloth_brdf;
       break;
     case Action::mode_light_depth:
       view.mode = DisplayMode::light_depth;

@@ -14,6 +14,7 @@ enum class Action {
   mode_springs,          // 1: springs <-> the previous shaded mode
   mode_normals,          // 2
   mode_lambert,          // 3
+  mode_cloth_brdf,       // 4
   mode_light_depth,      // 7
   probe_force,           // 8: probe the force under the cursor (again: off)
   probe_velocity,        // 9
