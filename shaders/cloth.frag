@@ -15,6 +15,9 @@ layout(location = 4) uniform int u_shaded;      // 1: the mapped colour lit as a
 layout(location = 5) uniform vec3 u_look;
 layout(location = 6) uniform vec3 u_metal_f0;
 layout(location = 7) uniform vec3 u_glint_lights[2];  // positions (m), specular only
+layout(location = 9) uniform vec3 u_flat_albedo;      // sRGB, used when u_use_flat = 1
+layout(location = 10) uniform int u_use_flat;         // a plain colour instead of the weave
+layout(location = 11) uniform vec2 u_translucency;    // mode 5: coverage c, transmission tau
 layout(binding = 0) uniform sampler2D u_fabric;
 layout(binding = 1) uniform sampler2D u_lut;  // 256 x 1 colour map, sRGB
 layout(binding = 2) uniform sampler2D u_threads;  // r: metal thread mask, g: weft on top (linear)
@@ -36,7 +39,7 @@ out vec4 color;
 vec3 cloth_brdf_lit(vec3 n, vec3 albedo) {
   vec3 v = normalize(eye.xyz - v_world);
   vec3 l = light_vector(v_world);
-  float vis = shadow_visibility(v_world, n);  // outside branches: it takes derivatives
+  vec3 vis = shadow_visibility(v_world, n);  // outside branches: it takes derivatives
   vec3 t = normalize(v_tangent.xyz - n * dot(n, v_tangent.xyz));
   float w = v_tangent.w < 0.0 ? -1.0 : 1.0;
   vec3 b = w * cross(n, t);
@@ -66,6 +69,19 @@ vec3 cloth_brdf_lit(vec3 n, vec3 albedo) {
   return radiance + albedo * light_color.a;
 }
 
+// Key 5: translucent cloth. Light on the side we see is reflected (Lambert); light from behind
+// comes through, tinted by the yarn (diffuse transmission tau * albedo, the glow of a back-lit
+// cloth, as KHR_materials_translucency); the threads cover a fraction c of the surface, which is
+// the alpha the cloth is blended with, so what lies behind shows through the gaps.
+vec4 translucent_lit(vec3 n, vec3 albedo) {
+  vec3 l = light_vector(v_world);
+  vec3 vis = shadow_visibility(v_world, n);  // outside branches: it takes derivatives
+  float nl = dot(n, l);
+  vec3 e = light_irradiance(v_world) * abs(nl) * vis;
+  vec3 lit = nl > 0.0 ? albedo * e : u_translucency.y * albedo * e;
+  return vec4(lit + albedo * light_color.a, u_translucency.x);
+}
+
 void main() {
   // Cloth has two sides: shade the side we see, with the normal turned towards us.
   vec3 n = normalize(v_normal);
@@ -82,7 +98,12 @@ void main() {
     color = vec4(srgb_to_linear(n * 0.5 + 0.5), 1.0);
     return;
   }
-  vec3 albedo = texture(u_fabric, v_uv * u_texture_repeat).rgb;
+  vec3 albedo = u_use_flat == 1 ? srgb_to_linear(u_flat_albedo)
+                                : texture(u_fabric, v_uv * u_texture_repeat).rgb;
+  if (u_mode == 5) {
+    color = translucent_lit(n, albedo);
+    return;
+  }
   if (u_mode == 4) {
     color = vec4(cloth_brdf_lit(n, albedo), 1.0);
     return;

@@ -11,7 +11,8 @@ layout(std140, binding = 0) uniform Frame {
   vec4 params;           // x: strain range of the colour map, y: floor height (m)
   vec4 shadow;           // x: filter (0 none, 1 PCF, 2 PCSS), y: 1 / map size, z: light size
                          // in shadow-map uv at unit distance, w: normal offset (m)
-  vec4 shadow_range;     // x: near, y: far (m, spot: perspective), z: 1 = orthographic
+  vec4 shadow_range;     // x: near, y: far (m, spot: perspective), z: 1 = orthographic,
+                         // w: 1 = translucent casters (coloured shadows, mode 5)
 };
 
 const float kPi = 3.14159265358979;

@@ -5,6 +5,10 @@
 // comparing one for PCF and a plain one for the blocker search (rendering.md section 0).
 layout(binding = 6) uniform sampler2DShadow u_shadow_compare;
 layout(binding = 7) uniform sampler2D u_shadow_depth;
+// With a translucent cloth (mode 5, shadow_range.w = 1): the opaque casters' own depth map and the
+// product of the translucent layers' transmittances (rendering.md section 5).
+layout(binding = 8) uniform sampler2DShadow u_shadow_opaque;
+layout(binding = 9) uniform sampler2D u_shadow_colour;
 
 // Interleaved gradient noise (Jimenez 2014, "Next Generation Post Processing in Call of Duty:
 // Advanced Warfare"): a per-pixel rotation for the filter kernels, so banding becomes fine noise.
@@ -33,12 +37,23 @@ float linear_light_depth(float d) {
 // each tap a hardware 2x2 comparison (Reeves, Salesin & Cook 1987) against the receiver's depth
 // carried along its own plane to the tap (receiver-plane depth bias, Isidoro 2006), so wide
 // kernels on sloped receivers do not shadow the receiver itself.
-float pcf(vec3 coord, vec2 dz_duv, float radius, mat2 rotation) {
-  float lit = 0.0;
+// With translucent casters each tap is (z <= D_opaque) ? ((z <= D_all) ? 1 : C) : 0: an opaque
+// caster blocks fully, a cloth in front tints by its transmittance C, and a receiver between the
+// light and the cloth stays untinted.
+vec3 pcf(vec3 coord, vec2 dz_duv, float radius, mat2 rotation) {
+  vec3 lit = vec3(0.0);
+  bool coloured = shadow_range.w > 0.5;
   for (int i = 0; i < 16; ++i) {
     vec2 offset = rotation * kPoisson[i] * radius;
-    float z = coord.z + dot(dz_duv, offset);
-    lit += texture(u_shadow_compare, vec3(coord.xy + offset, z));
+    vec3 tap = vec3(coord.xy + offset, coord.z + dot(dz_duv, offset));
+    float all_casters = texture(u_shadow_compare, tap);
+    if (coloured) {
+      float opaque = texture(u_shadow_opaque, tap);
+      vec3 c = texture(u_shadow_colour, tap.xy).rgb;
+      lit += opaque * (all_casters + (1.0 - all_casters) * c);
+    } else {
+      lit += vec3(all_casters);
+    }
   }
   return lit / 16.0;
 }
@@ -46,7 +61,7 @@ float pcf(vec3 coord, vec2 dz_duv, float radius, mat2 rotation) {
 // Percentage-closer soft shadows (Fernando 2005; NVIDIA's "PCSS Integration" formulas): the
 // average depth of the blockers found in a search region sized by the light, the penumbra
 // width from similar triangles, then PCF over that width.
-float pcss(vec3 coord, vec2 dz_duv, mat2 rotation) {
+vec3 pcss(vec3 coord, vec2 dz_duv, mat2 rotation) {
   float z_receiver = linear_light_depth(coord.z);
   float n = shadow_range.x;
   float light_uv = shadow.z;
@@ -65,7 +80,7 @@ float pcss(vec3 coord, vec2 dz_duv, mat2 rotation) {
       blockers += 1.0;
     }
   }
-  if (blockers == 0.0) return 1.0;
+  if (blockers == 0.0) return vec3(1.0);
   float z_blocker = sum / blockers;
   // Penumbra width at the receiver, as a fraction of the map: w = size (z_r - z_b) / z_b for a
   // point-like frustum; for an orthographic map the light's angular size times the distance.
@@ -74,11 +89,12 @@ float pcss(vec3 coord, vec2 dz_duv, mat2 rotation) {
   return pcf(coord, dz_duv, clamp(penumbra, shadow.y, 0.08), rotation);
 }
 
-// How much of the light reaches p (0 shadowed .. 1 lit) on a surface of normal n. The receiver
+// How much of the light reaches p, per channel (0 shadowed .. 1 lit; tinted behind a
+// translucent cloth) on a surface of normal n. The receiver
 // is moved along its normal by about a texel (normal-offset shadows, Holbert 2011) and the
 // casters were drawn with a slope-scaled depth offset, so neither acne nor peter-panning shows.
-float shadow_visibility(vec3 p, vec3 n) {
-  if (shadow.x < 0.5) return 1.0;
+vec3 shadow_visibility(vec3 p, vec3 n) {
+  if (shadow.x < 0.5) return vec3(1.0);
   vec3 l = light_vector(p);
   float slope = 1.0 - abs(dot(n, l));
   vec4 c = light_view_proj * vec4(p + n * shadow.w * (0.5 + slope), 1.0);
@@ -92,7 +108,7 @@ float shadow_visibility(vec3 p, vec3 n) {
   dz_duv = clamp(dz_duv, vec2(-8.0), vec2(8.0));  // grazing receivers: bounded
   // Beyond the map's depth range or its borders: lit (the map covers every caster).
   if (coord.z >= 1.0 || any(lessThan(coord.xy, vec2(0.0))) || any(greaterThan(coord.xy, vec2(1.0))))
-    return 1.0;
+    return vec3(1.0);
   float angle = 6.2831853 * interleaved_gradient_noise(gl_FragCoord.xy);
   mat2 rotation = mat2(cos(angle), sin(angle), -sin(angle), cos(angle));
   if (shadow.x < 1.5) return pcf(coord, dz_duv, 1.5 * shadow.y, rotation);
@@ -104,6 +120,6 @@ float shadow_visibility(vec3 p, vec3 n) {
 vec3 lambert_lit(vec3 p, vec3 n, vec3 albedo) {
   vec3 l = light_vector(p);
   float cos_theta = max(dot(n, l), 0.0);
-  float vis = shadow_visibility(p, n);  // outside any branch: it takes derivatives
+  vec3 vis = shadow_visibility(p, n);  // outside any branch: it takes derivatives
   return albedo * (light_irradiance(p) * cos_theta * vis + vec3(light_color.a));
 }

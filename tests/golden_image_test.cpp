@@ -174,6 +174,13 @@ TEST_F(GoldenImage, ClothBrdfThreadsAndSheen) {
       << "sheen gain " << gain_facing << " facing, " << gain_grazing << " grazing";
 }
 
+TEST_F(GoldenImage, TranslucentMode5) {
+  vis::ViewSettings view = vis::default_view(*solver_);
+  view.mode = vis::DisplayMode::translucent;
+  view.camera.yaw_deg = 200.0f;  // from behind: the cloth glows against the light
+  check_golden(*renderer_, *solver_, view, "mode5");
+}
+
 TEST_F(GoldenImage, LightDepthView) {
   vis::ViewSettings view = vis::default_view(*solver_);
   view.mode = vis::DisplayMode::light_depth;

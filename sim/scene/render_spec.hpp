@@ -58,7 +58,9 @@ struct ClothLookSpec {
   double sheen_roughness = 0.5;  // Charlie alpha, 0.07..1
   ThreadMetal threads = ThreadMetal::gold;
   double thread_fraction = 0.125;  // of weft threads that are metallic
-  double opacity = 0.85;          // mode 5: thread coverage c (1 - light let through the gaps)
+  double opacity = 0.85;           // mode 5: thread coverage c (1 - light let through the gaps)
+  double transmission = 0.6;       // mode 5: light a thread lets through, tau (times its albedo)
+  std::optional<Vec3d> color;      // a plain sRGB albedo instead of the woven texture
 };
 
 struct RenderSpec {

@@ -20,7 +20,10 @@ ShadowPass::Samplers::~Samplers() {
 
 ShadowPass::ShadowPass()
     : program_(build_program({"shadow_depth.vert", "shadow_depth.frag"})),
+      transmittance_program_(build_program({"shadow_colour.vert", "shadow_colour.frag"})),
       fbo_(make_framebuffer()),
+      opaque_fbo_(make_framebuffer()),
+      colour_fbo_(make_framebuffer()),
       empty_vao_(make_vertex_array()) {
   glCreateSamplers(1, &samplers_.compare);
   glCreateSamplers(1, &samplers_.plain);
@@ -49,7 +52,10 @@ void ShadowPass::begin(int size) {
     glNamedFramebufferReadBuffer(fbo_.get(), GL_NONE);
     glObjectLabel(GL_TEXTURE, depth_.get(), -1, "shadow depth");
     size_ = size;
+    opaque_depth_.reset();
+    colour_.reset();
   }
+  translucent_ = false;
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
   glViewport(0, 0, size_, size_);
   const float far = 1.0f;
@@ -83,11 +89,69 @@ void ShadowPass::end() {
   glEnable(GL_MULTISAMPLE);
 }
 
+void ShadowPass::begin_opaque() {
+  if (!opaque_depth_) {
+    opaque_depth_ = make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(opaque_depth_.get(), 1, GL_DEPTH_COMPONENT32F, size_, size_);
+    glNamedFramebufferTexture(opaque_fbo_.get(), GL_DEPTH_ATTACHMENT, opaque_depth_.get(), 0);
+    glNamedFramebufferDrawBuffer(opaque_fbo_.get(), GL_NONE);
+    glNamedFramebufferReadBuffer(opaque_fbo_.get(), GL_NONE);
+    glObjectLabel(GL_TEXTURE, opaque_depth_.get(), -1, "shadow depth, opaque casters");
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, opaque_fbo_.get());
+  const float far = 1.0f;
+  glClearBufferfv(GL_DEPTH, 0, &far);
+  glUseProgram(program_.get());
+  translucent_ = true;
+}
+
+void ShadowPass::begin_transmittance() {
+  if (!colour_) {
+    colour_ = make_texture(GL_TEXTURE_2D);
+    // Linear transmittance (not sRGB), 16-bit float so products of layers keep their precision.
+    glTextureStorage2D(colour_.get(), 1, GL_RGBA16F, size_, size_);
+    glTextureParameteri(colour_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(colour_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(colour_.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(colour_.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glNamedFramebufferTexture(colour_fbo_.get(), GL_COLOR_ATTACHMENT0, colour_.get(), 0);
+    glObjectLabel(GL_TEXTURE, colour_.get(), -1, "shadow transmittance");
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, colour_fbo_.get());
+  const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  glClearBufferfv(GL_COLOR, 0, white);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ZERO, GL_SRC_COLOR);  // dst *= transmittance
+  glUseProgram(transmittance_program_.get());
+}
+
+void ShadowPass::draw_transmittance(GLuint vao, GLsizei index_count, GLuint albedo, float repeat,
+                                    glm::vec3 flat_albedo, bool use_flat, float coverage,
+                                    float transmission) {
+  const GLuint p = transmittance_program_.get();
+  glProgramUniform1f(p, 0, repeat);
+  glProgramUniform3f(p, 1, flat_albedo.r, flat_albedo.g, flat_albedo.b);
+  glProgramUniform1i(p, 2, use_flat ? 1 : 0);
+  glProgramUniform2f(p, 3, coverage, transmission);
+  glBindTextureUnit(0, albedo);
+  glBindVertexArray(vao);
+  glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, nullptr);
+  glDisable(GL_BLEND);
+  glEnable(GL_DEPTH_TEST);
+}
+
 void ShadowPass::bind_textures() const {
   glBindTextureUnit(6, depth_.get());
   glBindTextureUnit(7, depth_.get());
   glBindSampler(6, samplers_.compare);
   glBindSampler(7, samplers_.plain);
+  if (translucent_) {
+    glBindTextureUnit(8, opaque_depth_.get());
+    glBindSampler(8, samplers_.compare);
+    glBindTextureUnit(9, colour_.get());
+  }
 }
 
 }  // namespace clothlab::vis

@@ -24,15 +24,29 @@ class ShadowPass {
   // Restores the state begin() changed (not the framebuffer: the caller binds its own).
   void end();
 
-  // Binds the map for sampling: units 6 (comparing) and 7 (plain), as shaders/frame.glsl expects.
+  // Coloured shadows of a translucent cloth (mode 5; rendering.md section 5, the OptiFine/Iris
+  // scheme): after the all-casters map, a second depth map of the opaque casters only and a
+  // colour map holding the product of the transmittances of the translucent layers.
+  void begin_opaque();  // the opaque-only depth map as the target (draw the opaque casters)
+  // The colour map as the target, cleared to white: draw the translucent casters with
+  // draw_transmittance (multiplicative blending, no depth test: layers multiply).
+  void begin_transmittance();
+  void draw_transmittance(GLuint vao, GLsizei index_count, GLuint albedo, float repeat,
+                          glm::vec3 flat_albedo, bool use_flat, float coverage, float transmission);
+  bool translucent() const { return translucent_; }
+
+  // Binds the maps for sampling as shaders/lighting.glsl expects: units 6 (comparing) and 7
+  // (plain) the all-casters map; with translucent casters 8 the opaque-only map (comparing) and
+  // 9 the transmittance colour.
   void bind_textures() const;
   int size() const { return size_; }
 
  private:
-  Program program_;
-  Framebuffer fbo_;
-  Texture depth_;
-  struct Samplers {  // GL sampler objects (no RAII type in vis/gl for them yet)
+  Program program_, transmittance_program_;
+  Framebuffer fbo_, opaque_fbo_, colour_fbo_;
+  Texture depth_, opaque_depth_, colour_;
+  bool translucent_ = false;  // the opaque and colour maps were drawn this frame
+  struct Samplers {           // GL sampler objects (no RAII type in vis/gl for them yet)
     GLuint compare = 0, plain = 0;
     Samplers() = default;
     Samplers(const Samplers&) = delete;

@@ -22,7 +22,8 @@ namespace {
 // Explicit uniform locations of shaders/floor.vert and shaders/cloth.frag (no lookups per frame).
 constexpr GLint kFloorHalfSize = 0, kFloorTileSize = 1;
 constexpr GLint kClothMode = 0, kClothTextureRepeat = 1, kClothColorBy = 2, kClothRange = 3,
-                kClothShaded = 4, kClothLook = 5, kClothMetalF0 = 6, kClothGlints = 7;
+                kClothShaded = 4, kClothLook = 5, kClothMetalF0 = 6, kClothGlints = 7,
+                kClothFlatAlbedo = 9, kClothUseFlat = 10, kClothTranslucency = 11;
 constexpr int kThreadTextureSize = 256;  // as the fabric albedo, so the weaves line up
 
 // std140 layout of the Frame block in shaders/frame.glsl.
@@ -256,12 +257,16 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
                                                            : 0.0f;
   frame.shadow =
       glm::vec4(filter, 1.0f / float(view.shadow_map_size), light_.size_uv, light_.normal_offset);
-  frame.shadow_range = glm::vec4(light_.near, light_.far, light_.directional ? 1.0f : 0.0f, 0.0f);
+  // Mode 5 with shadows: the cloth's shadow is coloured by its transmittance.
+  const bool translucent =
+      view.mode == DisplayMode::translucent && view.shadows != ShadowFilter::none;
+  frame.shadow_range = glm::vec4(light_.near, light_.far, light_.directional ? 1.0f : 0.0f,
+                                 translucent ? 1.0f : 0.0f);
   glNamedBufferSubData(frame_ubo_.get(), 0, sizeof frame, &frame);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, frame_ubo_.get());
 
   if (shadows) {
-    draw_shadow_map(view);
+    draw_shadow_map(view, translucent);
     shadow_->bind_textures();
   } else {
     shadow_.reset();  // nothing needs the map: its memory goes too
@@ -300,6 +305,8 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
   glDrawArrays(GL_TRIANGLES, 0, 6);
 
   scenery_->draw();
+  const bool blended_cloth = view.mode == DisplayMode::translucent;
+  if (blended_cloth) draw_sky(view, frame.view_proj, centre);  // behind the translucent cloth
 
   if (view.mode == DisplayMode::springs) {
     glUseProgram(springs_program_.get());
@@ -316,6 +323,19 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
     glProgramUniform1i(cloth_program_.get(), kClothShaded, view.color.shaded ? 1 : 0);
     glBindTextureUnit(0, fabric_.get());
     glBindTextureUnit(1, colormap_texture(view.color.map));
+    const glm::vec3 flat = view.look.color ? glm::vec3((*view.look.color)[0], (*view.look.color)[1],
+                                                       (*view.look.color)[2])
+                                           : glm::vec3(1.0f);
+    glProgramUniform3f(cloth_program_.get(), kClothFlatAlbedo, flat.r, flat.g, flat.b);
+    glProgramUniform1i(cloth_program_.get(), kClothUseFlat, view.look.color ? 1 : 0);
+    glProgramUniform2f(cloth_program_.get(), kClothTranslucency, float(view.look.opacity),
+                       float(view.look.transmission));
+    if (blended_cloth) {
+      // Over what is behind it; its own layers in drawing order (no sorting: one sheet).
+      glEnable(GL_BLEND);
+      glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+      glDepthMask(GL_FALSE);
+    }
     if (view.mode == DisplayMode::cloth_brdf) {
       update_tangents();
       set_thread_fraction(view.look.thread_fraction);
@@ -338,27 +358,47 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
     }
     glBindVertexArray(cloth_vao_.get());
     glDrawElements(GL_TRIANGLES, triangle_indices_, GL_UNSIGNED_INT, nullptr);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
   }
   glBindVertexArray(0);
+  if (!blended_cloth) draw_sky(view, frame.view_proj, centre);
+}
 
-  // The sky last among the opaque passes: it fills only what nothing else covered.
-  if (view.sky) {
-    if (!sky_) sky_ = std::make_unique<SkyPass>();
-    const glm::vec3 sun = light_.directional ? -light_.direction : light_.position - centre;
-    sky_->draw(sun, view.sky_turbidity, frame.view_proj, view.camera.eye());
-  } else {
+// The sky after the opaque passes: it fills only what nothing else covered.
+void Renderer::draw_sky(const ViewSettings& view, const glm::mat4& view_proj, glm::vec3 centre) {
+  if (!view.sky) {
     sky_.reset();
+    return;
   }
+  if (!sky_) sky_ = std::make_unique<SkyPass>();
+  const glm::vec3 sun = light_.directional ? -light_.direction : light_.position - centre;
+  sky_->draw(sun, view.sky_turbidity, view_proj, view.camera.eye());
 }
 
 // Every caster into the light's depth map: the floor, then the cloth (its current positions).
-void Renderer::draw_shadow_map(const ViewSettings& view) {
+void Renderer::draw_shadow_map(const ViewSettings& view, bool translucent) {
   if (!shadow_) shadow_ = std::make_unique<ShadowPass>();
   shadow_->begin(view.shadow_map_size);
   shadow_->draw_floor(view.floor_height, view.floor_half_size);
   if (triangle_indices_ > 0)
     shadow_->draw_triangles(cloth_vao_.get(), triangle_indices_, glm::mat4(1.0f));
   scenery_->draw_shadow(*shadow_);
+  if (translucent) {
+    shadow_->begin_opaque();
+    shadow_->draw_floor(view.floor_height, view.floor_half_size);
+    scenery_->draw_shadow(*shadow_);
+    if (triangle_indices_ > 0) {
+      shadow_->begin_transmittance();
+      const glm::vec3 flat =
+          view.look.color
+              ? glm::vec3((*view.look.color)[0], (*view.look.color)[1], (*view.look.color)[2])
+              : glm::vec3(1.0f);
+      shadow_->draw_transmittance(cloth_vao_.get(), triangle_indices_, fabric_.get(),
+                                  view.fabric_repeat, flat, view.look.color.has_value(),
+                                  float(view.look.opacity), float(view.look.transmission));
+    }
+  }
   shadow_->end();
 }
 

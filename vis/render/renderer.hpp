@@ -56,7 +56,8 @@ class Renderer {
   GLuint colormap_texture(ColorMap map) const { return colormaps_[static_cast<int>(map)].get(); }
 
  private:
-  void draw_shadow_map(const ViewSettings& view);
+  void draw_shadow_map(const ViewSettings& view, bool translucent);
+  void draw_sky(const ViewSettings& view, const glm::mat4& view_proj, glm::vec3 centre);
   void update_tangents();
   void set_thread_fraction(double fraction);
 

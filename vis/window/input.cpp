@@ -28,6 +28,11 @@ constexpr KeyBinding kBindings[] = {
      "cloth BRDF: Oren-Nayar + sheen, gold or silver threads",
      {GLFW_KEY_4, GLFW_KEY_KP_4},
      false},
+    {Action::mode_translucent,
+     "5",
+     "translucent cloth with coloured shadows",
+     {GLFW_KEY_5, GLFW_KEY_KP_5},
+     false},
     {Action::mode_light_depth,
      "7",
      "the light's depth map (the shadow map), coloured near to far",
@@ -116,6 +121,9 @@ void select_mode(ViewSettings& view, DisplayMode& last_shaded, Action action) {
       break;
     case Action::mode_cloth_brdf:
       view.mode = DisplayMode::cloth_brdf;
+      break;
+    case Action::mode_translucent:
+      view.mode = DisplayMode::translucent;
       break;
     case Action::mode_light_depth:
       view.mode = DisplayMode::light_depth;

@@ -15,6 +15,7 @@ enum class Action {
   mode_normals,          // 2
   mode_lambert,          // 3
   mode_cloth_brdf,       // 4
+  mode_translucent,      // 5
   mode_light_depth,      // 7
   probe_force,           // 8: probe the force under the cursor (again: off)
   probe_velocity,        // 9
