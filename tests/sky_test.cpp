@@ -190,28 +190,9 @@ TEST(SkyTest, NoSeamAcrossFaceEdges) {
         // A point half a texel beyond the edge lies in the neighbouring face's edge texel.
         const float s = texel_centre(i, n) + e[2] * 2.0f / n;
         const float t = texel_centre(j, n) + e[3] * 2.0f / n;
-        // Unnormalised GL face coordinates extend past the edge: rebuild the direction directly.
-        glm::vec3 d;
-        switch (f) {
-          case 0:
-            d = {1.0f, -t, -s};
-            break;
-          case 1:
-            d = {-1.0f, -t, s};
-            break;
-          case 2:
-            d = {s, 1.0f, t};
-            break;
-          case 3:
-            d = {s, -1.0f, -t};
-            break;
-          case 4:
-            d = {s, -t, 1.0f};
-            break;
-          default:
-            d = {-s, -t, -1.0f};
-            break;
-        }
+        // cube_direction takes coordinates past the face's edge too: the direction goes on
+        // into the neighbouring face.
+        const glm::vec3 d = cube_direction(f, s, t);
         const FaceST sel = gl_select(d);
         ASSERT_NE(sel.face, f);
         const int ni = std::clamp(int(sel.s * n), 0, n - 1);

@@ -47,17 +47,20 @@ void zero_forces(Vec3Array<T>& f, std::size_t b, std::size_t e) {
   }
 }
 
-// f = the spring forces alone: compute_forces' loops with the body forces replaced by zero.
-template <class T>
-void compute_spring_forces(const Model<T>& m, const Vec3Array<T>& x, const Vec3Array<T>& v,
-                           Vec3Array<T>& f, int threads) {
+// The spring forces over the model's kernel (row sweeps per grid row, or vertex blocks), each
+// row or block first initialised by start(b, e): the body forces for compute_forces, zero for
+// the springs alone. One loop for both, so the force source "springs" is exactly the springs'
+// share of the total.
+template <class T, class Start>
+void spring_pass(const Model<T>& m, const Vec3Array<T>& x, const Vec3Array<T>& v, Vec3Array<T>& f,
+                 int threads, Start start) {
   const bool damped = m.has_damping;
   if (m.kernel == SpringKernel::row_sweep) {
     for (const GridStencil<T>& g : m.grids) {
       for_each_index(g.nv, threads, [&](int j) {
         const std::size_t row =
             static_cast<std::size_t>(g.offset) + static_cast<std::size_t>(j) * g.nu;
-        zero_forces(f, row, row + static_cast<std::size_t>(g.nu));
+        start(row, row + static_cast<std::size_t>(g.nu));
         if (damped) {
           add_grid_row_spring_forces<T, true>(g, x, v, f, j);
         } else {
@@ -67,7 +70,7 @@ void compute_spring_forces(const Model<T>& m, const Vec3Array<T>& x, const Vec3A
     }
   } else {
     for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) {
-      zero_forces(f, b, e);
+      start(b, e);
       if (damped) {
         add_spring_forces<T, true>(m, x, v, f, b, e);
       } else {
@@ -165,30 +168,8 @@ void add_wind(const Model<T>& m, double t, const Vec3Array<T>& x, const Vec3Arra
 template <class T>
 void compute_forces(const Model<T>& m, double t, const Vec3Array<T>& x, const Vec3Array<T>& v,
                     Vec3Array<T>& f, ForceWorkspace<T>& ws, int threads) {
-  const bool damped = m.has_damping;
-  if (m.kernel == SpringKernel::row_sweep) {
-    for (const GridStencil<T>& g : m.grids) {
-      for_each_index(g.nv, threads, [&](int j) {
-        const std::size_t row =
-            static_cast<std::size_t>(g.offset) + static_cast<std::size_t>(j) * g.nu;
-        add_body_forces(m, v, f, row, row + static_cast<std::size_t>(g.nu));
-        if (damped) {
-          add_grid_row_spring_forces<T, true>(g, x, v, f, j);
-        } else {
-          add_grid_row_spring_forces<T, false>(g, x, v, f, j);
-        }
-      });
-    }
-  } else {
-    for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) {
-      add_body_forces(m, v, f, b, e);
-      if (damped) {
-        add_spring_forces<T, true>(m, x, v, f, b, e);
-      } else {
-        add_spring_forces<T, false>(m, x, v, f, b, e);
-      }
-    });
-  }
+  spring_pass(m, x, v, f, threads,
+              [&](std::size_t b, std::size_t e) { add_body_forces(m, v, f, b, e); });
   add_wind(m, t, x, v, f, ws, threads);
 }
 
@@ -209,7 +190,7 @@ void compute_force_source(const Model<T>& m, double t, const Vec3Array<T>& x, co
       compute_forces(m, t, x, v, f, ws, threads);
       return;
     case ForceSource::springs:
-      compute_spring_forces(m, x, v, f, threads);
+      spring_pass(m, x, v, f, threads, [&](std::size_t b, std::size_t e) { zero_forces(f, b, e); });
       return;
     case ForceSource::gravity:
       for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) {

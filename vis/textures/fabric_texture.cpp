@@ -13,46 +13,22 @@
 #include <stdexcept>
 #include <string>
 
+#include "vis/textures/twill.hpp"
+
 namespace clothlab {
 namespace {
 
 using Rgb = std::array<float, 3>;
 
 constexpr float kPi = 3.14159265358979f;
-constexpr float kThreadWidth = 0.86f;            // fraction of a cell a thread covers; rest is gap
 constexpr Rgb kWarpColour{0.56f, 0.11f, 0.12f};  // dark red
 constexpr Rgb kWeftColour{0.46f, 0.08f, 0.13f};  // slightly deeper, bluer red
 constexpr std::uint32_t kWarpTag = 1, kWeftTag = 2;
-
-// Whether the warp thread `i` lies above weft thread `j` (2/2 twill; indices wrap at the tile,
-// whose thread count is a multiple of 4).
-bool warp_on_top(int i, int j) {
-  return ((i + j) & 3) < 2;
-}
-
-float smoothstep(float t) {
-  return t * t * (3.0f - 2.0f * t);
-}
-
-// Height (-1 under .. +1 over) of a thread along its length at coordinate `along` (in cells),
-// blending the over/under state of the two nearest cell centres with a smoothstep.
-template <class OnTop>
-float thread_height(float along, OnTop on_top) {
-  const float s = along - 0.5f;
-  const float c0 = std::floor(s);
-  const float t = smoothstep(s - c0);
-  const int j = static_cast<int>(c0);
-  const float h0 = on_top(j) ? 1.0f : -1.0f;
-  const float h1 = on_top(j + 1) ? 1.0f : -1.0f;
-  return h0 + (h1 - h0) * t;
-}
-
-// Cross-section of a round thread: the cosine of the surface normal to the viewer for a
-// cylinder of width kThreadWidth centred in the cell, 0 outside it (the gap between threads).
-float thread_profile(float across) {
-  const float d = (across - 0.5f) / (0.5f * kThreadWidth);
-  return d * d < 1.0f ? std::sqrt(1.0f - d * d) : 0.0f;
-}
+using twill::kThreadWidth;
+using twill::smoothstep;
+using twill::thread_height;
+using twill::thread_profile;
+using twill::warp_on_top;
 
 // Per-thread dye variation: +-8 % brightness and a small shift between red and blue.
 Rgb thread_colour(Rgb base, std::uint32_t seed, std::uint32_t tag, int index) {

@@ -15,22 +15,15 @@
 #include <string>
 
 #include "vis/textures/fabric_texture.hpp"
+#include "vis/textures/twill.hpp"
 
 namespace clothlab {
 namespace {
 
-// kThreadWidth, warp_on_top, smoothstep, thread_elevation and thread_profile must match
-// vis/textures/fabric_texture.cpp (tests/weave_maps_test.cpp checks the alignment with the
-// albedo).
-constexpr float kThreadWidth = 0.86f;  // fraction of a cell a thread covers; the rest is gap
-
-bool warp_on_top(int i, int j) {
-  return ((i + j) & 3) < 2;
-}
-
-float smoothstep(float t) {
-  return t * t * (3.0f - 2.0f * t);
-}
+// The twill's geometry is the albedo's (vis/textures/twill.hpp).
+using twill::kThreadWidth;
+using twill::thread_profile;
+using twill::warp_on_top;
 
 // Relief of a thread: the gap floor is 0; a thread's surface is kBase + kLift * (e + 1) / 2 +
 // kCrown * profile, so 1 on the crown of a floating thread.
@@ -38,18 +31,7 @@ constexpr float kBase = 0.1f, kLift = 0.4f, kCrown = 0.5f;
 
 template <class OnTop>
 float thread_elevation(float along, OnTop on_top) {
-  const float s = along - 0.5f;
-  const float c0 = std::floor(s);
-  const float t = smoothstep(s - c0);
-  const int j = static_cast<int>(c0);
-  const float h0 = on_top(j) ? 1.0f : -1.0f;
-  const float h1 = on_top(j + 1) ? 1.0f : -1.0f;
-  return h0 + (h1 - h0) * t;
-}
-
-float thread_profile(float across) {
-  const float d = (across - 0.5f) / (0.5f * kThreadWidth);
-  return d * d < 1.0f ? std::sqrt(1.0f - d * d) : 0.0f;
+  return twill::thread_height(along, on_top);
 }
 
 enum class Top : std::uint8_t { gap, warp, weft };
