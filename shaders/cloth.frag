@@ -21,6 +21,7 @@ layout(location = 11) uniform vec2 u_translucency;    // mode 5: coverage c, tra
 layout(binding = 0) uniform sampler2D u_fabric;
 layout(binding = 1) uniform sampler2D u_lut;  // 256 x 1 colour map, sRGB
 layout(binding = 2) uniform sampler2D u_threads;  // r: metal thread mask, g: weft on top (linear)
+layout(binding = 3) uniform sampler2D u_weave_normals;  // mode 6: tangent space, linear bytes
 
 const vec3 kNanColor = vec3(1.0, 0.0, 1.0);  // magenta: no finite value
 
@@ -82,6 +83,20 @@ vec4 translucent_lit(vec3 n, vec3 albedo) {
   return vec4(lit + albedo * light_color.a, u_translucency.x);
 }
 
+// Key 6: the weave's relief from its tangent-space normal map (vis/textures/weave_maps.hpp),
+// in the per-vertex tangent frame (T along +u, B = w N x T along +v, Gram-Schmidt against the
+// interpolated normal). Bytes decode as b * 255/127 - 128/127, so 128 is exactly 0 and a flat
+// map gives N itself. Seen from behind, the relief is the front's turned inside out: the mapped
+// normal is the front's, negated.
+vec3 weave_normal(vec3 n_seen) {
+  vec3 n = gl_FrontFacing ? n_seen : -n_seen;  // the front side's normal
+  vec3 t = normalize(v_tangent.xyz - n * dot(n, v_tangent.xyz));
+  vec3 b = (v_tangent.w < 0.0 ? -1.0 : 1.0) * cross(n, t);
+  vec3 m = texture(u_weave_normals, v_uv * u_texture_repeat).rgb * (255.0 / 127.0) - 128.0 / 127.0;
+  vec3 mapped = normalize(t * m.x + b * m.y + n * m.z);
+  return gl_FrontFacing ? mapped : -mapped;
+}
+
 void main() {
   // Cloth has two sides: shade the side we see, with the normal turned towards us.
   vec3 n = normalize(v_normal);
@@ -106,6 +121,10 @@ void main() {
   }
   if (u_mode == 4) {
     color = vec4(cloth_brdf_lit(n, albedo), 1.0);
+    return;
+  }
+  if (u_mode == 6) {
+    color = vec4(lambert_lit(v_world, weave_normal(n), albedo), 1.0);
     return;
   }
   color = vec4(lambert_lit(v_world, n, albedo), 1.0);

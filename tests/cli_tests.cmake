@@ -165,10 +165,10 @@ clothlab_cli_test(render.small 0
   --out ${CLOTHLAB_TRACE_OUT}/render_small)
 clothlab_cli_test(render.bad_size 2 "--size: must be WxH"
   render ${CLOTHLAB_DEFAULT_SCENE} --size 64 --out ${CLOTHLAB_TRACE_OUT}/render_bad)
-clothlab_cli_test(render.bad_mode 2 "--mode: 6 not in .1,2,3,4,5,7."
-  render ${CLOTHLAB_DEFAULT_SCENE} --mode 6 --out ${CLOTHLAB_TRACE_OUT}/render_bad)
-clothlab_cli_test(render.bad_scene_mode 2 "--set render\\.mode=6.*render\\.mode: must be a display mode 1-5 or 7"
-  render ${CLOTHLAB_DEFAULT_SCENE} --set render.mode=6 --out ${CLOTHLAB_TRACE_OUT}/render_bad)
+clothlab_cli_test(render.bad_mode 2 "--mode: Value 8 not in range"
+  render ${CLOTHLAB_DEFAULT_SCENE} --mode 8 --out ${CLOTHLAB_TRACE_OUT}/render_bad)
+clothlab_cli_test(render.bad_scene_mode 2 "--set render\\.mode=0.*render\\.mode: must be a display mode from 1 to 7"
+  render ${CLOTHLAB_DEFAULT_SCENE} --set render.mode=0 --out ${CLOTHLAB_TRACE_OUT}/render_bad)
 clothlab_cli_test(render.bad_shadows 2 "render\\.shadows: unknown shadow filter .vsm."
   render ${CLOTHLAB_DEFAULT_SCENE} --set render.shadows=vsm --out ${CLOTHLAB_TRACE_OUT}/render_bad)
 # --probe prints one JSON line with the field under the pixel (centre of the default view: cloth).

@@ -284,7 +284,7 @@ rotation = [0, 45, 0]
   EXPECT_EQ(d.render.shadows, ShadowFilter::pcf);
   EXPECT_TRUE(d.render.meshes.empty());
 
-  expect_error(kMinimal + "[render]\nmode = 9\n", "render.mode", 10, "1-5 or 7");
+  expect_error(kMinimal + "[render]\nmode = 9\n", "render.mode", 10, "from 1 to 7");
   expect_error(kMinimal + "[render]\nshadows = \"vsm\"\n", "render.shadows", 10,
                "unknown shadow filter \"vsm\" (valid: none, pcf, pcss)");
   expect_error(kMinimal + "[render]\nshadow_map_size = 100\n", "render.shadow_map_size", 10,

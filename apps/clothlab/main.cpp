@@ -70,10 +70,10 @@ int main(int argc, char** argv) {
       ->add_option(
           "--mode", render.mode,
           "1 springs, 2 normals, 3 Lambert + texture, 4 cloth BRDF + gold threads, 5 translucent "
-          "cloth with coloured shadows, 7 the "
+          "cloth with coloured shadows, 6 normal-mapped weave, 7 the "
           "light's depth map "
           "(default: the scene's render.mode)")
-      ->check(CLI::IsMember({1, 2, 3, 4, 5, 7}));
+      ->check(CLI::Range(1, 7));
   std::string size = "1280x720";
   render_cmd->add_option("--size", size, "image size WxH")
       ->check(CLI::Validator(

@@ -201,10 +201,9 @@ class Validator {
     for (std::size_t k = 0; k < 3; ++k) within(key + "[" + std::to_string(k) + "]", c[k], 0.0, hi);
   }
   void check_render(const RenderSpec& r) const {
-    // Mode 6 (the normal-mapped weave) is the realistic-rendering work in progress.
-    if (r.mode < 1 || r.mode > 7 || r.mode == 6)
-      fail("render.mode", "must be a display mode 1-5 or 7 (got " + std::to_string(r.mode) +
-                              "; mode 6 is not available yet)");
+    if (r.mode < 1 || r.mode > 7)
+      fail("render.mode",
+           "must be a display mode from 1 to 7 (got " + std::to_string(r.mode) + ")");
     if (r.shadow_map_size < 256 || r.shadow_map_size > 8192)
       fail("render.shadow_map_size",
            "must be between 256 and 8192 texels (got " + std::to_string(r.shadow_map_size) + ")");
@@ -237,6 +236,7 @@ class Validator {
     within("render.cloth.thread_fraction", c.thread_fraction, 0.0, 1.0);
     within("render.cloth.opacity", c.opacity, 0.0, 1.0);
     within("render.cloth.transmission", c.transmission, 0.0, 1.0);
+    within("render.cloth.bump", c.bump, 0.0, 2.0);
     if (c.color) colour("render.cloth.color", *c.color, 1.0);
   }
 

@@ -219,6 +219,25 @@ void Renderer::set_thread_fraction(double fraction) {
   thread_fraction_ = fraction;
 }
 
+// The weave's normal map at a relief strength (rebuilt only when it changes): linear bytes,
+// mipmapped, the same tile as the fabric albedo.
+void Renderer::set_weave_bump(double strength) {
+  if (strength == weave_bump_ && weave_normals_) return;
+  const Image map = make_weave_normal_map(kThreadTextureSize, static_cast<float>(strength));
+  weave_normals_ = make_texture(GL_TEXTURE_2D);
+  const int levels = 1 + static_cast<int>(std::log2(kThreadTextureSize));
+  glTextureStorage2D(weave_normals_.get(), levels, GL_RGBA8, kThreadTextureSize,
+                     kThreadTextureSize);
+  glTextureSubImage2D(weave_normals_.get(), 0, 0, 0, kThreadTextureSize, kThreadTextureSize,
+                      GL_RGBA, GL_UNSIGNED_BYTE, map.rgba.data());
+  glGenerateTextureMipmap(weave_normals_.get());
+  glTextureParameteri(weave_normals_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(weave_normals_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameterf(weave_normals_.get(), GL_TEXTURE_MAX_ANISOTROPY, 8.0f);
+  glObjectLabel(GL_TEXTURE, weave_normals_.get(), -1, "weave normal map");
+  weave_bump_ = strength;
+}
+
 void Renderer::set_scalars(const std::vector<float>& values, ScalarRange range) {
   if (values.size() != vertices_)
     throw std::invalid_argument("Renderer::set_scalars: one value per vertex expected");
@@ -335,6 +354,11 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
       glEnable(GL_BLEND);
       glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
       glDepthMask(GL_FALSE);
+    }
+    if (view.mode == DisplayMode::weave) {
+      update_tangents();
+      set_weave_bump(view.look.bump);
+      glBindTextureUnit(3, weave_normals_.get());
     }
     if (view.mode == DisplayMode::cloth_brdf) {
       update_tangents();

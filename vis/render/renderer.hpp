@@ -60,6 +60,7 @@ class Renderer {
   void draw_sky(const ViewSettings& view, const glm::mat4& view_proj, glm::vec3 centre);
   void update_tangents();
   void set_thread_fraction(double fraction);
+  void set_weave_bump(double strength);
 
   Program cloth_program_, floor_program_, springs_program_, depth_view_program_;
   std::unique_ptr<ShadowPass> shadow_;  // only while shadows or the depth view are on
@@ -82,6 +83,8 @@ class Renderer {
   std::vector<ClothRange> grids_;  // the cloths' grids, for the tangents
   Texture threads_;                // r: metal thread mask, g: weft on top
   double thread_fraction_ = -1.0;
+  Texture weave_normals_;  // mode 6: the weave's tangent-space normal map
+  double weave_bump_ = -1.0;
   ScalarRange scalar_range_;
   std::array<Texture, kAllColorMaps.size()> colormaps_;
   VertexArray cloth_vao_, line_vao_, empty_vao_;

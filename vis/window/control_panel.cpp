@@ -232,6 +232,8 @@ std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view
   ImGui::SameLine();
   ImGui::RadioButton("5 sheer", &mode, 5);
   ImGui::SameLine();
+  ImGui::RadioButton("6 weave", &mode, 6);
+  ImGui::SameLine();
   ImGui::RadioButton("7 light depth", &mode, 7);
   view.mode = static_cast<DisplayMode>(mode);
   shadow_editors(view);

@@ -33,6 +33,11 @@ constexpr KeyBinding kBindings[] = {
      "translucent cloth with coloured shadows",
      {GLFW_KEY_5, GLFW_KEY_KP_5},
      false},
+    {Action::mode_weave,
+     "6",
+     "normal-mapped weave (relief of the threads)",
+     {GLFW_KEY_6, GLFW_KEY_KP_6},
+     false},
     {Action::mode_light_depth,
      "7",
      "the light's depth map (the shadow map), coloured near to far",
@@ -124,6 +129,9 @@ void select_mode(ViewSettings& view, DisplayMode& last_shaded, Action action) {
       break;
     case Action::mode_translucent:
       view.mode = DisplayMode::translucent;
+      break;
+    case Action::mode_weave:
+      view.mode = DisplayMode::weave;
       break;
     case Action::mode_light_depth:
       view.mode = DisplayMode::light_depth;

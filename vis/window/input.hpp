@@ -16,6 +16,7 @@ enum class Action {
   mode_lambert,          // 3
   mode_cloth_brdf,       // 4
   mode_translucent,      // 5
+  mode_weave,            // 6
   mode_light_depth,      // 7
   probe_force,           // 8: probe the force under the cursor (again: off)
   probe_velocity,        // 9

@@ -219,6 +219,7 @@ void ViewApp::dispatch(Action action) {
     case Action::mode_lambert:
     case Action::mode_cloth_brdf:
     case Action::mode_translucent:
+    case Action::mode_weave:
     case Action::mode_light_depth:
       select_mode(view_, last_shaded_, action);
       break;
