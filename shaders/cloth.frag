@@ -2,6 +2,7 @@
 #include "frame.glsl"
 #include "lighting.glsl"
 #include "brdf.glsl"
+#include "weave.glsl"
 
 // Colour by a scalar through a colour map (ViewSettings::color), or
 // 2: world-space normal as colour (n * 0.5 + 0.5); 3: Lambert with the fabric texture.
@@ -21,7 +22,12 @@ layout(location = 11) uniform vec2 u_translucency;    // mode 5: coverage c, tra
 layout(binding = 0) uniform sampler2D u_fabric;
 layout(binding = 1) uniform sampler2D u_lut;  // 256 x 1 colour map, sRGB
 layout(binding = 2) uniform sampler2D u_threads;  // r: metal thread mask, g: weft on top (linear)
-layout(binding = 3) uniform sampler2D u_weave_normals;  // mode 6: tangent space, linear bytes
+// Mode 6's subsurface imitation (vis/passes/diffusion_pass.cpp): the irradiance on the lit side
+// blurred by three growing Gaussians in the cloth's UV atlas, and their weights per channel
+// (x: the sharp per-pixel term, then the three blurs; each channel sums to 1).
+layout(binding = 10) uniform sampler2D u_diffused[3];
+layout(location = 12) uniform vec4 u_diffusion_weights[3];  // r, g, b rows: (w0, w1, w2, w3)
+layout(location = 15) uniform int u_subsurface;            // 1: the blurred terms are in use
 
 const vec3 kNanColor = vec3(1.0, 0.0, 1.0);  // magenta: no finite value
 
@@ -30,6 +36,7 @@ in vec3 v_normal;
 in vec2 v_uv;
 in float v_scalar;
 in vec4 v_tangent;
+in vec2 v_atlas_uv;
 out vec4 color;
 
 // Key 4: the layered cloth BRDF (Oren-Nayar base under a Charlie sheen, shaders/brdf.glsl) and,
@@ -83,18 +90,32 @@ vec4 translucent_lit(vec3 n, vec3 albedo) {
   return vec4(lit + albedo * light_color.a, u_translucency.x);
 }
 
-// Key 6: the weave's relief from its tangent-space normal map (vis/textures/weave_maps.hpp),
-// in the per-vertex tangent frame (T along +u, B = w N x T along +v, Gram-Schmidt against the
-// interpolated normal). Bytes decode as b * 255/127 - 128/127, so 128 is exactly 0 and a flat
-// map gives N itself. Seen from behind, the relief is the front's turned inside out: the mapped
-// normal is the front's, negated.
-vec3 weave_normal(vec3 n_seen) {
-  vec3 n = gl_FrontFacing ? n_seen : -n_seen;  // the front side's normal
-  vec3 t = normalize(v_tangent.xyz - n * dot(n, v_tangent.xyz));
-  vec3 b = (v_tangent.w < 0.0 ? -1.0 : 1.0) * cross(n, t);
-  vec3 m = texture(u_weave_normals, v_uv * u_texture_repeat).rgb * (255.0 / 127.0) - 128.0 / 127.0;
-  vec3 mapped = normalize(t * m.x + b * m.y + n * m.z);
-  return gl_FrontFacing ? mapped : -mapped;
+// Key 6: the weave's relief in the per-vertex frame; seen from behind, the relief is the
+// front's turned inside out (the mapped normal negated). With the subsurface imitation on, the
+// light that reaches the lit side is spread through the yarn (texture-space diffusion, d'Eon &
+// Luebke, GPU Gems 3 ch. 14): the per-pixel irradiance keeps a share w0 per channel, the rest
+// comes from its blurred copies in the UV atlas, red spreading farthest.
+vec3 weave_lit(vec3 n_seen, vec3 albedo) {
+  vec3 n_front = gl_FrontFacing ? n_seen : -n_seen;
+  vec3 mapped = weave_normal_front(n_front, v_tangent, v_uv * u_texture_repeat);
+  vec3 n = gl_FrontFacing ? mapped : -mapped;
+  vec3 l = light_vector(v_world);
+  vec3 vis = shadow_visibility(v_world, n);  // outside branches: it takes derivatives
+  vec3 e = light_irradiance(v_world) * max(dot(n, l), 0.0) * vis;
+  if (u_subsurface == 1) {
+    // The atlas holds the irradiance of the side facing the light: it reaches the viewer only
+    // on that side.
+    bool lit_side = dot(n_seen, l) > 0.0;
+    vec3 w0 = vec3(u_diffusion_weights[0].x, u_diffusion_weights[1].x, u_diffusion_weights[2].x);
+    vec3 spread = vec3(0.0);
+    for (int k = 0; k < 3; ++k) {
+      vec3 wk = vec3(u_diffusion_weights[0][k + 1], u_diffusion_weights[1][k + 1],
+                     u_diffusion_weights[2][k + 1]);
+      spread += wk * texture(u_diffused[k], v_atlas_uv).rgb;
+    }
+    e = w0 * e + (lit_side ? spread : vec3(0.0));
+  }
+  return albedo * (e + vec3(light_color.a));
 }
 
 void main() {
@@ -124,7 +145,7 @@ void main() {
     return;
   }
   if (u_mode == 6) {
-    color = vec4(lambert_lit(v_world, weave_normal(n), albedo), 1.0);
+    color = vec4(weave_lit(n, albedo), 1.0);
     return;
   }
   color = vec4(lambert_lit(v_world, n, albedo), 1.0);

@@ -6,12 +6,14 @@ layout(location = 1) in vec3 normal;
 layout(location = 2) in vec2 uv;
 layout(location = 4) in float scalar;  // the colour-by field (vis/render/scalar_field.hpp)
 layout(location = 5) in vec4 tangent;  // xyz along +u, w handedness (modes 4-6)
+layout(location = 6) in vec2 atlas_uv;  // the vertex's place in the cloths' UV atlas (mode 6)
 
 out vec3 v_world;
 out vec3 v_normal;
 out vec2 v_uv;
 out float v_scalar;
 out vec4 v_tangent;
+out vec2 v_atlas_uv;
 
 void main() {
   v_world = position;  // the solver works in world space
@@ -19,5 +21,6 @@ void main() {
   v_uv = uv;
   v_scalar = scalar;
   v_tangent = tangent;
+  v_atlas_uv = atlas_uv;
   gl_Position = view_proj * vec4(position, 1.0);
 }

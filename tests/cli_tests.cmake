@@ -143,6 +143,10 @@ clothlab_cli_test(bench.views_quick 0
   "Scientific view costs per frame: .* on [^,]+,.*everything on .*all off again \\(after everything on\\)[ 0-9.]+ no .*wrote .*views\\.csv"
   bench --suite views --quick --out ${CLOTHLAB_TRACE_OUT}/bench/views.csv)
 set_tests_properties(cli.bench.views_quick PROPERTIES ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
+clothlab_cli_test(bench.rendering_quick 0
+  "Render cost per headless frame: .*mode 3, every optional pass off.*mode 7 light depth map.*wrote .*rendering\\.csv"
+  bench --suite rendering --quick --out ${CLOTHLAB_TRACE_OUT}/bench/rendering.csv)
+set_tests_properties(cli.bench.rendering_quick PROPERTIES ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
 
 clothlab_cli_test(trace.bad_duration 2 "--duration: must be a finite number"
   trace ${CLOTHLAB_DEFAULT_SCENE} --duration -1 --out ${CLOTHLAB_TRACE_OUT}/bad.csv)

@@ -138,10 +138,13 @@ int main(int argc, char** argv) {
 
   BenchArgs bench;
   auto* bench_cmd = app.add_subcommand(
-      "bench", "run time against error, stability, scaling and feature costs (tables + CSV)");
+      "bench",
+      "run time against error, stability, scaling, feature, view and render costs (tables + CSV)");
   bench_cmd
-      ->add_option("--suite", bench.suite, "accuracy, stability, scaling, features, views or all")
-      ->check(CLI::IsMember({"accuracy", "stability", "scaling", "features", "views", "all"}));
+      ->add_option("--suite", bench.suite,
+                   "accuracy, stability, scaling, features, views, rendering or all")
+      ->check(CLI::IsMember(
+          {"accuracy", "stability", "scaling", "features", "views", "rendering", "all"}));
   bench_cmd->add_option("--out", bench.out,
                         "CSV file (one suite) or directory (all); default out/bench/SUITE.csv");
   bench_cmd->add_flag("--quick", bench.quick, "reduced sweeps (seconds instead of minutes)");

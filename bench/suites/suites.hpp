@@ -23,8 +23,9 @@ std::vector<Table> scaling_suite(const SuiteOptions& options);
 std::vector<Table> features_suite(const SuiteOptions& options);
 // Needs EGL / OpenGL 4.5 (throws vis::GlUnavailable without): headless rendering.
 std::vector<Table> views_suite(const SuiteOptions& options);
+std::vector<Table> rendering_suite(const SuiteOptions& options);
 
-inline constexpr const char* kSuiteNames[] = {"accuracy", "stability", "scaling", "features",
-                                              "views"};
+inline constexpr const char* kSuiteNames[] = {"accuracy", "stability", "scaling",
+                                              "features", "views",     "rendering"};
 
 }  // namespace clothlab::bench

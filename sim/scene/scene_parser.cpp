@@ -87,9 +87,9 @@ constexpr std::string_view kSkyKeys[] = {"enabled", "turbidity"};
 constexpr std::string_view kPoleKeys[] = {"enabled", "radius"};
 constexpr std::string_view kMeshKeys[] = {"type",         "center",   "radius",
                                           "half_extents", "rotation", "color"};
-constexpr std::string_view kLookKeys[] = {"roughness",       "sheen",   "sheen_roughness",
-                                          "threads",         "opacity", "transmission",
-                                          "thread_fraction", "color",   "bump"};
+constexpr std::string_view kLookKeys[] = {"roughness", "sheen",        "sheen_roughness", "threads",
+                                          "opacity",   "transmission", "thread_fraction", "color",
+                                          "bump",      "subsurface"};
 
 class Reader {
  public:
@@ -528,6 +528,7 @@ class Reader {
     field(t, key, "opacity", [&](auto& n, auto& k) { look.opacity = number(n, k); });
     field(t, key, "transmission", [&](auto& n, auto& k) { look.transmission = number(n, k); });
     field(t, key, "bump", [&](auto& n, auto& k) { look.bump = number(n, k); });
+    field(t, key, "subsurface", [&](auto& n, auto& k) { look.subsurface = number(n, k); });
     field(t, key, "color", [&](auto& n, auto& k) { look.color = numbers<3>(n, k); });
   }
 

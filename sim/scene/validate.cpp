@@ -237,6 +237,7 @@ class Validator {
     within("render.cloth.opacity", c.opacity, 0.0, 1.0);
     within("render.cloth.transmission", c.transmission, 0.0, 1.0);
     within("render.cloth.bump", c.bump, 0.0, 2.0);
+    within("render.cloth.subsurface", c.subsurface, 0.0, 1.0);
     if (c.color) colour("render.cloth.color", *c.color, 1.0);
   }
 

@@ -14,6 +14,7 @@ void HeadlessRenderer::draw(Solver& solver, const ViewSettings& view) {
   diagnostics_.update(solver, view, renderer_);
   target_.bind();
   renderer_.draw(view, target_.width(), target_.height());
+  if (PassTimer* timer = renderer_.pass_timer()) timer->begin(Pass::overlay);
   diagnostics_.draw(view, renderer_);
   legends_.clear();
   if (view.legends && (diagnostics_.color_range() || diagnostics_.force_range())) {
@@ -23,6 +24,7 @@ void HeadlessRenderer::draw(Solver& solver, const ViewSettings& view) {
       legends_ = draw_legends(draw, ImVec2(0.0f, 0.0f), size, view, diagnostics_);
     });
   }
+  if (PassTimer* timer = renderer_.pass_timer()) timer->end();
 }
 
 std::vector<std::uint8_t> HeadlessRenderer::render(Solver& solver, const ViewSettings& view) {

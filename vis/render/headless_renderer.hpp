@@ -48,6 +48,7 @@ class HeadlessRenderer {
   int width() const { return target_.width(); }
   int height() const { return target_.height(); }
   std::string gl_renderer() const { return context_.renderer(); }
+  Renderer& renderer() { return renderer_; }  // e.g. to time its passes (benchmarks)
   // The light as the last render() placed it (its shadow-map matrices).
   const LightRig& light() const { return renderer_.light(); }
   // The colour-by range and the arrows of the last render().

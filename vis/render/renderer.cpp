@@ -8,6 +8,7 @@
 #include "sim/solver.hpp"
 #include "vis/colormap/colormap_texture.hpp"
 #include "vis/gl/program.hpp"
+#include "vis/passes/diffusion_pass.hpp"
 #include "vis/passes/shadow_pass.hpp"
 #include "vis/passes/sky_pass.hpp"
 #include "vis/render/scenery.hpp"
@@ -23,7 +24,12 @@ namespace {
 constexpr GLint kFloorHalfSize = 0, kFloorTileSize = 1;
 constexpr GLint kClothMode = 0, kClothTextureRepeat = 1, kClothColorBy = 2, kClothRange = 3,
                 kClothShaded = 4, kClothLook = 5, kClothMetalF0 = 6, kClothGlints = 7,
-                kClothFlatAlbedo = 9, kClothUseFlat = 10, kClothTranslucency = 11;
+                kClothFlatAlbedo = 9, kClothUseFlat = 10, kClothTranslucency = 11,
+                kClothDiffusionWeights = 12, kClothSubsurface = 15;
+// Mode 6's diffusion weights per channel (sharp term, then the three blurs of DiffusionPass;
+// each row sums to 1): red light travels farthest through the dyed yarn, blue least.
+constexpr float kDiffusionWeights[3][4] = {
+    {0.40f, 0.25f, 0.20f, 0.15f}, {0.60f, 0.25f, 0.11f, 0.04f}, {0.72f, 0.20f, 0.06f, 0.02f}};
 constexpr int kThreadTextureSize = 256;  // as the fabric albedo, so the weaves line up
 
 // std140 layout of the Frame block in shaders/frame.glsl.
@@ -81,6 +87,11 @@ Renderer::Renderer()
 
 Renderer::~Renderer() = default;
 
+void Renderer::enable_pass_timing(bool on) {
+  if (on && !timer_) timer_ = std::make_unique<PassTimer>();
+  if (!on) timer_.reset();
+}
+
 void Renderer::set_scene(const RenderSpec& spec, const Solver& solver) {
   scenery_->set_scene(spec, solver);
 }
@@ -88,8 +99,9 @@ void Renderer::set_scene(const RenderSpec& spec, const Solver& solver) {
 void Renderer::set_cloth(Solver& solver) {
   vertices_ = solver.vertex_count();
   const std::size_t n = vertices_;
-  // Static attributes: UV (i / (nu - 1), j / (nv - 1)) per cloth, then rest positions.
-  std::vector<float> fixed(5 * n);
+  // Static attributes: UV (i / (nu - 1), j / (nv - 1)) per cloth, then rest positions, then the
+  // place in the UV atlas of mode 6's diffusion (cloth k of K in rows k / K .. (k + 1) / K).
+  std::vector<float> fixed(7 * n);
   for (const ClothRange& c : solver.cloths()) {
     for (int j = 0; j < c.nv; ++j) {
       for (int i = 0; i < c.nu; ++i) {
@@ -100,6 +112,24 @@ void Renderer::set_cloth(Solver& solver) {
     }
   }
   solver.copy_rest_positions(fixed.data() + 2 * n);
+  const auto cloths = solver.cloths();
+  const float rows = static_cast<float>(std::max<std::size_t>(1, cloths.size()));
+  float longest_u = 1e-3f, longest_v = 1e-3f;
+  for (std::size_t k = 0; k < cloths.size(); ++k) {
+    const ClothRange& c = cloths[k];
+    auto rest = [&](int i, int j) {
+      const std::size_t v = 2 * n + 3 * static_cast<std::size_t>(c.offset + i + j * c.nu);
+      return glm::vec3(fixed[v], fixed[v + 1], fixed[v + 2]);
+    };
+    longest_u = std::max(longest_u, glm::length(rest(c.nu - 1, 0) - rest(0, 0)));
+    longest_v = std::max(longest_v, glm::length(rest(0, c.nv - 1) - rest(0, 0)));
+    for (int v = c.offset; v < c.offset + c.nu * c.nv; ++v) {
+      const std::size_t at = static_cast<std::size_t>(v);
+      fixed[5 * n + 2 * at] = fixed[2 * at];
+      fixed[5 * n + 2 * at + 1] = (fixed[2 * at + 1] + float(k)) / rows;
+    }
+  }
+  atlas_per_metre_ = glm::vec2(1.0f / longest_u, 1.0f / (longest_v * rows));
 
   std::vector<std::uint32_t> triangles;
   for (const auto& t : solver.triangles())
@@ -151,6 +181,9 @@ void Renderer::set_cloth(Solver& solver) {
                        nullptr, GL_DYNAMIC_STORAGE_BIT);
   glVertexArrayVertexBuffer(cloth_vao_.get(), 5, tangent_vbo_.get(), 0, 4 * sizeof(float));
   attribute(cloth_vao_.get(), 5, 5, 4);
+  glVertexArrayVertexBuffer(cloth_vao_.get(), 6, static_vbo_.get(),
+                            static_cast<GLintptr>(5 * n * sizeof(float)), 2 * sizeof(float));
+  attribute(cloth_vao_.get(), 6, 6, 2);
   glVertexArrayElementBuffer(cloth_vao_.get(), triangle_ebo_.get());
   glVertexArrayElementBuffer(line_vao_.get(), line_ebo_.get());
   staging_.resize(6 * n);
@@ -285,11 +318,27 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, frame_ubo_.get());
 
   if (shadows) {
+    if (timer_) timer_->begin(Pass::shadow);
     draw_shadow_map(view, translucent);
     shadow_->bind_textures();
   } else {
     shadow_.reset();  // nothing needs the map: its memory goes too
   }
+  // Mode 6's light through the yarn: its own passes before the main one.
+  const bool subsurface =
+      view.mode == DisplayMode::weave && view.look.subsurface > 0.0 && triangle_indices_ > 0;
+  if (subsurface) {
+    if (timer_) timer_->begin(Pass::diffusion);
+    if (!diffusion_) diffusion_ = std::make_unique<DiffusionPass>();
+    update_tangents();
+    set_weave_bump(view.look.bump);
+    glBindTextureUnit(3, weave_normals_.get());
+    diffusion_->run(cloth_vao_.get(), triangle_indices_, atlas_per_metre_, view.fabric_repeat);
+    diffusion_->bind_results();
+  } else {
+    diffusion_.reset();
+  }
+  if (timer_) timer_->begin(Pass::scene);
   // The main pass draws into what the caller bound (the shadow pass bound its own).
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
   glViewport(0, 0, width, height);
@@ -359,6 +408,14 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
       update_tangents();
       set_weave_bump(view.look.bump);
       glBindTextureUnit(3, weave_normals_.get());
+      const float s = subsurface ? static_cast<float>(view.look.subsurface) : 0.0f;
+      float w[3][4];
+      for (int c = 0; c < 3; ++c) {
+        w[c][0] = 1.0f - s * (1.0f - kDiffusionWeights[c][0]);
+        for (int k = 1; k < 4; ++k) w[c][k] = s * kDiffusionWeights[c][k];
+      }
+      glProgramUniform4fv(cloth_program_.get(), kClothDiffusionWeights, 3, &w[0][0]);
+      glProgramUniform1i(cloth_program_.get(), kClothSubsurface, subsurface ? 1 : 0);
     }
     if (view.mode == DisplayMode::cloth_brdf) {
       update_tangents();
@@ -395,9 +452,11 @@ void Renderer::draw_sky(const ViewSettings& view, const glm::mat4& view_proj, gl
     sky_.reset();
     return;
   }
+  if (timer_) timer_->begin(Pass::sky);
   if (!sky_) sky_ = std::make_unique<SkyPass>();
   const glm::vec3 sun = light_.directional ? -light_.direction : light_.position - centre;
   sky_->draw(sun, view.sky_turbidity, view_proj, view.camera.eye());
+  if (timer_) timer_->begin(Pass::scene);  // what follows the sky belongs to the scene again
 }
 
 // Every caster into the light's depth map: the floor, then the cloth (its current positions).

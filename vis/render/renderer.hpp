@@ -10,6 +10,7 @@
 
 #include "sim/model/model.hpp"
 #include "vis/gl/objects.hpp"
+#include "vis/gl/pass_timer.hpp"
 #include "vis/render/light_rig.hpp"
 #include "vis/render/view_settings.hpp"
 
@@ -19,6 +20,7 @@ class Solver;
 
 namespace clothlab::vis {
 
+class DiffusionPass;
 class Scenery;
 class ShadowPass;
 class SkyPass;
@@ -43,6 +45,9 @@ class Renderer {
   // Draws the scene into the bound framebuffer of the given size: first the shadow map when
   // the view needs one (a shadow filter, or key 7), then the view.
   void draw(const ViewSettings& view, int width, int height);
+  // GPU time per pass (benchmarks): on, draw() brackets its passes with timer queries.
+  void enable_pass_timing(bool on);
+  PassTimer* pass_timer() { return timer_.get(); }
   // The light as the last draw() placed it (tests project through its matrices).
   const LightRig& light() const { return light_; }
 
@@ -63,8 +68,11 @@ class Renderer {
   void set_weave_bump(double strength);
 
   Program cloth_program_, floor_program_, springs_program_, depth_view_program_;
-  std::unique_ptr<ShadowPass> shadow_;  // only while shadows or the depth view are on
-  std::unique_ptr<SkyPass> sky_;        // only while the sky is shown
+  std::unique_ptr<PassTimer> timer_;          // only while a benchmark times the passes
+  std::unique_ptr<ShadowPass> shadow_;        // only while shadows or the depth view are on
+  std::unique_ptr<SkyPass> sky_;              // only while the sky is shown
+  std::unique_ptr<DiffusionPass> diffusion_;  // only while mode 6 shows subsurface light
+  glm::vec2 atlas_per_metre_{1.0f};           // UV-atlas units per metre of cloth (u, v)
   std::unique_ptr<Scenery> scenery_;
   LightRig light_;
   // A sphere around the cloth's current positions (update_cloth); the light's frustum holds it

@@ -1,0 +1,141 @@
+// `clothlab bench --suite rendering`: what each display mode and shadow filter costs per
+// headless frame, split by pass with GPU timer queries (vis/gl/pass_timer.hpp): the shadow map,
+// the scene (floor, scenery, cloth), the sky and the overlays (arrows, colour bars); and the
+// default scene with every optional pass off against the usual mode 3. The scene is the default
+// one with a sphere, a box and a torus knot beside the cloth, so shadows fall on objects too.
+// Variants are measured round-robin, several rounds, median per variant (features_suite).
+#include <algorithm>
+#include <functional>
+#include <ostream>
+
+#include "bench/suites/step_timing.hpp"
+#include "bench/suites/suites.hpp"
+#include "sim/scene/scene_parser.hpp"
+#include "sim/solver.hpp"
+#include "vis/gl/gl.hpp"
+#include "vis/render/headless_renderer.hpp"
+
+namespace clothlab::bench {
+namespace {
+
+struct Variant {
+  std::string name;
+  std::function<void(vis::ViewSettings&)> edit;
+};
+
+MeshSpec mesh(MeshKind kind, Vec3d centre, double radius, Vec3d colour) {
+  MeshSpec m;
+  m.kind = kind;
+  m.center = centre;
+  m.radius = radius;
+  m.half_extents = {radius, radius, radius};
+  m.color = colour;
+  return m;
+}
+
+}  // namespace
+
+std::vector<Table> rendering_suite(const SuiteOptions& o) {
+  const int width = o.quick ? 320 : 1280, height = o.quick ? 240 : 720;
+  const int rounds = o.quick ? 1 : 5, frames = o.quick ? 1 : 3;
+  Scene scene =
+      parse_scene_file(CLOTHLAB_DEFAULT_SCENE, {"solver.threads=" + std::to_string(o.threads)});
+  scene.render.meshes = {mesh(MeshKind::sphere, {-1.4, 0.4, 0.8}, 0.4, {0.8, 0.3, 0.2}),
+                         mesh(MeshKind::box, {1.5, 0.3, 0.6}, 0.3, {0.3, 0.5, 0.8}),
+                         mesh(MeshKind::torus_knot, {0.0, 0.5, 1.4}, 0.45, {0.85, 0.75, 0.3})};
+  auto solver = make_solver(scene);
+  vis::HeadlessRenderer renderer(width, height);
+  renderer.set_cloth(*solver);
+  renderer.set_scene(scene.render, *solver);
+  renderer.renderer().enable_pass_timing(true);
+  const vis::ViewSettings base = vis::scene_view(scene, *solver);
+
+  auto mode = [](vis::DisplayMode m, ShadowFilter f) {
+    return [m, f](vis::ViewSettings& v) {
+      v.mode = m;
+      v.shadows = f;
+    };
+  };
+  const std::vector<Variant> variants = {
+      {"mode 3, every optional pass off (no shadows, no sky)",
+       [](vis::ViewSettings& v) {
+         v.mode = vis::DisplayMode::lambert;
+         v.shadows = ShadowFilter::none;
+         v.sky = false;
+       }},
+      {"mode 3, sky, no shadows", mode(vis::DisplayMode::lambert, ShadowFilter::none)},
+      {"mode 3, sky, PCF (the default)", mode(vis::DisplayMode::lambert, ShadowFilter::pcf)},
+      {"mode 3, sky, PCSS", mode(vis::DisplayMode::lambert, ShadowFilter::pcss)},
+      {"mode 4 cloth BRDF, PCF", mode(vis::DisplayMode::cloth_brdf, ShadowFilter::pcf)},
+      {"mode 5 translucent, coloured PCF", mode(vis::DisplayMode::translucent, ShadowFilter::pcf)},
+      {"mode 6 weave relief + subsurface, PCF", mode(vis::DisplayMode::weave, ShadowFilter::pcf)},
+      {"mode 6 weave relief, no subsurface, PCF",
+       [](vis::ViewSettings& v) {
+         v.mode = vis::DisplayMode::weave;
+         v.shadows = ShadowFilter::pcf;
+         v.look.subsurface = 0.0;
+       }},
+      {"mode 7 light depth map", mode(vis::DisplayMode::light_depth, ShadowFilter::pcf)},
+      {"mode 3, PCF, force arrows + colour bar",
+       [](vis::ViewSettings& v) {
+         v.shadows = ShadowFilter::pcf;
+         v.arrows.force = true;
+       }},
+  };
+
+  struct Series {
+    std::vector<double> pass[vis::kPassCount], gpu, wall;
+  };
+  std::vector<Series> series(variants.size());
+  for (int round = 0; round < rounds; ++round) {
+    for (std::size_t k = 0; k < variants.size(); ++k) {
+      vis::ViewSettings view = base;
+      variants[k].edit(view);
+      // An untimed frame first: maps and textures a variant needs are built on its first frame.
+      renderer.draw(*solver, view);
+      glFinish();
+      (void)renderer.renderer().pass_timer()->collect();
+      std::array<double, vis::kPassCount> sum{};
+      double wall = 0.0;
+      for (int f = 0; f < frames; ++f) {
+        Stopwatch clock;
+        (void)renderer.render(*solver, view);  // draw, resolve, read back
+        wall += clock.seconds();
+        const auto ms = renderer.renderer().pass_timer()->collect();
+        for (std::size_t p = 0; p < vis::kPassCount; ++p) sum[p] += ms[p];
+      }
+      double gpu = 0.0;
+      for (std::size_t p = 0; p < vis::kPassCount; ++p) {
+        series[k].pass[p].push_back(sum[p] / frames);
+        gpu += sum[p] / frames;
+      }
+      series[k].gpu.push_back(gpu);
+      series[k].wall.push_back(1e3 * wall / frames);
+    }
+    if (o.log) *o.log << "rendering: round " << round + 1 << " of " << rounds << " done\n";
+  }
+
+  Table table;
+  table.title = "Render cost per headless frame: " + std::string(CLOTHLAB_DEFAULT_SCENE) +
+                " + 3 meshes, " + std::to_string(width) + "x" + std::to_string(height) +
+                " (4x MSAA) on " + renderer.gl_renderer() +
+                "; pass times from GPU timer queries, frame = draw + resolve + readback (wall); "
+                "median of " +
+                std::to_string(rounds) + " rounds of " + std::to_string(frames) + " frames";
+  table.columns = {"variant",        "shadow map (ms)", "diffusion (ms)",
+                   "scene (ms)",     "sky (ms)",        "overlay (ms)",
+                   "GPU total (ms)", "frame wall (ms)", "frame / all off"};
+  const double reference = median(series[0].wall);
+  for (std::size_t k = 0; k < variants.size(); ++k) {
+    const Series& s = series[k];
+    std::vector<std::string> row = {variants[k].name};
+    for (std::size_t p = 0; p < vis::kPassCount; ++p) row.push_back(fixed(median(s.pass[p]), 2));
+    row.push_back(fixed(median(s.gpu), 2));
+    row.push_back(fixed(median(s.wall), 2));
+    row.push_back(fixed(median(s.wall) / reference, 3));
+    table.add(row);
+  }
+  return {table};
+}
+
+}  // namespace clothlab::bench

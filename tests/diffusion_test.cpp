@@ -1,0 +1,147 @@
+// Mode 6's texture-space diffusion (vis/passes/diffusion_pass.cpp) on real pixels: blurring a
+// smoothly lit cloth changes nothing in its interior (the blurs preserve the irradiance and the
+// atlas maps back where it came from), and across a sharp shadow edge on the cloth the light
+// spreads farthest in red and least in blue, as the weights say.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "sim/solver.hpp"
+#include "test_scenes.hpp"
+#include "vis/render/headless_renderer.hpp"
+
+namespace clothlab {
+namespace {
+
+constexpr int kW = 320, kH = 240;
+
+double linear(int byte) {
+  const double c = byte / 255.0;
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+// A white horizontal 1.5 m sheet at 0.5 m, free, without gravity (it stays as built).
+Scene white_sheet() {
+  Scene s = testing::sheet(24, 1.5, 0.2, 100.0, IntegratorKind::symplectic_euler, 1e-3);
+  s.cloths[0].origin = {-0.75, 0.5, -0.75};
+  s.cloths[0].u_axis = {1.0, 0.0, 0.0};
+  s.cloths[0].v_axis = {0.0, 0.0, 1.0};
+  s.forces.gravity = {0.0, 0.0, 0.0};
+  return s;
+}
+
+class Diffusion : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    renderer_ = std::make_unique<vis::HeadlessRenderer>(kW, kH);
+    solver_ = make_solver(white_sheet());
+    renderer_->set_cloth(*solver_);
+  }
+  static void TearDownTestSuite() {
+    solver_.reset();
+    renderer_.reset();
+  }
+  // From above, the sheet filling the view; mode 6 without relief, white, no sky or ambient.
+  static vis::ViewSettings view() {
+    vis::ViewSettings v = vis::default_view(*solver_);
+    v.mode = vis::DisplayMode::weave;
+    v.camera.target = {0.0f, 0.5f, 0.0f};
+    v.camera.pitch_deg = 89.0f;
+    v.camera.yaw_deg = 0.0f;
+    v.camera.distance = 1.6f;
+    v.sky = false;
+    v.ambient = 0.0f;
+    v.look.color = Vec3d{1.0, 1.0, 1.0};
+    v.look.bump = 0.0;
+    return v;
+  }
+  static std::vector<std::uint8_t> shoot(const vis::ViewSettings& v,
+                                         const std::vector<MeshSpec>& meshes) {
+    RenderSpec spec;
+    spec.pole.enabled = false;
+    spec.meshes = meshes;
+    renderer_->set_scene(spec, *solver_);
+    return renderer_->render(*solver_, v);
+  }
+  static std::array<double, 3> at(const std::vector<std::uint8_t>& img, const vis::ViewSettings& v,
+                                  glm::vec3 p) {
+    const glm::vec4 c = vis::view_projection(v.camera, kW, kH) * glm::vec4(p, 1.0f);
+    const int x = int((c.x / c.w * 0.5f + 0.5f) * kW), y = int((0.5f - c.y / c.w * 0.5f) * kH);
+    const std::size_t k = 4 * (static_cast<std::size_t>(y) * kW + static_cast<std::size_t>(x));
+    return {linear(img[k]), linear(img[k + 1]), linear(img[k + 2])};
+  }
+
+  static std::unique_ptr<vis::HeadlessRenderer> renderer_;
+  static std::unique_ptr<Solver> solver_;
+};
+std::unique_ptr<vis::HeadlessRenderer> Diffusion::renderer_;
+std::unique_ptr<Solver> Diffusion::solver_;
+
+// A spot light close above one corner: the irradiance varies smoothly across the sheet (over
+// tens of centimetres, the blurs span millimetres), so with diffusion every interior point keeps
+// its brightness within 2 %, in every channel. A flipped or shifted atlas would move the light.
+TEST_F(Diffusion, SmoothLightIsUnchangedInTheInterior) {
+  vis::ViewSettings v = view();
+  v.light_type = LightType::spot;
+  v.light_position = {-0.4f, 1.3f, -0.3f};
+  v.light_target = glm::vec3(0.0f, 0.5f, 0.0f);
+  v.light_intensity = 0.8f;
+  v.shadows = ShadowFilter::none;
+  v.look.subsurface = 0.0;
+  const auto sharp = shoot(v, {});
+  v.look.subsurface = 1.0;
+  const auto diffused = shoot(v, {});
+  for (float x : {-0.5f, -0.2f, 0.1f, 0.4f})
+    for (float z : {-0.5f, -0.1f, 0.3f, 0.5f}) {
+      const auto a = at(sharp, v, {x, 0.5f, z}), b = at(diffused, v, {x, 0.5f, z});
+      for (int ch = 0; ch < 3; ++ch)
+        EXPECT_NEAR(b[ch], a[ch], 0.02 * a[ch] + 1e-4)
+            << "at (" << x << ", " << z << ") channel " << ch;
+    }
+}
+
+// A plate high on the left (x < -0.7 m, 1.2 m up) and a directional light travelling 45 degrees
+// towards +x: the plate's shadow edge lands at x = 0 on the sheet, sharp (PCF, no light size).
+// Across it, the light on the sheet rises from 10 % to 90 % over a width that diffusion widens:
+// red most, then green, then blue (the weights give red the widest blurs).
+TEST_F(Diffusion, ShadowEdgeSpreadsRedWidest) {
+  MeshSpec plate;
+  plate.kind = MeshKind::box;
+  plate.center = {-1.45, 1.2, 0.0};
+  plate.half_extents = {0.75, 0.01, 1.0};
+  vis::ViewSettings v = view();
+  v.light_type = LightType::directional;
+  const float s = std::sqrt(0.5f);
+  v.light_direction = {s, -s, 0.0f};
+  v.light_intensity = 1.0f;
+  v.light_size = 0.0f;
+  v.shadows = ShadowFilter::pcf;
+  v.camera.distance = 0.5f;  // about 1 mm per pixel at the edge
+  auto widths = [&](double subsurface) {
+    v.look.subsurface = subsurface;
+    const auto img = shoot(v, {plate});
+    std::array<double, 3> width{};
+    const auto lit = at(img, v, {0.14f, 0.5f, 0.0f}), dark = at(img, v, {-0.14f, 0.5f, 0.0f});
+    for (int ch = 0; ch < 3; ++ch) {
+      double x10 = -0.12, x90 = -0.12;
+      for (float x = -0.12f; x <= 0.12f; x += 0.0005f) {
+        const double f = (at(img, v, {x, 0.5f, 0.0f})[ch] - dark[ch]) / (lit[ch] - dark[ch]);
+        if (f < 0.1) x10 = x;
+        if (f < 0.9) x90 = x;
+      }
+      width[ch] = x90 - x10;
+    }
+    return width;
+  };
+  const auto sharp = widths(0.0), soft = widths(1.0);
+  EXPECT_GT(soft[0], sharp[0] + 0.002) << "red: " << sharp[0] << " -> " << soft[0] << " m";
+  EXPECT_GT(soft[0], soft[1]) << "red " << soft[0] << ", green " << soft[1];
+  EXPECT_GE(soft[1], soft[2]) << "green " << soft[1] << ", blue " << soft[2];
+}
+
+}  // namespace
+}  // namespace clothlab
