@@ -1,14 +1,13 @@
-// GPU time per render pass through OpenGL timer queries (GL_TIME_ELAPSED, core since 3.3): for
-// benchmarks, which switch it on; a renderer without it issues no queries. A pass may be timed
-// in several segments in one frame (the scene before and after the sky); collect() sums them.
-// Reading the results waits for the GPU, so a frame's times are read after it has finished.
+// Time per render pass, for benchmarks (which switch it on; a renderer without it adds nothing).
+// Each boundary between passes waits for the GL to finish (glFinish) and reads a steady clock:
+// Mesa's llvmpipe renders lazily, at the next flush, so GL timer queries there charge one pass
+// with another's work, while finishing each pass charges every pass with its own. The price is
+// that passes no longer overlap, so the sum is a little above an unmeasured frame.
 #pragma once
 
 #include <array>
+#include <chrono>
 #include <cstddef>
-#include <vector>
-
-#include "vis/gl/gl.hpp"
 
 namespace clothlab::vis {
 
@@ -17,21 +16,17 @@ inline constexpr std::size_t kPassCount = static_cast<std::size_t>(Pass::count);
 
 class PassTimer {
  public:
-  PassTimer() = default;
-  ~PassTimer();
-  PassTimer(const PassTimer&) = delete;
-  PassTimer& operator=(const PassTimer&) = delete;
-
-  void begin(Pass pass);  // ends the open segment, if any, and opens one for `pass`
+  // Finishes the open pass (if any) and starts `pass`; a pass may run in several segments in a
+  // frame (the scene before and after the sky), which add up.
+  void begin(Pass pass);
   void end();
-  // Milliseconds of GPU time per pass in the frame so far (0 for passes not drawn); starts the
-  // next frame.
+  // Milliseconds per pass in the frame so far (0 for passes not drawn); starts the next frame.
   std::array<double, kPassCount> collect();
 
  private:
-  std::vector<GLuint> pool_;    // query objects, reused from frame to frame
-  std::vector<Pass> segments_;  // the pass of each query used this frame, in order
-  bool open_ = false;
+  std::array<double, kPassCount> ms_{};
+  Pass open_pass_ = Pass::count;
+  std::chrono::steady_clock::time_point started_;
 };
 
 }  // namespace clothlab::vis

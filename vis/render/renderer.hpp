@@ -45,7 +45,7 @@ class Renderer {
   // Draws the scene into the bound framebuffer of the given size: first the shadow map when
   // the view needs one (a shadow filter, or key 7), then the view.
   void draw(const ViewSettings& view, int width, int height);
-  // GPU time per pass (benchmarks): on, draw() brackets its passes with timer queries.
+  // Time per pass (benchmarks): on, draw() brackets its passes (vis/gl/pass_timer.hpp).
   void enable_pass_timing(bool on);
   PassTimer* pass_timer() { return timer_.get(); }
   // The light as the last draw() placed it (tests project through its matrices).
