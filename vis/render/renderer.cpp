@@ -334,7 +334,6 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
     set_weave_bump(view.look.bump);
     glBindTextureUnit(3, weave_normals_.get());
     diffusion_->run(cloth_vao_.get(), triangle_indices_, atlas_per_metre_, view.fabric_repeat);
-    diffusion_->bind_results();
   } else {
     diffusion_.reset();
   }
@@ -419,6 +418,7 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
       }
       glProgramUniform4fv(cloth_program_.get(), kClothDiffusionWeights, 3, &w[0][0]);
       glProgramUniform1i(cloth_program_.get(), kClothSubsurface, subsurface ? 1 : 0);
+      if (subsurface) diffusion_->bind_results();
     }
     if (view.mode == DisplayMode::cloth_brdf) {
       update_tangents();
