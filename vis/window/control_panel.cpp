@@ -227,7 +227,7 @@ std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view
   ImGui::RadioButton("2 normals", &mode, 2);
   ImGui::SameLine();
   ImGui::RadioButton("3 shaded", &mode, 3);
-  ImGui::SameLine();
+  // The realistic modes on a second row: one row does not fit the panel's width.
   ImGui::RadioButton("4 cloth", &mode, 4);
   ImGui::SameLine();
   ImGui::RadioButton("5 sheer", &mode, 5);

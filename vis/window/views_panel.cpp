@@ -31,7 +31,8 @@ bool enum_combo(const char* label, E& value, std::initializer_list<E> values, Na
 }  // namespace
 
 void draw_view_editors(ViewSettings& view) {
-  if (!ImGui::CollapsingHeader("Scientific views", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  // Closed at first: open, the panel is taller than a small window.
+  if (!ImGui::CollapsingHeader("Scientific views")) return;
   ColorSettings& c = view.color;
   const ScalarField before = c.field;
   enum_combo("colour by", c.field,
