@@ -28,6 +28,7 @@ layout(binding = 2) uniform sampler2D u_threads;  // r: metal thread mask, g: we
 layout(binding = 10) uniform sampler2D u_diffused[3];
 layout(location = 12) uniform vec4 u_diffusion_weights[3];  // r, g, b rows: (w0, w1, w2, w3)
 layout(location = 15) uniform int u_subsurface;            // 1: the blurred terms are in use
+layout(location = 16) uniform int u_glints;                // mode 4: 1 = the glint lights are on
 
 const vec3 kNanColor = vec3(1.0, 0.0, 1.0);  // magenta: no finite value
 
@@ -65,7 +66,7 @@ vec3 cloth_brdf_lit(vec3 n, vec3 albedo) {
     vec3 fm = brdf_metal_aniso(u_metal_f0, 0.35, 0.08, n, along, across, v, l);
     radiance = kPi * mix(f, fm, metal) * light_irradiance(v_world) * nl * vis;
   }
-  for (int i = 0; i < 2; ++i) {
+  for (int i = 0; i < 2 * u_glints; ++i) {
     vec3 to_glint = u_glint_lights[i] - v_world;
     vec3 gl = normalize(to_glint);
     float gnl = dot(n, gl);

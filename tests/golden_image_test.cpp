@@ -212,6 +212,25 @@ TEST_F(GoldenImage, FlatWeaveMapIsMode3) {
   EXPECT_GT(changed, 500);  // at 320 x 240 the weave is fine and partly filtered away
 }
 
+// The glint lights are specular only, for the metal threads: where there is no metal (threads
+// "none") switching them changes no pixel; with gold threads they add highlights.
+TEST_F(GoldenImage, GlintLightsTouchOnlyTheMetal) {
+  vis::ViewSettings view = vis::default_view(*solver_);
+  view.mode = vis::DisplayMode::cloth_brdf;
+  auto changed = [&](ThreadMetal threads) {
+    view.look.threads = threads;
+    view.look.glints = false;
+    const std::vector<std::uint8_t> off = renderer_->render(*solver_, view);
+    view.look.glints = true;
+    const std::vector<std::uint8_t> on = renderer_->render(*solver_, view);
+    long n = 0;
+    for (std::size_t i = 0; i < on.size(); ++i) n += on[i] != off[i];
+    return n;
+  };
+  EXPECT_EQ(changed(ThreadMetal::none), 0);
+  EXPECT_GT(changed(ThreadMetal::gold), 200);
+}
+
 TEST_F(GoldenImage, LightDepthView) {
   vis::ViewSettings view = vis::default_view(*solver_);
   view.mode = vis::DisplayMode::light_depth;

@@ -62,6 +62,7 @@ struct ClothLookSpec {
   double transmission = 0.6;       // mode 5: light a thread lets through, tau (times its albedo)
   double bump = 1.0;               // mode 6: the weave's relief (normal-map strength), 0..2
   double subsurface = 1.0;         // mode 6: share of light spread through the yarn, 0..1
+  bool glints = true;              // mode 4: two specular-only lights beside the camera
   std::optional<Vec3d> color;      // a plain sRGB albedo instead of the woven texture
 };
 

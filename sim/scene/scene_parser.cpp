@@ -89,7 +89,7 @@ constexpr std::string_view kMeshKeys[] = {"type",         "center",   "radius",
                                           "half_extents", "rotation", "color"};
 constexpr std::string_view kLookKeys[] = {"roughness", "sheen",        "sheen_roughness", "threads",
                                           "opacity",   "transmission", "thread_fraction", "color",
-                                          "bump",      "subsurface"};
+                                          "bump",      "subsurface",   "glints"};
 
 class Reader {
  public:
@@ -529,6 +529,7 @@ class Reader {
     field(t, key, "transmission", [&](auto& n, auto& k) { look.transmission = number(n, k); });
     field(t, key, "bump", [&](auto& n, auto& k) { look.bump = number(n, k); });
     field(t, key, "subsurface", [&](auto& n, auto& k) { look.subsurface = number(n, k); });
+    field(t, key, "glints", [&](auto& n, auto& k) { look.glints = boolean(n, k); });
     field(t, key, "color", [&](auto& n, auto& k) { look.color = numbers<3>(n, k); });
   }
 

@@ -25,7 +25,7 @@ constexpr GLint kFloorHalfSize = 0, kFloorTileSize = 1;
 constexpr GLint kClothMode = 0, kClothTextureRepeat = 1, kClothColorBy = 2, kClothRange = 3,
                 kClothShaded = 4, kClothLook = 5, kClothMetalF0 = 6, kClothGlints = 7,
                 kClothFlatAlbedo = 9, kClothUseFlat = 10, kClothTranslucency = 11,
-                kClothDiffusionWeights = 12, kClothSubsurface = 15;
+                kClothDiffusionWeights = 12, kClothSubsurface = 15, kClothGlintsOn = 16;
 // Mode 6's diffusion weights per channel (sharp term, then the three blurs of DiffusionPass;
 // each row sums to 1): red light travels farthest through the dyed yarn, blue least.
 constexpr float kDiffusionWeights[3][4] = {
@@ -439,6 +439,7 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
       const glm::vec3 glints[2] = {eye + d * (0.6f * right + 0.4f * up),
                                    eye + d * (-0.7f * right + 0.2f * up)};
       glProgramUniform3fv(cloth_program_.get(), kClothGlints, 2, &glints[0][0]);
+      glProgramUniform1i(cloth_program_.get(), kClothGlintsOn, look.glints ? 1 : 0);
     }
     glBindVertexArray(cloth_vao_.get());
     glDrawElements(GL_TRIANGLES, triangle_indices_, GL_UNSIGNED_INT, nullptr);
