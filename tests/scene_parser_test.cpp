@@ -289,8 +289,7 @@ rotation = [0, 45, 0]
                "unknown shadow filter \"vsm\" (valid: none, pcf, pcss)");
   expect_error(kMinimal + "[render]\nshadow_map_size = 100\n", "render.shadow_map_size", 10,
                "between 256 and 8192");
-  expect_error(kMinimal + "[render.light]\nintensity = -1\n", "render.light.intensity", 10,
-               ">= 0");
+  expect_error(kMinimal + "[render.light]\nintensity = -1\n", "render.light.intensity", 10, ">= 0");
   expect_error(kMinimal + "[render.light]\nposition = [0, 1, 0]\ntarget = [0, 1, 0]\n",
                "render.light.target", 11, "must differ");
   expect_error(kMinimal + "[render.sky]\nturbidity = 20\n", "render.sky.turbidity", 10,
@@ -301,10 +300,9 @@ rotation = [0, 45, 0]
   expect_error(kMinimal + "[[render.meshes]]\ntype = \"box\"\nhalf_extents = [1, 0, 1]\n",
                "render.meshes[0].half_extents[1]", 11, "> 0");
   // A missing key is reported at its table's header.
-  expect_error(kMinimal + "[[render.meshes]]\nradius = 1\n", "render.meshes[0].type", 9,
-               "missing");
-  expect_error(kMinimal + "[[render.meshes]]\ntype = \"teapot\"\n", "render.meshes[0].type",
-               10, "unknown mesh type \"teapot\"");
+  expect_error(kMinimal + "[[render.meshes]]\nradius = 1\n", "render.meshes[0].type", 9, "missing");
+  expect_error(kMinimal + "[[render.meshes]]\ntype = \"teapot\"\n", "render.meshes[0].type", 10,
+               "unknown mesh type \"teapot\"");
   expect_error(kMinimal + "[render.cloth]\nopacity = 1.5\n", "render.cloth.opacity", 10,
                "between 0 and 1");
 }

@@ -25,7 +25,7 @@ struct LegendBar {
 
 // Draws the bars for what the last Diagnostics::update showed (nothing when no range is on) and
 // returns where they went, right-most first.
-std::vector<LegendBar> draw_legends(ImDrawList* draw, ImVec2 area_min, ImVec2 area_max, const ViewSettings& view,
-                  const Diagnostics& diagnostics);
+std::vector<LegendBar> draw_legends(ImDrawList* draw, ImVec2 area_min, ImVec2 area_max,
+                                    const ViewSettings& view, const Diagnostics& diagnostics);
 
 }  // namespace clothlab::vis
