@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "pixels.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
 #include "vis/render/headless_renderer.hpp"
@@ -20,10 +21,6 @@ namespace {
 constexpr int kW = 320, kH = 240;
 constexpr double kCoverage = 0.6, kTau = 0.5;
 const Vec3d kRed{0.8, 0.1, 0.1};  // sRGB albedo of the sheets
-
-double linear(double c) {
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
 
 // Horizontal 1 m sheets at the given heights, free (no gravity, so they stay as built).
 Scene sheets(const std::vector<double>& heights) {
@@ -91,13 +88,11 @@ class ColouredShadow : public ::testing::Test {
       return renderer_->render(*f.solver, v);
     }();
     const std::vector<std::uint8_t> shadow_img = renderer_->render(*f.solver, f.view);
-    const glm::vec4 c = vis::view_projection(f.view.camera, kW, kH) * glm::vec4(p, 1.0f);
-    const int x = int((c.x / c.w * 0.5f + 0.5f) * kW), y = int((0.5f - c.y / c.w * 0.5f) * kH);
-    const std::size_t k = 4 * (static_cast<std::size_t>(y) * kW + static_cast<std::size_t>(x));
+    const std::size_t k = testing::pixel_index(f.view.camera, kW, kH, p);
     std::array<double, 3> out{};
     for (int ch = 0; ch < 3; ++ch)
-      out[ch] =
-          linear(shadow_img[k + ch] / 255.0) / std::max(linear(lit_img[k + ch] / 255.0), 1e-6);
+      out[ch] = testing::srgb_byte_to_linear(shadow_img[k + ch]) /
+                std::max(testing::srgb_byte_to_linear(lit_img[k + ch]), 1e-6);
     return out;
   }
 
@@ -107,7 +102,8 @@ std::unique_ptr<vis::HeadlessRenderer> ColouredShadow::renderer_;
 
 std::array<double, 3> transmittance() {
   std::array<double, 3> t{};
-  for (int ch = 0; ch < 3; ++ch) t[ch] = (1.0 - kCoverage) + kCoverage * kTau * linear(kRed[ch]);
+  for (int ch = 0; ch < 3; ++ch)
+    t[ch] = (1.0 - kCoverage) + kCoverage * kTau * testing::srgb_to_linear(kRed[ch]);
   return t;
 }
 

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <memory>
 
+#include "pixels.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
 #include "vis/colormap/colormap.hpp"
@@ -60,9 +61,8 @@ int off_by(const std::array<int, 3>& p, glm::vec3 c) {
 }
 
 std::array<int, 2> pixel_of(const vis::ViewSettings& view, glm::vec3 p) {
-  const glm::vec4 c = vis::view_projection(view.camera, kWidth, kHeight) * glm::vec4(p, 1.0f);
-  const double x = (c.x / c.w * 0.5 + 0.5) * kWidth, y = (c.y / c.w * 0.5 + 0.5) * kHeight;
-  return {static_cast<int>(std::floor(x)), kHeight - 1 - static_cast<int>(std::floor(y))};
+  const glm::vec2 s = testing::screen_position(view.camera, kWidth, kHeight, p);
+  return {static_cast<int>(std::floor(s.x)), static_cast<int>(std::floor(s.y))};
 }
 
 class DiagnosticsTest : public ::testing::Test {

@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "pixels.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
 #include "vis/render/headless_renderer.hpp"
@@ -18,11 +19,6 @@ namespace clothlab {
 namespace {
 
 constexpr int kW = 320, kH = 240;
-
-double linear(int byte) {
-  const double c = byte / 255.0;
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
 
 // A white horizontal 1.5 m sheet at 0.5 m, free, without gravity (it stays as built).
 Scene white_sheet() {
@@ -69,10 +65,9 @@ class Diffusion : public ::testing::Test {
   }
   static std::array<double, 3> at(const std::vector<std::uint8_t>& img, const vis::ViewSettings& v,
                                   glm::vec3 p) {
-    const glm::vec4 c = vis::view_projection(v.camera, kW, kH) * glm::vec4(p, 1.0f);
-    const int x = int((c.x / c.w * 0.5f + 0.5f) * kW), y = int((0.5f - c.y / c.w * 0.5f) * kH);
-    const std::size_t k = 4 * (static_cast<std::size_t>(y) * kW + static_cast<std::size_t>(x));
-    return {linear(img[k]), linear(img[k + 1]), linear(img[k + 2])};
+    const std::size_t k = testing::pixel_index(v.camera, kW, kH, p);
+    return {testing::srgb_byte_to_linear(img[k]), testing::srgb_byte_to_linear(img[k + 1]),
+            testing::srgb_byte_to_linear(img[k + 2])};
   }
 
   static std::unique_ptr<vis::HeadlessRenderer> renderer_;

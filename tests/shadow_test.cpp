@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include "pixels.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
 #include "vis/render/headless_renderer.hpp"
@@ -20,17 +21,13 @@ namespace {
 
 constexpr int kW = 320, kH = 240;
 
-// sRGB byte -> linear (IEC 61966-2-1).
-double linear(int byte) {
-  const double c = byte / 255.0;
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-
 struct Shot {
   std::vector<std::uint8_t> rgba;
   double lum(int x, int y) const {  // linear, mean of the channels
     const std::size_t k = 4 * (static_cast<std::size_t>(y) * kW + static_cast<std::size_t>(x));
-    return (linear(rgba[k]) + linear(rgba[k + 1]) + linear(rgba[k + 2])) / 3.0;
+    return (testing::srgb_byte_to_linear(rgba[k]) + testing::srgb_byte_to_linear(rgba[k + 1]) +
+            testing::srgb_byte_to_linear(rgba[k + 2])) /
+           3.0;
   }
   int byte(int x, int y, int c) const {
     return rgba[4 * (static_cast<std::size_t>(y) * kW + static_cast<std::size_t>(x)) + c];
@@ -94,8 +91,7 @@ class ShadowTest : public ::testing::Test {
     return {renderer_->render(*solver_, v)};
   }
   static glm::vec2 pixel(const vis::ViewSettings& v, glm::vec3 p) {
-    const glm::vec4 c = vis::view_projection(v.camera, kW, kH) * glm::vec4(p, 1.0f);
-    return {(c.x / c.w * 0.5f + 0.5f) * kW, (0.5f - c.y / c.w * 0.5f) * kH};
+    return testing::screen_position(v.camera, kW, kH, p);
   }
 
   static std::unique_ptr<vis::HeadlessRenderer> renderer_;
@@ -144,8 +140,8 @@ TEST_F(ShadowTest, LitFloorHasNoAcne) {
 // shadows at p's pixel (the floor's texture cancels).
 double visibility(const Shot& shadowed, const Shot& plain, const vis::ViewSettings& v,
                   glm::vec3 p) {
-  const glm::vec4 c = vis::view_projection(v.camera, kW, kH) * glm::vec4(p, 1.0f);
-  const int x = int((c.x / c.w * 0.5f + 0.5f) * kW), y = int((0.5f - c.y / c.w * 0.5f) * kH);
+  const glm::vec2 s = testing::screen_position(v.camera, kW, kH, p);
+  const int x = int(s.x), y = int(s.y);
   return shadowed.lum(x, y) / std::max(plain.lum(x, y), 1e-6);
 }
 
