@@ -101,41 +101,89 @@ TEST_F(Diffusion, SmoothLightIsUnchangedInTheInterior) {
 
 // A plate high on the left (x < -0.7 m, 1.2 m up) and a directional light travelling 45 degrees
 // towards +x: the plate's shadow edge lands at x = 0 on the sheet, sharp (PCF, no light size).
-// Across it, the light on the sheet rises from 10 % to 90 % over a width that diffusion widens:
-// red most, then green, then blue (the weights give red the widest blurs).
-TEST_F(Diffusion, ShadowEdgeSpreadsRedWidest) {
+// The view looks down at the edge from 0.5 m, about 1 mm per pixel.
+MeshSpec shadow_plate() {
   MeshSpec plate;
   plate.kind = MeshKind::box;
   plate.center = {-1.45, 1.2, 0.0};
   plate.half_extents = {0.75, 0.01, 1.0};
-  vis::ViewSettings v = view();
+  return plate;
+}
+
+vis::ViewSettings edge_view(const vis::ViewSettings& base) {
+  vis::ViewSettings v = base;
   v.light_type = LightType::directional;
   const float s = std::sqrt(0.5f);
   v.light_direction = {s, -s, 0.0f};
   v.light_intensity = 1.0f;
   v.light_size = 0.0f;
   v.shadows = ShadowFilter::pcf;
-  v.camera.distance = 0.5f;  // about 1 mm per pixel at the edge
+  v.camera.distance = 0.5f;
+  return v;
+}
+
+// Per channel, the width in metres over which the light on the sheet (along z = 0) rises from
+// 10 % to 90 % across the plate's shadow edge.
+std::array<double, 3> edge_widths(const std::function<std::array<double, 3>(glm::vec3)>& at) {
+  std::array<double, 3> width{};
+  const auto lit = at({0.14f, 0.5f, 0.0f}), dark = at({-0.14f, 0.5f, 0.0f});
+  for (int ch = 0; ch < 3; ++ch) {
+    double x10 = -0.12, x90 = -0.12;
+    for (float x = -0.12f; x <= 0.12f; x += 0.0005f) {
+      const double f = (at({x, 0.5f, 0.0f})[ch] - dark[ch]) / (lit[ch] - dark[ch]);
+      if (f < 0.1) x10 = x;
+      if (f < 0.9) x90 = x;
+    }
+    width[ch] = x90 - x10;
+  }
+  return width;
+}
+
+// Across the plate's shadow edge diffusion widens the rise of the light: red most, then green,
+// then blue (the weights give red the widest blurs).
+TEST_F(Diffusion, ShadowEdgeSpreadsRedWidest) {
+  vis::ViewSettings v = edge_view(view());
   auto widths = [&](double subsurface) {
     v.look.subsurface = subsurface;
-    const auto img = shoot(v, {plate});
-    std::array<double, 3> width{};
-    const auto lit = at(img, v, {0.14f, 0.5f, 0.0f}), dark = at(img, v, {-0.14f, 0.5f, 0.0f});
-    for (int ch = 0; ch < 3; ++ch) {
-      double x10 = -0.12, x90 = -0.12;
-      for (float x = -0.12f; x <= 0.12f; x += 0.0005f) {
-        const double f = (at(img, v, {x, 0.5f, 0.0f})[ch] - dark[ch]) / (lit[ch] - dark[ch]);
-        if (f < 0.1) x10 = x;
-        if (f < 0.9) x90 = x;
-      }
-      width[ch] = x90 - x10;
-    }
-    return width;
+    const auto img = shoot(v, {shadow_plate()});
+    return edge_widths([&](glm::vec3 p) { return at(img, v, p); });
   };
   const auto sharp = widths(0.0), soft = widths(1.0);
   EXPECT_GT(soft[0], sharp[0] + 0.002) << "red: " << sharp[0] << " -> " << soft[0] << " m";
   EXPECT_GT(soft[0], soft[1]) << "red " << soft[0] << ", green " << soft[1];
   EXPECT_GE(soft[1], soft[2]) << "green " << soft[1] << ", blue " << soft[2];
+}
+
+// The blurs are widths in the cloth, not in its UV layout (d'Eon & Luebke's stretch map): a
+// 0.75 m sheet drawn as it was built and then stretched to twice its length across the edge
+// spreads the red light over the same width in the world, within one atlas texel of the
+// stretched sheet (1.5 m / 512). With the blur fixed in atlas units the stretched sheet's glow
+// would be twice as wide (about 1 cm more).
+TEST_F(Diffusion, StretchedClothKeepsTheWorldWidthOfItsGlow) {
+  Scene scene = white_sheet();
+  scene.cloths[0].size = {0.75, 0.75};
+  scene.cloths[0].origin = {-0.375, 0.5, -0.375};
+  std::unique_ptr<Solver> small = make_solver(scene);
+  renderer_->set_cloth(*small);
+  vis::ViewSettings v = edge_view(view());
+  v.look.subsurface = 1.0;
+  auto red_width = [&] {
+    RenderSpec spec;
+    spec.pole.enabled = false;
+    spec.meshes = {shadow_plate()};
+    renderer_->set_scene(spec, *small);
+    const auto img = renderer_->render(*small, v);
+    return edge_widths([&](glm::vec3 p) { return at(img, v, p); })[0];
+  };
+  const double built = red_width();
+  scene.cloths[0].size = {1.5, 0.75};  // the same grid twice as long along x
+  scene.cloths[0].origin = {-0.75, 0.5, -0.375};
+  small->load_state(*make_solver(scene));
+  const double stretched = red_width();
+  renderer_->set_cloth(*solver_);  // the other tests' sheet
+  EXPECT_GT(built, 0.008) << "the glow must be wide enough to tell";
+  EXPECT_NEAR(stretched, built, 1.5 / 512.0)
+      << built << " m as built, " << stretched << " m stretched";
 }
 
 }  // namespace

@@ -23,19 +23,22 @@ class DiffusionPass {
   // Draws the irradiance of the cloth (`vao` with positions 0, normals 1, uv 2, tangents 5 and
   // atlas coordinates 6) into the atlas and blurs it. atlas_per_metre: atlas uv per metre of
   // cloth along u and v. Needs the Frame block, the shadow maps and the weave normal map (unit 3)
-  // bound; leaves its own framebuffer bound.
+  // bound; leaves its own framebuffer bound. The blurs are as wide in metres of the cloth as it
+  // is now, stretched or not (a stretch map from the irradiance pass); atlas_per_metre serves
+  // only outside the cloth, where the blurs dilate its border.
   void run(GLuint vao, GLsizei index_count, glm::vec2 atlas_per_metre, float repeat);
   // Binds the three blurs to units 10, 11 and 12 (shaders/cloth.frag).
   void bind_results() const;
   int size() const { return size_; }
 
  private:
-  void blur(const Texture& source, const Texture& target, glm::vec2 sigma_uv);
+  // Blurs by a Gaussian of standard deviation `sigma` metres of cloth.
+  void blur(const Texture& source, const Texture& target, float sigma);
 
   int size_;
   Program irradiance_program_, blur_program_;
   Framebuffer fbo_;
-  Texture irradiance_, temp_;
+  Texture irradiance_, stretch_, temp_;
   std::array<Texture, 3> blurred_;
   VertexArray empty_vao_;
 };

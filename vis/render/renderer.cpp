@@ -253,22 +253,31 @@ void Renderer::set_thread_fraction(double fraction) {
 }
 
 // The weave's normal map at a relief strength (rebuilt only when it changes): linear bytes,
-// mipmapped, the same tile as the fabric albedo.
+// mipmapped, the same tile as the fabric albedo. A map given by set_normal_map wins.
 void Renderer::set_weave_bump(double strength) {
-  if (strength == weave_bump_ && weave_normals_) return;
-  const Image map = make_weave_normal_map(kThreadTextureSize, static_cast<float>(strength));
+  if (custom_normals_ || (strength == weave_bump_ && weave_normals_)) return;
+  upload_normal_map(make_weave_normal_map(kThreadTextureSize, static_cast<float>(strength)));
+  weave_bump_ = strength;
+}
+
+void Renderer::set_normal_map(const Image* map) {
+  custom_normals_ = map != nullptr;
+  weave_bump_ = -1.0;  // the procedural map is rebuilt when it is next needed
+  weave_normals_ = Texture{};
+  if (map) upload_normal_map(*map);
+}
+
+void Renderer::upload_normal_map(const Image& map) {
   weave_normals_ = make_texture(GL_TEXTURE_2D);
-  const int levels = 1 + static_cast<int>(std::log2(kThreadTextureSize));
-  glTextureStorage2D(weave_normals_.get(), levels, GL_RGBA8, kThreadTextureSize,
-                     kThreadTextureSize);
-  glTextureSubImage2D(weave_normals_.get(), 0, 0, 0, kThreadTextureSize, kThreadTextureSize,
-                      GL_RGBA, GL_UNSIGNED_BYTE, map.rgba.data());
+  const int levels = 1 + static_cast<int>(std::log2(std::max(map.width, map.height)));
+  glTextureStorage2D(weave_normals_.get(), levels, GL_RGBA8, map.width, map.height);
+  glTextureSubImage2D(weave_normals_.get(), 0, 0, 0, map.width, map.height, GL_RGBA,
+                      GL_UNSIGNED_BYTE, map.rgba.data());
   glGenerateTextureMipmap(weave_normals_.get());
   glTextureParameteri(weave_normals_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTextureParameteri(weave_normals_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameterf(weave_normals_.get(), GL_TEXTURE_MAX_ANISOTROPY, 8.0f);
   glObjectLabel(GL_TEXTURE, weave_normals_.get(), -1, "weave normal map");
-  weave_bump_ = strength;
 }
 
 void Renderer::set_scalars(const std::vector<float>& values, ScalarRange range) {

@@ -16,7 +16,8 @@
 
 namespace clothlab {
 class Solver;
-}
+struct Image;
+}  // namespace clothlab
 
 namespace clothlab::vis {
 
@@ -48,6 +49,10 @@ class Renderer {
   // Time per pass (benchmarks): on, draw() brackets its passes (vis/gl/pass_timer.hpp).
   void enable_pass_timing(bool on);
   PassTimer* pass_timer() { return timer_.get(); }
+  // Replaces mode 6's procedural weave normal map with `map` (tangent-space, encoded as in
+  // vis/textures/weave_maps.hpp), until called with nullptr. Tests give a known map to check the
+  // tangent frame.
+  void set_normal_map(const Image* map);
   // The light as the last draw() placed it (tests project through its matrices).
   const LightRig& light() const { return light_; }
 
@@ -66,6 +71,7 @@ class Renderer {
   void update_tangents();
   void set_thread_fraction(double fraction);
   void set_weave_bump(double strength);
+  void upload_normal_map(const Image& map);
 
   Program cloth_program_, floor_program_, springs_program_, depth_view_program_;
   std::unique_ptr<PassTimer> timer_;          // only while a benchmark times the passes
@@ -93,6 +99,7 @@ class Renderer {
   double thread_fraction_ = -1.0;
   Texture weave_normals_;  // mode 6: the weave's tangent-space normal map
   double weave_bump_ = -1.0;
+  bool custom_normals_ = false;  // set_normal_map gave the map
   ScalarRange scalar_range_;
   std::array<Texture, kAllColorMaps.size()> colormaps_;
   VertexArray cloth_vao_, line_vao_, empty_vao_;
