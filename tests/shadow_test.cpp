@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "pixels.hpp"
@@ -158,6 +159,34 @@ TEST_F(ShadowTest, PostShadowTouchesItsFoot) {
   EXPECT_LT(visibility(s, plain, v, {0.15f, 0.0f, 0.0f}), 0.2);
   EXPECT_GT(visibility(s, plain, v, {0.0f, 0.0f, 0.4f}), 0.9);
   EXPECT_GT(visibility(s, plain, v, {-0.1f, 0.0f, 0.0f}), 0.9);
+}
+
+// The shadow falls away from the light, whichever way the light comes from: with the light 45
+// degrees off the vertical from each of four sides, directional and spot, floor points 10 cm
+// beyond the post (away from the light) are in its shadow and points 10 cm before it (towards
+// the light) are lit. A map mirrored or turned against the lookups would swap them.
+TEST_F(ShadowTest, ShadowFallsAwayFromTheLight) {
+  const std::vector<MeshSpec> post = {box({0.0, 0.5, 0.0}, {0.05, 0.5, 0.05})};
+  for (LightType type : {LightType::directional, LightType::spot}) {
+    for (int side = 0; side < 4; ++side) {
+      const float azimuth = glm::radians(90.0f * float(side));
+      const glm::vec3 away(std::cos(azimuth), 0.0f, std::sin(azimuth));  // along the floor
+      vis::ViewSettings v = view(45.0f, ShadowFilter::pcf);
+      v.camera.pitch_deg = 89.0f;
+      v.light_type = type;
+      v.light_direction = glm::normalize(away + glm::vec3(0.0f, -1.0f, 0.0f));
+      v.light_position = -3.0f * away + glm::vec3(0.0f, 3.0f, 0.0f);
+      v.light_target = glm::vec3(0.0f);
+      const Shot s = shoot(post, v);
+      v.shadows = ShadowFilter::none;
+      const Shot plain = shoot(post, v);
+      SCOPED_TRACE(std::string(type == LightType::spot ? "spot" : "directional") +
+                   " light, shadow towards (" + std::to_string(away.x) + ", " +
+                   std::to_string(away.z) + ")");
+      EXPECT_LT(visibility(s, plain, v, 0.15f * away), 0.2);
+      EXPECT_GT(visibility(s, plain, v, -0.15f * away), 0.9);
+    }
+  }
 }
 
 // Width (m on the floor) over which the shadow of a plate's edge at x = 0 goes from 20 % to 80 %

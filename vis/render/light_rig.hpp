@@ -1,6 +1,6 @@
 // Where the scene's light is and how its shadow map sees the scene: a spot light gets a
-// perspective frustum, a directional light an orthographic box, each fitted to a sphere around
-// everything that casts or receives shadows (rendering.md section 6).
+// perspective frustum, a directional light an orthographic box, each fitted to the casters and
+// reaching on to where their shadows land (rendering.md section 6).
 #pragma once
 
 #include <glm/glm.hpp>
@@ -22,7 +22,17 @@ struct LightRig {
   float normal_offset = 0.0f;  // m: about one shadow-map texel at the scene's centre
 };
 
-// Fits the light of `view` to the sphere (centre, radius) for a map of map_size texels.
-LightRig fit_light(const ViewSettings& view, glm::vec3 centre, float radius, int map_size);
+// A shadow that would run out nearly parallel to the floor is followed at most this many times
+// the casters' diameter (so long and grazing, it is too faint to matter).
+inline constexpr float kShadowReach = 3.0f;
+
+// Fits the light of `view` for a map of map_size texels to the box (lo, hi) around every
+// caster. Every shadow lies on a ray from the light through a caster, so the frustum's sides
+// (spot) or the box's width (directional) need only hold the casters; its depth range reaches
+// on to where their shadows land on the floor at floor_height, so none is cut off by the far
+// plane. A spot points at view.light_target, or else at the middle of the casters and the floor
+// under them.
+LightRig fit_light(const ViewSettings& view, glm::vec3 lo, glm::vec3 hi, float floor_height,
+                   int map_size);
 
 }  // namespace clothlab::vis

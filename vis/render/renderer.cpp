@@ -201,8 +201,8 @@ void Renderer::update_cloth(Solver& solver) {
   }
   if (vertices_ == 0 || !std::isfinite(lo.x + hi.x + lo.y + hi.y + lo.z + hi.z))
     lo = hi = glm::vec3(0.0f);
-  shadow_centre_ = 0.5f * (lo + hi);
-  shadow_radius_ = std::max(0.1f, 0.5f * glm::length(hi - lo));
+  cloth_lo_ = lo;
+  cloth_hi_ = hi;
   tangents_stale_ = true;
   solver.copy_normals(staging_.data() + 3 * vertices_);
   glNamedBufferSubData(dynamic_vbo_.get(), 0,
@@ -293,17 +293,14 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
   const bool depth_view = view.mode == DisplayMode::light_depth;
   const bool shadows = view.shadows != ShadowFilter::none || depth_view;
-  // The region the light must see: the cloth, the floor below it and the scenery.
-  glm::vec3 lo = shadow_centre_ - glm::vec3(shadow_radius_);
-  glm::vec3 hi = shadow_centre_ + glm::vec3(shadow_radius_);
-  lo.y = std::min(lo.y, view.floor_height);
+  // The casters the light must see: the cloth and the scenery.
+  glm::vec3 lo = cloth_lo_, hi = cloth_hi_;
   if (!scenery_->empty()) {
     lo = glm::min(lo, scenery_->lo());
     hi = glm::max(hi, scenery_->hi());
   }
-  const glm::vec3 centre = 0.5f * (lo + hi);
-  const float radius = 0.5f * glm::length(hi - lo);
-  light_ = fit_light(view, centre, radius, view.shadow_map_size);
+  light_ = fit_light(view, lo, hi, view.floor_height, view.shadow_map_size);
+  const glm::vec3 centre = 0.5f * (lo + hi);  // the sun of the sky lies from here to the light
 
   FrameBlock frame;
   frame.view_proj = view_projection(view.camera, width, height);

@@ -81,10 +81,8 @@ class Renderer {
   glm::vec2 atlas_per_metre_{1.0f};           // UV-atlas units per metre of cloth (u, v)
   std::unique_ptr<Scenery> scenery_;
   LightRig light_;
-  // A sphere around the cloth's current positions (update_cloth); the light's frustum holds it
-  // and the floor below it.
-  glm::vec3 shadow_centre_{0.0f};
-  float shadow_radius_ = 1.0f;
+  // The box around the cloth's current positions (update_cloth): a caster the light must see.
+  glm::vec3 cloth_lo_{0.0f}, cloth_hi_{0.0f};
   Texture fabric_, tiles_;
   Buffer frame_ubo_;
   // One vertex buffer for what changes every frame (positions, then normals) and one for what
