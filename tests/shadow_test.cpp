@@ -189,6 +189,33 @@ TEST_F(ShadowTest, ShadowFallsAwayFromTheLight) {
   }
 }
 
+// A low light casts long shadows, and the map's depth range reaches their ends: a 1 m post lit
+// 60 degrees off the vertical has a shadow 1.73 m long, shadowed at 1.6 m from the post and lit
+// beyond its tip, for a directional and for a spot light.
+TEST_F(ShadowTest, LongShadowIsNotCutOff) {
+  const std::vector<MeshSpec> post = {box({0.0, 0.5, 0.0}, {0.05, 0.5, 0.05})};
+  for (LightType type : {LightType::directional, LightType::spot}) {
+    SCOPED_TRACE(type == LightType::spot ? "spot" : "directional");
+    vis::ViewSettings v = view(60.0f, ShadowFilter::pcf);
+    const float a = glm::radians(60.0f);  // travelling towards -x, away from the side cloth
+    v.light_direction = {-std::sin(a), -std::cos(a), 0.0f};
+    v.light_type = type;
+    // The spot 60 degrees off the vertical above the post's top, far enough to be nearly
+    // parallel: its shadow tip lands a little beyond 1.73 m.
+    v.light_position = glm::vec3(0.0f, 1.0f, 0.0f) - 6.0f * v.light_direction;
+    v.light_target = glm::vec3(0.0f, 0.5f, 0.0f);
+    v.camera.target = {-1.0f, 0.0f, 0.0f};
+    v.camera.pitch_deg = 89.0f;
+    v.camera.distance = 4.0f;
+    const Shot s = shoot(post, v);
+    v.shadows = ShadowFilter::none;
+    const Shot plain = shoot(post, v);
+    EXPECT_LT(visibility(s, plain, v, {-0.5f, 0.0f, 0.0f}), 0.2);
+    EXPECT_LT(visibility(s, plain, v, {-1.6f, 0.0f, 0.0f}), 0.2);
+    EXPECT_GT(visibility(s, plain, v, {-2.1f, 0.0f, 0.0f}), 0.9);
+  }
+}
+
 // Width (m on the floor) over which the shadow of a plate's edge at x = 0 goes from 20 % to 80 %
 // of the light, measured along +x between -0.4 and 0.4 m.
 double penumbra_width(const Shot& s, const Shot& plain, const vis::ViewSettings& v) {
