@@ -55,6 +55,11 @@ SolverT<T>::SolverT(const Scene& scene, SpringKernel kernel)
       monitor_(model_, state_, initial_energy(model_)) {
   workspace_.resize(model_);
   force_field_.resize(model_.n);
+  if (!scene.colliders.empty())
+    contacts_ = std::make_unique<ContactResponse<T>>(scene.colliders, model_);
+  for (const ClothSpec& c : scene.cloths) release_at_.push_back(c.release_at);
+  built_release_at_ = release_at_;
+  built_pins_ = model_.pinned;
 }
 
 template <class T>
@@ -78,9 +83,13 @@ AdvanceResult SolverT<T>::step(long count) {
   Divergence report;
   for (long k = 0; k < count; ++k) {
     const double t0 = time();
+    release_due(false);
     for (int sub = 0; sub < substeps_; ++sub) {
+      if (contacts_) contacts_->begin(state_, threads_);
       integrator_->step(sys, state_, t0 + sub * h, static_cast<T>(h));
       record(integrator_->last_stats());
+      if (contacts_ && contacts_->respond(model_, state_, t0 + sub * h, h, threads_))
+        integrator_->state_corrected();
     }
     ++steps_;
     ++result.steps;
@@ -198,12 +207,52 @@ void SolverT<T>::set_threads(int threads) {
 
 template <class T>
 void SolverT<T>::reset() {
+  restore_pins();
+  release_at_ = built_release_at_;
   state_ = initial_state(model_);
   steps_ = 0;
   pending_ = 0.0;
   diverged_.reset();
   totals_ = {};
   integrator_->invalidate();
+}
+
+template <class T>
+void SolverT<T>::release_due(bool all) {
+  bool any = false;
+  for (std::size_t c = 0; c < model_.cloths.size(); ++c) {
+    const bool due = all || (release_at_[c] && time() >= *release_at_[c] - 0.5 * dt_);
+    if (!due) continue;
+    const ClothRange& r = model_.cloths[c];
+    for (int v = r.offset; v < r.offset + r.nu * r.nv; ++v) {
+      const auto i = static_cast<std::size_t>(v);
+      if (model_.inv_mass[i] != T(0)) continue;
+      model_.inv_mass[i] = T(1) / model_.mass[i];
+      any = true;
+    }
+    release_at_[c].reset();
+  }
+  if (!any) return;
+  std::erase_if(model_.pinned,
+                [&](int v) { return model_.inv_mass[static_cast<std::size_t>(v)] != T(0); });
+  released_ = true;
+  // The integrators build their systems around the pinned vertices (filters, factorisations):
+  // a new one for the new pins (once, at the release; the step loop itself never allocates).
+  integrator_ = make_integrator<T>(model_, spec_);
+}
+
+template <class T>
+void SolverT<T>::release_pins() {
+  release_due(true);
+}
+
+template <class T>
+void SolverT<T>::restore_pins() {
+  if (!released_) return;
+  for (int v : built_pins_) model_.inv_mass[static_cast<std::size_t>(v)] = T(0);
+  model_.pinned = built_pins_;
+  released_ = false;
+  integrator_ = make_integrator<T>(model_, spec_);
 }
 
 template <class T>

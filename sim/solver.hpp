@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 
+#include "sim/contact/contact_stats.hpp"
 #include "sim/divergence.hpp"
 #include "sim/energy.hpp"
 #include "sim/forces/force_source.hpp"
@@ -83,7 +84,13 @@ class Solver {
 
   virtual void set_threads(int threads) = 0;  // 0 = all cores
   virtual int threads() const = 0;
-  virtual void reset() = 0;  // back to the built state at t = 0
+  virtual void reset() = 0;  // back to the built state at t = 0, pins held again
+  // Lets every cloth go of its pins now (the window's D: drop onto the colliders below); a
+  // cloth with release_at lets go by itself at that time. reset() pins them again.
+  virtual void release_pins() = 0;
+  virtual bool pins_released() const = 0;
+  // The collision response of the last substep (zero without colliders).
+  virtual ContactStats last_contacts() const = 0;
 };
 
 std::unique_ptr<Solver> make_solver(const Scene& scene);

@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "sim/contact/contact_response.hpp"
 #include "sim/solver.hpp"
 
 namespace clothlab {
@@ -49,6 +50,11 @@ class SolverT final : public Solver {
   void set_threads(int threads) override;
   int threads() const override { return threads_; }
   void reset() override;
+  void release_pins() override;
+  bool pins_released() const override { return released_; }
+  ContactStats last_contacts() const override {
+    return contacts_ ? contacts_->last() : ContactStats{};
+  }
 
   // Direct access for tests and benchmarks. Call state_changed() after writing the state.
   const Model<T>& model() const { return model_; }
@@ -64,6 +70,9 @@ class SolverT final : public Solver {
     }
   }
   void record(const SolveStats& s);
+  // Lets go of the pins of the cloths whose release time has come (all of them with `all`).
+  void release_due(bool all);
+  void restore_pins();
   static Vec3d get(const Vec3Array<T>& a, int i) {
     const auto k = static_cast<std::size_t>(i);
     return {double(a.x[k]), double(a.y[k]), double(a.z[k])};
@@ -78,6 +87,11 @@ class SolverT final : public Solver {
   double pending_ = 0.0;  // s of requested time not yet stepped (less than one dt)
   int threads_ = 1;
   std::unique_ptr<Integrator<T>> integrator_;
+  std::unique_ptr<ContactResponse<T>> contacts_;   // only with colliders
+  std::vector<std::optional<double>> release_at_;  // per cloth, s; reset when it happened
+  std::vector<std::optional<double>> built_release_at_;
+  std::vector<int> built_pins_;  // global indices, as built
+  bool released_ = false;        // some cloth's pins have let go
   ForceWorkspace<T> workspace_;
   Vec3Array<T> force_field_;
   ForceSource force_source_ = ForceSource::total;  // what force_field_ holds

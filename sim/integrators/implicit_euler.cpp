@@ -159,6 +159,8 @@ class ImplicitEuler final : public Integrator<T> {
   void invalidate() override {
     warm_ = false;
   }
+  // After a collision response the previous dv is still a good first guess.
+  void state_corrected() override {}
 
   SolveStats last_stats() const override {
     return stats_;

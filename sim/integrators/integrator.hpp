@@ -43,6 +43,9 @@ class Integrator {
   // The state or the model changed outside step() (push, reset, parameter edit): forget any
   // value cached from the previous step.
   virtual void invalidate() {}
+  // The collision response moved some vertices after step(): forget values cached from the
+  // state (Verlet's end-of-step force). A warm start that only guesses may stay.
+  virtual void state_corrected() { invalidate(); }
   virtual SolveStats last_stats() const { return {}; }
 };
 

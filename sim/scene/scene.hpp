@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/scene/collider_spec.hpp"
 #include "sim/scene/render_spec.hpp"
 
 namespace clothlab {
@@ -37,6 +38,7 @@ struct ClothSpec {
   double mass = 1.0;                      // total kg, spread evenly over all vertices
   std::vector<std::array<int, 2>> pins;   // (i, j) vertices held fixed
   std::optional<SpringSpec> springs;      // per-cloth springs; else Scene::springs applies
+  std::optional<double> release_at;       // s: the pins let go at this time (a drop)
   std::string key;                        // key path prefix for messages: "cloth" or "cloth[1]"
 };
 
@@ -115,8 +117,9 @@ struct Scene {
   SpringSpec springs;
   ForceSpec forces;
   SolverSpec solver;
-  std::optional<TraceSpec> trace;  // absent: `clothlab trace` uses its documented default
-  RenderSpec render;               // [render]: how the scene is shown (vis/ only)
+  std::optional<TraceSpec> trace;       // absent: `clothlab trace` uses its documented default
+  std::vector<ColliderSpec> colliders;  // [[colliders]]
+  RenderSpec render;                    // [render]: how the scene is shown (vis/ only)
   // Source location of every value read, by key path ("solver.dt", "cloth[1].pins[2]").
   std::map<std::string, SourceLoc> locations;
 

@@ -67,10 +67,11 @@ std::string list_names(Names names) {
   return text;
 }
 
-constexpr std::string_view kTopKeys[] = {"cloth", "springs", "forces", "solver", "trace", "render"};
-constexpr std::string_view kPlannedTopKeys[] = {"colliders", "music", "mannequin"};
-constexpr std::string_view kClothKeys[] = {"shape",  "size", "resolution", "origin", "u_axis",
-                                           "v_axis", "mass", "pins",       "springs"};
+constexpr std::string_view kTopKeys[] = {"cloth", "springs", "forces",   "solver",
+                                         "trace", "render",  "colliders"};
+constexpr std::string_view kPlannedTopKeys[] = {"music", "mannequin"};
+constexpr std::string_view kClothKeys[] = {"shape",  "size", "resolution", "origin",  "u_axis",
+                                           "v_axis", "mass", "pins",       "springs", "release_at"};
 constexpr std::string_view kSpringKeys[] = {"rule", "stiffness", "damping"};
 constexpr std::string_view kForceKeys[] = {"gravity", "drag", "wind"};
 constexpr std::string_view kWindKeys[] = {"velocity", "gust", "seed", "gust_period", "coefficient"};
@@ -87,6 +88,12 @@ constexpr std::string_view kSkyKeys[] = {"enabled", "turbidity"};
 constexpr std::string_view kPoleKeys[] = {"enabled", "radius"};
 constexpr std::string_view kMeshKeys[] = {"type",         "center",   "radius",
                                           "half_extents", "rotation", "color"};
+constexpr std::string_view kColliderKeys[] = {
+    "type", "point", "normal",   "center",   "radius",    "half_extents", "rotation",
+    "a",    "b",     "rounding", "friction", "thickness", "motion"};
+constexpr std::string_view kFrictionKeys[] = {"static", "kinetic"};
+constexpr std::string_view kMotionKeys[] = {"velocity", "angular_velocity", "keys"};
+constexpr std::string_view kKeyframeKeys[] = {"time", "offset", "rotation"};
 constexpr std::string_view kLookKeys[] = {"roughness", "sheen",        "sheen_roughness", "threads",
                                           "opacity",   "transmission", "thread_fraction", "color",
                                           "bump",      "subsurface",   "glints"};
@@ -104,6 +111,7 @@ class Reader {
     if (const toml::node* node = root.get("solver")) read_solver(table(*node, "solver"));
     if (const toml::node* node = root.get("trace")) scene_.trace = read_trace(*node);
     if (const toml::node* node = root.get("render")) read_render(*node);
+    if (const toml::node* node = root.get("colliders")) read_colliders(*node);
   }
 
  private:
@@ -285,6 +293,7 @@ class Reader {
     field(t, key, "v_axis", [&](auto& n, auto& k) { cloth.v_axis = numbers<3>(n, k); });
     field(t, key, "mass", [&](auto& n, auto& k) { cloth.mass = number(n, k); });
     field(t, key, "pins", [&](auto& n, auto& k) { cloth.pins = read_pins(n, k); });
+    field(t, key, "release_at", [&](auto& n, auto& k) { cloth.release_at = number(n, k); });
     // A cloth's own springs start from the top-level [springs], so they need name only what
     // differs.
     field(t, key, "springs",
@@ -512,6 +521,76 @@ class Reader {
     field(t, key, "rotation", [&](auto& n, auto& k) { mesh.rotation = numbers<3>(n, k); });
     field(t, key, "color", [&](auto& n, auto& k) { mesh.color = numbers<3>(n, k); });
     return mesh;
+  }
+
+  void read_colliders(const toml::node& node) {
+    const std::string key = "colliders";
+    note(key, node);
+    const toml::array& a = array(node, key, std::nullopt, " of tables ([[colliders]])");
+    for (std::size_t c = 0; c < a.size(); ++c) {
+      const std::string ck = key + "[" + std::to_string(c) + "]";
+      note(ck, *a.get(c));
+      scene_.colliders.push_back(read_collider(table(*a.get(c), ck), ck));
+    }
+  }
+
+  ColliderSpec read_collider(const toml::table& t, const std::string& key) {
+    check_keys(t, key, kColliderKeys);
+    ColliderSpec c;
+    c.key = key;
+    if (!t.contains("type"))
+      fail(key + ".type", t,
+           "missing (a collider needs type = \"plane\", \"sphere\", \"box\" or \"capsule\")");
+    field(t, key, "type",
+          [&](auto& n, auto& k) { c.kind = choice(n, k, kColliderKindNames, "collider type"); });
+    field(t, key, "point", [&](auto& n, auto& k) { c.point = numbers<3>(n, k); });
+    field(t, key, "normal", [&](auto& n, auto& k) { c.normal = numbers<3>(n, k); });
+    field(t, key, "center", [&](auto& n, auto& k) { c.center = numbers<3>(n, k); });
+    field(t, key, "radius", [&](auto& n, auto& k) { c.radius = number(n, k); });
+    field(t, key, "half_extents", [&](auto& n, auto& k) { c.half_extents = numbers<3>(n, k); });
+    field(t, key, "rotation", [&](auto& n, auto& k) { c.rotation = numbers<3>(n, k); });
+    field(t, key, "rounding", [&](auto& n, auto& k) { c.rounding = number(n, k); });
+    field(t, key, "a", [&](auto& n, auto& k) { c.a = numbers<3>(n, k); });
+    field(t, key, "b", [&](auto& n, auto& k) { c.b = numbers<3>(n, k); });
+    field(t, key, "thickness", [&](auto& n, auto& k) { c.thickness = number(n, k); });
+    field(t, key, "friction", [&](auto& n, auto& k) {
+      // A number is both coefficients; a table names them.
+      if (n.is_table()) {
+        const toml::table& f = table(n, k);
+        check_keys(f, k, kFrictionKeys);
+        field(f, k, "static", [&](auto& m, auto& q) { c.static_friction = number(m, q); });
+        field(f, k, "kinetic", [&](auto& m, auto& q) { c.kinetic_friction = number(m, q); });
+      } else {
+        c.static_friction = c.kinetic_friction = number(n, k);
+      }
+    });
+    field(t, key, "motion", [&](auto& n, auto& k) { c.motion = read_motion(table(n, k), k); });
+    return c;
+  }
+
+  ColliderMotion read_motion(const toml::table& t, const std::string& key) {
+    check_keys(t, key, kMotionKeys);
+    ColliderMotion m;
+    field(t, key, "velocity", [&](auto& n, auto& k) { m.velocity = numbers<3>(n, k); });
+    field(t, key, "angular_velocity",
+          [&](auto& n, auto& k) { m.angular_velocity = numbers<3>(n, k); });
+    field(t, key, "keys", [&](auto& n, auto& k) {
+      const toml::array& a = array(n, k, std::nullopt, " of tables ({ time, offset, rotation })");
+      for (std::size_t i = 0; i < a.size(); ++i) {
+        const std::string kk = k + "[" + std::to_string(i) + "]";
+        note(kk, *a.get(i));
+        const toml::table& kt = table(*a.get(i), kk);
+        check_keys(kt, kk, kKeyframeKeys);
+        ColliderKey frame;
+        if (!kt.contains("time"))
+          fail(kk + ".time", kt, "missing (a keyframe needs its time in s)");
+        field(kt, kk, "time", [&](auto& q, auto& qk) { frame.time = number(q, qk); });
+        field(kt, kk, "offset", [&](auto& q, auto& qk) { frame.offset = numbers<3>(q, qk); });
+        field(kt, kk, "rotation", [&](auto& q, auto& qk) { frame.rotation = numbers<3>(q, qk); });
+        m.keys.push_back(frame);
+      }
+    });
+    return m;
   }
 
   void read_look(const toml::table& t, const std::string& key, ClothLookSpec& look) {

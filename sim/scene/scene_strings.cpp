@@ -28,6 +28,11 @@ const char* name_of(const std::array<std::pair<E, const char*>, N>& names, E val
 
 }  // namespace
 
+const std::array<std::pair<ColliderKind, const char*>, 4> kColliderKindNames{
+    {{ColliderKind::plane, "plane"},
+     {ColliderKind::sphere, "sphere"},
+     {ColliderKind::box, "box"},
+     {ColliderKind::capsule, "capsule"}}};
 const std::array<std::pair<ShadowFilter, const char*>, 3> kShadowFilterNames{
     {{ShadowFilter::none, "none"}, {ShadowFilter::pcf, "pcf"}, {ShadowFilter::pcss, "pcss"}}};
 const std::array<std::pair<LightType, const char*>, 2> kLightTypeNames{
@@ -37,6 +42,9 @@ const std::array<std::pair<MeshKind, const char*>, 3> kMeshKindNames{
 const std::array<std::pair<ThreadMetal, const char*>, 3> kThreadMetalNames{
     {{ThreadMetal::none, "none"}, {ThreadMetal::gold, "gold"}, {ThreadMetal::silver, "silver"}}};
 
+const char* to_string(ColliderKind kind) {
+  return name_of(kColliderKindNames, kind);
+}
 const char* to_string(ShadowFilter filter) {
   return name_of(kShadowFilterNames, filter);
 }

@@ -2,6 +2,7 @@
 // rules on values, so that a Scene built in code (tests, benchmarks) is checked the same way.
 #include "sim/scene/validate.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <set>
@@ -38,6 +39,7 @@ class Validator {
     check_solver();
     if (scene_.trace) check_trace(*scene_.trace);
     check_render(scene_.render);
+    for (const ColliderSpec& c : scene_.colliders) check_collider(c);
   }
 
  private:
@@ -99,6 +101,7 @@ class Validator {
     positive(k + ".mass", cloth.mass);
     check_pins(cloth);
     if (cloth.springs) check_springs(*cloth.springs, k + ".springs");
+    if (cloth.release_at) non_negative(k + ".release_at", *cloth.release_at);
   }
 
   void check_resolution(const ClothSpec& cloth) const {
@@ -200,6 +203,63 @@ class Validator {
   void colour(const std::string& key, const Vec3d& c, double hi) const {
     for (std::size_t k = 0; k < 3; ++k) within(key + "[" + std::to_string(k) + "]", c[k], 0.0, hi);
   }
+  // Sizes positive, friction and thickness non-negative, directions non-zero, keyframe times
+  // increasing; the rounding of a box fits inside it.
+  void check_collider(const ColliderSpec& c) const {
+    const std::string& k = c.key;
+    switch (c.kind) {
+      case ColliderKind::plane:
+        finite3(k + ".point", c.point);
+        finite3(k + ".normal", c.normal);
+        if (length(c.normal) < 1e-9) fail(k + ".normal", "must not be the zero vector");
+        break;
+      case ColliderKind::sphere:
+        finite3(k + ".center", c.center);
+        positive(k + ".radius", c.radius);
+        break;
+      case ColliderKind::box: {
+        finite3(k + ".center", c.center);
+        finite3(k + ".rotation", c.rotation);
+        double smallest = INFINITY;
+        for (std::size_t a = 0; a < 3; ++a) {
+          positive(k + ".half_extents[" + std::to_string(a) + "]", c.half_extents[a]);
+          smallest = std::min(smallest, c.half_extents[a]);
+        }
+        non_negative(k + ".rounding", c.rounding);
+        if (!(c.rounding < smallest))
+          fail(k + ".rounding", "must be smaller than the smallest half extent (" +
+                                    format_number(smallest) + " m), got " +
+                                    format_number(c.rounding));
+        break;
+      }
+      case ColliderKind::capsule:
+        finite3(k + ".a", c.a);
+        finite3(k + ".b", c.b);
+        positive(k + ".radius", c.radius);
+        if (length({c.b[0] - c.a[0], c.b[1] - c.a[1], c.b[2] - c.a[2]}) < 1e-9)
+          fail(k + ".b", "must differ from a (a capsule needs an axis)");
+        break;
+    }
+    non_negative(k + ".friction.static", c.static_friction);
+    non_negative(k + ".friction.kinetic", c.kinetic_friction);
+    non_negative(k + ".thickness", c.thickness);
+    finite3(k + ".motion.velocity", c.motion.velocity);
+    finite3(k + ".motion.angular_velocity", c.motion.angular_velocity);
+    for (std::size_t i = 0; i < c.motion.keys.size(); ++i) {
+      const ColliderKey& key = c.motion.keys[i];
+      const std::string kk = k + ".motion.keys[" + std::to_string(i) + "]";
+      finite(kk + ".time", key.time);
+      finite3(kk + ".offset", key.offset);
+      finite3(kk + ".rotation", key.rotation);
+      if (i > 0 && !(key.time > c.motion.keys[i - 1].time))
+        fail(kk + ".time", "keyframe times must increase (got " + format_number(key.time) +
+                               " after " + format_number(c.motion.keys[i - 1].time) + ")");
+    }
+    if (!c.motion.keys.empty() && (c.motion.velocity != Vec3d{0.0, 0.0, 0.0} ||
+                                   c.motion.angular_velocity != Vec3d{0.0, 0.0, 0.0}))
+      fail(k + ".motion", "give either keys or velocities, not both");
+  }
+
   void check_render(const RenderSpec& r) const {
     if (r.mode < 1 || r.mode > 7)
       fail("render.mode",

@@ -1,0 +1,170 @@
+#include "sim/contact/collider.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace clothlab {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Eigen::Vector3d vec(const Vec3d& v) {
+  return {v[0], v[1], v[2]};
+}
+
+// The rotation taking +y to unit d (the shortest arc).
+Eigen::Quaterniond rotate_y_to(const Eigen::Vector3d& d) {
+  return Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitY(), d);
+}
+
+// Angular velocity (world axes) that turns qa into qb in dt seconds.
+Eigen::Vector3d angular_velocity_between(const Eigen::Quaterniond& qa, const Eigen::Quaterniond& qb,
+                                         double dt) {
+  const Eigen::AngleAxisd turn(qb * qa.conjugate());
+  double angle = turn.angle();
+  if (angle > kPi) angle -= 2.0 * kPi;  // the short way round
+  return turn.axis() * (angle / dt);
+}
+
+}  // namespace
+
+Eigen::Quaterniond rotation_from_degrees(const Vec3d& degrees) {
+  const double k = kPi / 180.0;
+  return Eigen::AngleAxisd(degrees[2] * k, Eigen::Vector3d::UnitZ()) *
+         Eigen::AngleAxisd(degrees[1] * k, Eigen::Vector3d::UnitY()) *
+         Eigen::AngleAxisd(degrees[0] * k, Eigen::Vector3d::UnitX());
+}
+
+Collider::Collider(const ColliderSpec& spec) : spec_(spec) {
+  switch (spec.kind) {
+    case ColliderKind::plane:
+      centre0_ = vec(spec.point);
+      rotation0_ = rotate_y_to(vec(spec.normal).normalized());
+      break;
+    case ColliderKind::sphere:
+      centre0_ = vec(spec.center);
+      break;
+    case ColliderKind::box:
+      centre0_ = vec(spec.center);
+      rotation0_ = rotation_from_degrees(spec.rotation);
+      break;
+    case ColliderKind::capsule: {
+      const Eigen::Vector3d a = vec(spec.a), b = vec(spec.b);
+      centre0_ = 0.5 * (a + b);
+      half_length_ = 0.5 * (b - a).norm();
+      rotation0_ = rotate_y_to((b - a).normalized());
+      break;
+    }
+  }
+}
+
+ColliderPose Collider::pose(double t) const {
+  ColliderPose p;
+  const ColliderMotion& m = spec_.motion;
+  if (m.keys.empty()) {
+    // Constant velocities: the centre moves along v, the body turns about it at w (world axes).
+    const Eigen::Vector3d w = vec(m.angular_velocity);
+    const double speed = w.norm();
+    Eigen::Quaterniond q = rotation0_;
+    if (speed > 0.0) q = Eigen::Quaterniond(Eigen::AngleAxisd(speed * t, w / speed)) * rotation0_;
+    p.rotation = q.toRotationMatrix();
+    p.centre = centre0_ + vec(m.velocity) * t;
+    p.velocity = vec(m.velocity);
+    p.angular_velocity = w;
+    return p;
+  }
+  // Keyframes: offsets interpolated linearly, rotations by slerp, held outside the keys; the
+  // velocities are those of the segment t lies in (zero outside).
+  const auto& keys = m.keys;
+  auto key_rotation = [&](const ColliderKey& k) { return rotation_from_degrees(k.rotation); };
+  if (t <= keys.front().time || keys.size() == 1) {
+    const ColliderKey& k = t <= keys.front().time ? keys.front() : keys.back();
+    p.rotation = (key_rotation(k) * rotation0_).toRotationMatrix();
+    p.centre = centre0_ + vec(k.offset);
+    return p;
+  }
+  if (t >= keys.back().time) {
+    p.rotation = (key_rotation(keys.back()) * rotation0_).toRotationMatrix();
+    p.centre = centre0_ + vec(keys.back().offset);
+    return p;
+  }
+  std::size_t i = 1;
+  while (keys[i].time < t) ++i;
+  const ColliderKey &k0 = keys[i - 1], &k1 = keys[i];
+  const double span = k1.time - k0.time, s = (t - k0.time) / span;
+  const Eigen::Quaterniond q0 = key_rotation(k0), q1 = key_rotation(k1);
+  p.rotation = (q0.slerp(s, q1) * rotation0_).toRotationMatrix();
+  p.centre = centre0_ + (1.0 - s) * vec(k0.offset) + s * vec(k1.offset);
+  p.velocity = (vec(k1.offset) - vec(k0.offset)) / span;
+  p.angular_velocity = angular_velocity_between(q0, q1, span);
+  return p;
+}
+
+LocalDistance Collider::local_distance(const Eigen::Vector3d& p) const {
+  LocalDistance d;
+  switch (spec_.kind) {
+    case ColliderKind::plane:
+      d.phi = p.y();
+      d.normal = Eigen::Vector3d::UnitY();
+      break;
+    case ColliderKind::sphere: {
+      const double r = p.norm();
+      d.phi = r - spec_.radius;
+      d.normal = r > 1e-12 ? Eigen::Vector3d(p / r) : Eigen::Vector3d::UnitY();
+      break;
+    }
+    case ColliderKind::box: {
+      // Rounded box (Quilez's sdRoundBox): q = |p| - (h - r); outside, the distance to the
+      // shrunk box; inside, the largest (least negative) face distance; minus the rounding r.
+      const double r = spec_.rounding;
+      const Eigen::Vector3d h = vec(spec_.half_extents).array() - r;
+      const Eigen::Vector3d q = p.cwiseAbs() - h;
+      const Eigen::Vector3d outside = q.cwiseMax(0.0);
+      const double out = outside.norm();
+      Eigen::Vector3d::Index axis = 0;
+      const double inside = std::min(q.maxCoeff(&axis), 0.0);
+      d.phi = out + inside - r;
+      const Eigen::Vector3d sign = p.unaryExpr([](double x) { return x < 0.0 ? -1.0 : 1.0; });
+      if (out > 0.0) {
+        d.normal = outside.cwiseProduct(sign) / out;
+      } else {
+        d.normal = Eigen::Vector3d::Zero();
+        d.normal[axis] = sign[axis];
+      }
+      break;
+    }
+    case ColliderKind::capsule: {
+      // Distance to the axis segment (local y from -L to L), minus the radius.
+      const Eigen::Vector3d closest(0.0, std::clamp(p.y(), -half_length_, half_length_), 0.0);
+      const Eigen::Vector3d off = p - closest;
+      const double r = off.norm();
+      d.phi = r - spec_.radius;
+      d.normal = r > 1e-12 ? Eigen::Vector3d(off / r) : Eigen::Vector3d::UnitX();
+      break;
+    }
+  }
+  return d;
+}
+
+Bounds Collider::bounds(const ColliderPose& pose, double margin) const {
+  Bounds b;
+  Eigen::Vector3d extent = Eigen::Vector3d::Zero();  // half size of the world box
+  switch (spec_.kind) {
+    case ColliderKind::plane:
+      return b;  // unbounded
+    case ColliderKind::sphere:
+      extent.setConstant(spec_.radius);
+      break;
+    case ColliderKind::box:
+      extent = pose.rotation.cwiseAbs() * vec(spec_.half_extents);
+      break;
+    case ColliderKind::capsule:
+      extent = (pose.rotation.col(1) * half_length_).cwiseAbs().array() + spec_.radius;
+      break;
+  }
+  b.lo = pose.centre - extent - Eigen::Vector3d::Constant(margin);
+  b.hi = pose.centre + extent + Eigen::Vector3d::Constant(margin);
+  return b;
+}
+
+}  // namespace clothlab

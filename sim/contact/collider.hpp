@@ -1,0 +1,72 @@
+// A collider at run time: its shape as a signed distance in its own frame, and its rigid pose
+// at any time (contact.md section 1). One interface for every shape: phi(p) (negative inside),
+// its gradient as the outward normal, and the surface velocity v_c = v + w x (x - c) that the
+// contact response works relative to.
+#pragma once
+
+#include <Eigen/Geometry>
+
+#include "sim/scene/collider_spec.hpp"
+
+namespace clothlab {
+
+// The collider's frame at a time: world = rotation * local + centre, and its rigid velocity.
+struct ColliderPose {
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();          // of the centre, m/s
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // rad/s, world axes
+
+  Eigen::Vector3d to_local(const Eigen::Vector3d& x) const {
+    return rotation.transpose() * (x - centre);
+  }
+  Eigen::Vector3d to_world(const Eigen::Vector3d& p) const { return rotation * p + centre; }
+  // Velocity of the collider's material at world point x.
+  Eigen::Vector3d surface_velocity(const Eigen::Vector3d& x) const {
+    return velocity + angular_velocity.cross(x - centre);
+  }
+};
+
+// Signed distance and outward unit normal, in the collider's own frame.
+struct LocalDistance {
+  double phi = 0.0;
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();
+};
+
+// Axis-aligned world bounds; a plane's are unbounded.
+struct Bounds {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(-INFINITY);
+  Eigen::Vector3d hi = Eigen::Vector3d::Constant(INFINITY);
+  bool overlaps(const Bounds& o) const {
+    return (lo.array() <= o.hi.array()).all() && (o.lo.array() <= hi.array()).all();
+  }
+};
+
+class Collider {
+ public:
+  explicit Collider(const ColliderSpec& spec);
+
+  const ColliderSpec& spec() const { return spec_; }
+  double thickness() const { return spec_.thickness; }
+  bool moving() const { return spec_.motion.moving(); }
+
+  // Pose at time t (s): the built pose moved by the motion.
+  ColliderPose pose(double t) const;
+  // Distance from the surface of local point p (negative inside) and the outward normal there.
+  LocalDistance local_distance(const Eigen::Vector3d& p) const;
+  // World bounds of the shape at `pose`, grown by `margin` on every side.
+  Bounds bounds(const ColliderPose& pose, double margin) const;
+
+ private:
+  ColliderSpec spec_;
+  // The built frame: plane: point and the rotation taking +y to the normal; sphere and box:
+  // centre and rotation; capsule: the midpoint of a-b and the rotation taking +y to b - a.
+  Eigen::Quaterniond rotation0_ = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d centre0_ = Eigen::Vector3d::Zero();
+  double half_length_ = 0.0;  // capsule: half of |b - a|
+};
+
+// Rotation of Euler angles in degrees about x, then y, then z (R = Rz Ry Rx), as MeshSpec uses.
+Eigen::Quaterniond rotation_from_degrees(const Vec3d& degrees);
+
+}  // namespace clothlab

@@ -1,0 +1,284 @@
+#include "sim/contact/contact_response.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sim/core/parallel.hpp"
+
+namespace clothlab {
+namespace {
+
+using V3 = Eigen::Vector3d;
+
+template <class T>
+V3 load(const Vec3Array<T>& a, std::size_t i) {
+  return {double(a.x[i]), double(a.y[i]), double(a.z[i])};
+}
+
+template <class T>
+void store(Vec3Array<T>& a, std::size_t i, const V3& v) {
+  a.x[i] = static_cast<T>(v.x());
+  a.y[i] = static_cast<T>(v.y());
+  a.z[i] = static_cast<T>(v.z());
+}
+
+// The first point of the local path p0 -> p1 on the shell phi = thickness, by sphere tracing
+// (each march as long as the distance to the shell, which no exact signed distance overshoots).
+// Returns false when the path stays outside.
+bool first_touch(const Collider& c, const V3& p0, const V3& p1, double thickness,
+                 LocalDistance& at) {
+  const V3 path = p1 - p0;
+  const double length = path.norm();
+  const double tolerance = 1e-9 + 1e-6 * thickness;
+  double s = 0.0;
+  for (int k = 0; k < 32; ++k) {
+    at = c.local_distance(p0 + s * path);
+    const double gap = at.phi - thickness;
+    if (gap <= tolerance) return true;
+    if (length == 0.0) return false;
+    s += gap / length;
+    if (s > 1.0) return false;
+  }
+  // Still approaching after 32 marches: a path grazing the shell. It touched if it ended inside.
+  at = c.local_distance(p1);
+  return at.phi < thickness;
+}
+
+}  // namespace
+
+template <class T>
+ContactResponse<T>::ContactResponse(const std::vector<ColliderSpec>& colliders, const Model<T>& m) {
+  colliders_.reserve(colliders.size());
+  for (const ColliderSpec& spec : colliders) colliders_.emplace_back(spec);
+  sweeps_.resize(colliders_.size());
+  if (colliders_.empty()) return;
+  start_.resize(m.n);
+  blocks_.resize(block_count(m.n));
+  // Edge midpoints join in when some collider is thinner than the cloth's longest grid edge at
+  // rest: a rod or a thin box edge could otherwise pass between two rows of vertices.
+  double longest = 0.0;
+  for (const ClothRange& c : m.cloths)
+    for (int j = 0; j < c.nv; ++j)
+      for (int i = 0; i < c.nu; ++i) {
+        const auto v = static_cast<std::size_t>(c.offset + i + j * c.nu);
+        const V3 x = load(m.rest_positions, v);
+        if (i + 1 < c.nu) longest = std::max(longest, (load(m.rest_positions, v + 1) - x).norm());
+        if (j + 1 < c.nv)
+          longest = std::max(longest, (load(m.rest_positions, v + std::size_t(c.nu)) - x).norm());
+      }
+  for (const Collider& c : colliders_) {
+    const ColliderSpec& spec = c.spec();
+    double feature = INFINITY;  // the collider's thinnest dimension
+    if (spec.kind == ColliderKind::sphere || spec.kind == ColliderKind::capsule)
+      feature = 2.0 * spec.radius;
+    if (spec.kind == ColliderKind::box)
+      feature = 2.0 * std::min({spec.half_extents[0], spec.half_extents[1], spec.half_extents[2],
+                                2.0 * spec.rounding + 0.5 * longest});  // sharp edges poke too
+    edges_ = edges_ || feature < 2.0 * longest;
+  }
+  if (!edges_) return;
+  for (const ClothRange& c : m.cloths) {
+    for (int j = 0; j < c.nv; ++j) {
+      const int row = c.offset + j * c.nu;
+      if (c.nu > 1) rows_.push_back({row, 1, c.nu - 1});
+      if (j + 1 < c.nv) columns_.push_back({row, c.nu, c.nu});
+    }
+  }
+}
+
+template <class T>
+void ContactResponse<T>::begin(const State<T>& s, int threads) {
+  if (colliders_.empty()) return;
+  for_each_block(s.pos.size(), threads, [&](std::size_t b, std::size_t e) {
+    for (int a = 0; a < 3; ++a)
+      std::copy(s.pos.axis(a).begin() + long(b), s.pos.axis(a).begin() + long(e),
+                start_.axis(a).begin() + long(b));
+  });
+}
+
+template <class T>
+bool ContactResponse<T>::point(const V3& x0, V3& x1, V3& v, double h, double& depth) const {
+  bool changed = false;
+  for (std::size_t c = 0; c < colliders_.size(); ++c) {
+    const Collider& collider = colliders_[c];
+    const Sweep& sweep = sweeps_[c];
+    // This point's path against the collider's box over the substep.
+    const Bounds path{x0.cwiseMin(x1), x0.cwiseMax(x1)};
+    if (!path.overlaps(sweep.box)) continue;
+    const double th = collider.thickness();
+    const V3 p0 = sweep.start.to_local(x0), p1 = sweep.end.to_local(x1);
+    const LocalDistance d0 = collider.local_distance(p0);
+    LocalDistance touch = collider.local_distance(p1);
+    if (d0.phi >= th) {
+      // Outside at the start: it is a contact only if the relative path reached the shell, and
+      // the normal is where it first did (the side it came from).
+      if (touch.phi >= th && (p1 - p0).norm() <= d0.phi - th) continue;
+      if (!first_touch(collider, p0, p1, th, touch)) continue;
+    } else {
+      // Started on (or in) the shell, as a resting vertex does: it leaves only by moving outwards;
+      // moving inwards it is a contact even if its path ends beyond the far side (it must not
+      // pass through a thin collider), and the normal is the start's unless the end is inside on
+      // the same side.
+      if (touch.phi >= th && (p1 - p0).dot(d0.normal) >= 0.0) continue;
+      if (touch.phi >= th || touch.normal.dot(d0.normal) < 0.0) touch = d0;
+    }
+    const V3 n = sweep.end.rotation * touch.normal;
+    const V3 vc = sweep.end.surface_velocity(x1);
+    V3 rel = v - vc;
+    const double vn = rel.dot(n);
+    // The relative normal velocity may close the gap it had, no more (inelastic).
+    const double vn_min = -std::max(0.0, d0.phi - th) / h;
+    if (vn < vn_min) {
+      const double dvn = vn_min - vn;  // the normal impulse per unit mass
+      V3 vt = rel - vn * n;
+      const double speed = vt.norm();
+      const ColliderSpec& spec = collider.spec();
+      // Coulomb: the impulse's friction cone holds the tangential velocity, or takes mu_k dv_n.
+      if (speed <= spec.static_friction * dvn)
+        vt.setZero();
+      else
+        vt *= std::max(0.0, 1.0 - spec.kinetic_friction * dvn / speed);
+      rel = vt + vn_min * n;
+      v = vc + rel;
+      x1 = x0 + h * v;  // the move redone with the filtered velocity
+    }
+    // Whatever still lies inside the shell goes out along the normal; the velocity stays.
+    LocalDistance now = collider.local_distance(sweep.end.to_local(x1));
+    if (now.phi < th) {
+      // Past the middle of a thin shape the nearest face is the far one: keep the contact's side.
+      const V3 out = now.normal.dot(touch.normal) >= 0.0 ? V3(sweep.end.rotation * now.normal) : n;
+      x1 += (th - now.phi) * out;
+      now = collider.local_distance(sweep.end.to_local(x1));
+    }
+    depth = std::max(depth, th - now.phi);
+    changed = true;
+  }
+  return changed;
+}
+
+template <class T>
+bool ContactResponse<T>::vertex(std::size_t i, const Model<T>& m, State<T>& s, double h,
+                                double& depth) const {
+  if (m.inv_mass[i] == T(0)) return false;  // pinned: held where it is
+  V3 x1 = load(s.pos, i), v = load(s.vel, i);
+  if (!point(load(start_, i), x1, v, h, depth)) return false;
+  store(s.pos, i, x1);
+  store(s.vel, i, v);
+  return true;
+}
+
+// The midpoint of the edge a-b as a contact point (a collider thinner than the cloth's spacing
+// would otherwise pass between two vertices): its correction moves both ends alike (pinned ends
+// stay).
+template <class T>
+bool ContactResponse<T>::edge(std::size_t a, std::size_t b, const Model<T>& m, State<T>& s,
+                              double h, double& depth) const {
+  const bool free_a = m.inv_mass[a] != T(0), free_b = m.inv_mass[b] != T(0);
+  if (!free_a && !free_b) return false;
+  const V3 x0 = 0.5 * (load(start_, a) + load(start_, b));
+  const V3 xa = load(s.pos, a), xb = load(s.pos, b), va = load(s.vel, a), vb = load(s.vel, b);
+  const V3 mid = 0.5 * (xa + xb), v_mid = 0.5 * (va + vb);
+  V3 x1 = mid, v = v_mid;
+  if (!point(x0, x1, v, h, depth)) return false;
+  // With one end pinned the free end moves twice as far, so that the midpoint gets its move.
+  const double scale = free_a && free_b ? 1.0 : 2.0;
+  const V3 dx = scale * (x1 - mid), dv = scale * (v - v_mid);
+  if (free_a) {
+    store(s.pos, a, V3(xa + dx));
+    store(s.vel, a, V3(va + dv));
+  }
+  if (free_b) {
+    store(s.pos, b, V3(xb + dx));
+    store(s.vel, b, V3(vb + dv));
+  }
+  return true;
+}
+
+template <class T>
+bool ContactResponse<T>::respond(const Model<T>& m, State<T>& s, double t, double h, int threads) {
+  stats_ = {};
+  if (colliders_.empty()) return false;
+  for (std::size_t c = 0; c < colliders_.size(); ++c) {
+    Sweep& sweep = sweeps_[c];
+    sweep.start = colliders_[c].pose(t);
+    sweep.end = colliders_[c].pose(t + h);
+    const double th = colliders_[c].thickness();
+    const Bounds a = colliders_[c].bounds(sweep.start, th), b = colliders_[c].bounds(sweep.end, th);
+    sweep.box = {a.lo.cwiseMin(b.lo), a.hi.cwiseMax(b.hi)};
+  }
+  // Which blocks of vertices come near a collider: the block's box over the substep against
+  // each collider's; most blocks of a cloth far from every collider stop here.
+  for_each_block_indexed(s.pos.size(), threads,
+                         [&](std::size_t block, std::size_t b, std::size_t e) {
+                           Bounds box{V3::Constant(INFINITY), V3::Constant(-INFINITY)};
+                           for (std::size_t i = b; i < e; ++i) {
+                             const V3 x0 = load(start_, i), x1 = load(s.pos, i);
+                             box.lo = box.lo.cwiseMin(x0.cwiseMin(x1));
+                             box.hi = box.hi.cwiseMax(x0.cwiseMax(x1));
+                           }
+                           BlockResult& r = blocks_[block];
+                           r = {};
+                           for (const Sweep& sweep : sweeps_)
+                             r.near = r.near || box.overlaps(sweep.box);
+                         });
+  // Edge midpoints first, then the vertices, so that what an edge's correction moves is checked
+  // again and no vertex is left inside a shell.
+  if (edges_) respond_edges(m, s, h, threads);
+  for_each_block_indexed(s.pos.size(), threads,
+                         [&](std::size_t block, std::size_t b, std::size_t e) {
+                           BlockResult& r = blocks_[block];
+                           if (!r.near) return;
+                           for (std::size_t i = b; i < e; ++i) {
+                             double depth = 0.0;
+                             if (vertex(i, m, s, h, depth)) {
+                               ++r.contacts;
+                               r.max_depth = std::max(r.max_depth, depth);
+                             }
+                           }
+                         });
+  for (const BlockResult& r : blocks_) {
+    stats_.contacts += r.contacts;
+    stats_.max_depth = std::max(stats_.max_depth, r.max_depth);
+  }
+  return stats_.contacts > 0;
+}
+
+// The grid's edges in four rounds - along u from even then odd columns, along v from even then
+// odd rows - so that no two edges of a round share a vertex and a round runs in parallel with
+// the same result for any thread count. Only edges with an end in a block near a collider.
+template <class T>
+void ContactResponse<T>::respond_edges(const Model<T>& m, State<T>& s, double h, int threads) {
+  auto near = [&](std::size_t v) { return blocks_[v / kBlockSize].near; };
+  for (int round = 0; round < 4; ++round) {
+    const std::vector<EdgeRun>& runs = round < 2 ? rows_ : columns_;
+    const int parity = round % 2;
+    int contacts = 0;
+    double depth = 0.0;
+    const long count = static_cast<long>(runs.size());
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1) \
+    reduction(+ : contacts) reduction(max : depth)
+    for (long k = 0; k < count; ++k) {
+      const EdgeRun& run = runs[static_cast<std::size_t>(k)];
+      // A run of edges (first + e step, first + e step + step): along u, consecutive vertices
+      // of a row; along v, a row's vertices to the next row's.
+      if (run.step == 1) {
+        for (int e = parity; e < run.count; e += 2) {
+          const auto a = static_cast<std::size_t>(run.first + e), b = a + 1;
+          if ((near(a) || near(b)) && edge(a, b, m, s, h, depth)) ++contacts;
+        }
+      } else if ((k % 2) == parity) {
+        for (int e = 0; e < run.count; ++e) {
+          const auto a = static_cast<std::size_t>(run.first + e), b = a + std::size_t(run.step);
+          if ((near(a) || near(b)) && edge(a, b, m, s, h, depth)) ++contacts;
+        }
+      }
+    }
+    stats_.contacts += contacts;
+    stats_.max_depth = std::max(stats_.max_depth, depth);
+  }
+}
+
+template class ContactResponse<float>;
+template class ContactResponse<double>;
+
+}  // namespace clothlab
