@@ -224,8 +224,8 @@ TEST(SceneParser, UnknownKeys) {
   expect_error("[cloth]\nmass = 1\nmas = 2\n", "cloth.mas", 3, "unknown key");
   expect_error(kMinimal + "[forces]\nwind = { velocity = [1, 0, 0], gusts = 1 }\n",
                "forces.wind.gusts", 10, "unknown key");
-  expect_error(kMinimal + "[[colliders]]\ntype = \"sphere\"\n", "colliders", 9,
-               "not supported yet");
+  expect_error(kMinimal + "[[colliders]]\ntype = \"sphere\"\nradiu = 1\n", "colliders[0].radiu", 11,
+               "unknown key");
   expect_error(kMinimal + "[music]\nfile = \"a.wav\"\n", "music", 9, "not supported yet");
   expect_error(kMinimal + "[render]\nshade = 3\n", "render.shade", 10, "unknown key");
   expect_error(kMinimal + "[render.light]\nkind = \"spot\"\n", "render.light.kind", 10,
@@ -236,6 +236,61 @@ TEST(SceneParser, UnknownKeys) {
 }
 
 // [render]: every value read, and bad ones named with their key and line.
+// [[colliders]]: every shape's keys, friction as a number or a table, motion by velocities or
+// keyframes, and a cloth's release time.
+TEST(SceneParser, Colliders) {
+  const Scene s = parse_scene_string(kMinimal + R"(
+[[colliders]]
+type = "plane"
+point = [0, -1, 0]
+normal = [0, 2, 0]
+friction = 0.3
+
+[[colliders]]
+type = "box"
+center = [0, 0.5, 0]
+half_extents = [0.4, 0.1, 0.3]
+rotation = [0, 45, 0]
+rounding = 0.02
+friction = { static = 0.8, kinetic = 0.5 }
+thickness = 0.004
+motion = { velocity = [0.5, 0, 0], angular_velocity = [0, 1, 0] }
+
+[[colliders]]
+type = "capsule"
+a = [-1, 1, 0]
+b = [1, 1, 0]
+radius = 0.05
+motion = { keys = [{ time = 0, offset = [0, 0, 0] }, { time = 1, offset = [0, 0, 2], rotation = [0, 90, 0] }] }
+)",
+                                     "t.toml", {"cloth.release_at=0.5"});
+  ASSERT_EQ(s.colliders.size(), 3u);
+  EXPECT_EQ(s.colliders[0].kind, ColliderKind::plane);
+  EXPECT_EQ(s.colliders[0].normal, (Vec3d{0, 2, 0}));
+  EXPECT_EQ(s.colliders[0].static_friction, 0.3);
+  EXPECT_EQ(s.colliders[0].kinetic_friction, 0.3);
+  const ColliderSpec& box = s.colliders[1];
+  EXPECT_EQ(box.kind, ColliderKind::box);
+  EXPECT_EQ(box.rotation, (Vec3d{0, 45, 0}));
+  EXPECT_EQ(box.rounding, 0.02);
+  EXPECT_EQ(box.static_friction, 0.8);
+  EXPECT_EQ(box.kinetic_friction, 0.5);
+  EXPECT_EQ(box.thickness, 0.004);
+  EXPECT_EQ(box.motion.angular_velocity, (Vec3d{0, 1, 0}));
+  const ColliderSpec& rod = s.colliders[2];
+  EXPECT_EQ(rod.b, (Vec3d{1, 1, 0}));
+  ASSERT_EQ(rod.motion.keys.size(), 2u);
+  EXPECT_EQ(rod.motion.keys[1].rotation, (Vec3d{0, 90, 0}));
+  EXPECT_EQ(rod.key, "colliders[2]");
+  EXPECT_EQ(s.cloths[0].release_at, 0.5);
+  expect_error(kMinimal + R"(
+[[colliders]]
+type = "capsule"
+motion = { keys = [{ time = 1 }, { time = 0.5 }] }
+)",
+               "colliders[0].motion.keys[1].time", 12, "must increase");
+}
+
 TEST(SceneParser, RenderSection) {
   const Scene s = parse_scene_string(kMinimal + R"([render]
 mode = 7
