@@ -88,6 +88,7 @@ AdvanceResult SolverT<T>::step(long count) {
       if (contacts_) contacts_->begin(state_, threads_);
       integrator_->step(sys, state_, t0 + sub * h, static_cast<T>(h));
       record(integrator_->last_stats());
+      if (grab_) pull_grabbed(h);
       if (contacts_ && contacts_->respond(model_, state_, t0 + sub * h, h, threads_))
         integrator_->state_corrected();
     }
@@ -208,6 +209,7 @@ void SolverT<T>::set_threads(int threads) {
 template <class T>
 void SolverT<T>::reset() {
   restore_pins();
+  grab_.reset();
   release_at_ = built_release_at_;
   state_ = initial_state(model_);
   steps_ = 0;
@@ -239,6 +241,35 @@ void SolverT<T>::release_due(bool all) {
   // The integrators build their systems around the pinned vertices (filters, factorisations):
   // a new one for the new pins (once, at the release; the step loop itself never allocates).
   integrator_ = make_integrator<T>(model_, spec_);
+}
+
+template <class T>
+bool SolverT<T>::grab(int vertex, const Vec3d& target) {
+  if (vertex < 0 || static_cast<std::size_t>(vertex) >= model_.n || pinned(vertex)) return false;
+  grab_ = Grab{vertex, target};
+  return true;
+}
+
+// The grab as a velocity filter after the substep (like the collision response, so it works
+// with every integrator): the velocity moves a fraction beta = h / tau of the way to the one
+// that closes the gap in one substep, and the position follows; a spring-damper pull with time
+// constant tau, stable for any stiffness because beta <= 1/2. The kinetic energy it adds joins
+// the divergence monitor's allowance (the user's hand is a source).
+template <class T>
+void SolverT<T>::pull_grabbed(double h) {
+  constexpr double kTau = 0.004;  // s
+  const double beta = std::min(0.5, h / kTau);
+  const auto i = static_cast<std::size_t>(grab_->vertex);
+  double added = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    const double x = state_.pos.axis(a)[i], v = state_.vel.axis(a)[i];
+    const double dv = beta * ((grab_->target[a] - x) / h - v);
+    state_.vel.axis(a)[i] = static_cast<T>(v + dv);
+    state_.pos.axis(a)[i] = static_cast<T>(x + h * dv);
+    added += 0.5 * double(model_.mass[i]) * ((v + dv) * (v + dv) - v * v);
+  }
+  monitor_.add_energy(std::abs(added));
+  integrator_->state_corrected();
 }
 
 template <class T>

@@ -89,6 +89,13 @@ class Solver {
   // cloth with release_at lets go by itself at that time. reset() pins them again.
   virtual void release_pins() = 0;
   virtual bool pins_released() const = 0;
+  // Ctrl + drag in the window: pulls `vertex` towards `target` (m) like a stiff, critically
+  // damped spring (a free vertex closes the gap with a time constant of 4 ms, whatever its
+  // mass; against the cloth's pull it stays a little short, as a spring does) until
+  // release_grab(). A pinned vertex cannot be grabbed (returns false).
+  virtual bool grab(int vertex, const Vec3d& target) = 0;
+  virtual void release_grab() = 0;
+  virtual std::optional<int> grabbed() const = 0;
   // The collision response of the last substep (zero without colliders).
   virtual ContactStats last_contacts() const = 0;
 };

@@ -52,6 +52,11 @@ class SolverT final : public Solver {
   void reset() override;
   void release_pins() override;
   bool pins_released() const override { return released_; }
+  bool grab(int vertex, const Vec3d& target) override;
+  void release_grab() override { grab_.reset(); }
+  std::optional<int> grabbed() const override {
+    return grab_ ? std::optional<int>(grab_->vertex) : std::nullopt;
+  }
   ContactStats last_contacts() const override {
     return contacts_ ? contacts_->last() : ContactStats{};
   }
@@ -73,6 +78,7 @@ class SolverT final : public Solver {
   // Lets go of the pins of the cloths whose release time has come (all of them with `all`).
   void release_due(bool all);
   void restore_pins();
+  void pull_grabbed(double h);
   static Vec3d get(const Vec3Array<T>& a, int i) {
     const auto k = static_cast<std::size_t>(i);
     return {double(a.x[k]), double(a.y[k]), double(a.z[k])};
@@ -92,6 +98,11 @@ class SolverT final : public Solver {
   std::vector<std::optional<double>> built_release_at_;
   std::vector<int> built_pins_;  // global indices, as built
   bool released_ = false;        // some cloth's pins have let go
+  struct Grab {
+    int vertex = 0;
+    Vec3d target{};
+  };
+  std::optional<Grab> grab_;
   ForceWorkspace<T> workspace_;
   Vec3Array<T> force_field_;
   ForceSource force_source_ = ForceSource::total;  // what force_field_ holds

@@ -89,8 +89,10 @@ struct SolverSpec {
   int substeps = 1;            // integrator steps of dt / substeps per step, >= 1
   int iterations = 0;          // xpbd: per substep (default 1); local_global: per step (default 10)
   double cg_tolerance = 1e-6;  // implicit_euler: relative residual |r| / |b| that ends PCG
-  int cg_max_iterations = 500;  // implicit_euler: PCG iteration cap per step
-  int threads = 0;              // 0 = all cores
+  int cg_max_iterations = 500;    // implicit_euler: PCG iteration cap per step
+  int threads = 0;                // 0 = all cores
+  bool self_collision = false;    // the cloth keeps its layers apart (sim/contact/self_collision)
+  double self_thickness = 0.005;  // m: how far apart two layers stay
   Precision precision = Precision::f32;
 };
 

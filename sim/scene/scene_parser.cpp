@@ -75,9 +75,9 @@ constexpr std::string_view kClothKeys[] = {"shape",  "size", "resolution", "orig
 constexpr std::string_view kSpringKeys[] = {"rule", "stiffness", "damping"};
 constexpr std::string_view kForceKeys[] = {"gravity", "drag", "wind"};
 constexpr std::string_view kWindKeys[] = {"velocity", "gust", "seed", "gust_period", "coefficient"};
-constexpr std::string_view kSolverKeys[] = {"integrator", "dt",           "substeps",
-                                            "iterations", "cg_tolerance", "cg_max_iterations",
-                                            "threads",    "precision",    "backend"};
+constexpr std::string_view kSolverKeys[] = {
+    "integrator", "dt",        "substeps", "iterations",     "cg_tolerance",  "cg_max_iterations",
+    "threads",    "precision", "backend",  "self_collision", "self_thickness"};
 constexpr std::string_view kTraceKeys[] = {"vertices", "fields", "every"};
 constexpr std::string_view kTraceFields[] = {"position", "velocity", "force", "energy"};
 constexpr std::string_view kRenderKeys[] = {"mode", "shadows", "shadow_map_size", "light",
@@ -375,6 +375,8 @@ class Reader {
         fail(k, n, "unknown precision \"" + p + "\" (valid: float, double)");
       s.precision = p == "float" ? Precision::f32 : Precision::f64;
     });
+    field(t, key, "self_collision", [&](auto& n, auto& k) { s.self_collision = boolean(n, k); });
+    field(t, key, "self_thickness", [&](auto& n, auto& k) { s.self_thickness = number(n, k); });
     field(t, key, "backend", [&](auto& n, auto& k) {
       const std::string b = text(n, k);
       if (b == "gpu") fail(k, n, "backend \"gpu\" is not supported yet (valid: cpu)");

@@ -167,6 +167,7 @@ class Validator {
   }
 
   void check_solver() const {
+    positive("solver.self_thickness", scene_.solver.self_thickness);
     const SolverSpec& s = scene_.solver;
     if (!to_string_known(s.integrator)) fail("solver.integrator", "unknown integrator");
     if (!s.dt_auto) positive("solver.dt", s.dt);
