@@ -146,6 +146,15 @@ LocalDistance Collider::local_distance(const Eigen::Vector3d& p) const {
   return d;
 }
 
+bool Collider::reaches(const Bounds& box, const ColliderPose& pose, double margin) const {
+  if (spec_.kind != ColliderKind::plane) return bounds(pose, margin).overlaps(box);
+  // The signed distance of the box's corner deepest along -n: centre distance minus the box's
+  // half extent projected on |n|.
+  const Eigen::Vector3d n = pose.rotation.col(1);
+  const Eigen::Vector3d centre = 0.5 * (box.lo + box.hi), half = 0.5 * (box.hi - box.lo);
+  return n.dot(centre - pose.centre) - half.dot(n.cwiseAbs()) <= margin;
+}
+
 Bounds Collider::bounds(const ColliderPose& pose, double margin) const {
   Bounds b;
   Eigen::Vector3d extent = Eigen::Vector3d::Zero();  // half size of the world box

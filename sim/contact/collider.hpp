@@ -56,6 +56,10 @@ class Collider {
   LocalDistance local_distance(const Eigen::Vector3d& p) const;
   // World bounds of the shape at `pose`, grown by `margin` on every side.
   Bounds bounds(const ColliderPose& pose, double margin) const;
+  // Whether any point of `box` may lie within `margin` of the shape at `pose` (conservative: a
+  // box test for bounded shapes; for a plane, the box's lowest corner against it, so a cloth
+  // high above the floor costs no per-vertex work).
+  bool reaches(const Bounds& box, const ColliderPose& pose, double margin) const;
 
  private:
   ColliderSpec spec_;

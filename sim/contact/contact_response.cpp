@@ -218,8 +218,15 @@ bool ContactResponse<T>::respond(const Model<T>& m, State<T>& s, double t, doubl
                            }
                            BlockResult& r = blocks_[block];
                            r = {};
-                           for (const Sweep& sweep : sweeps_)
-                             r.near = r.near || box.overlaps(sweep.box);
+                           for (std::size_t c = 0; c < colliders_.size() && !r.near; ++c) {
+                             const double th = colliders_[c].thickness();
+                             // Bounded shapes: their box over the whole substep (a fast one
+                             // sweeps the space between its poses).
+                             r.near = colliders_[c].spec().kind == ColliderKind::plane
+                                          ? colliders_[c].reaches(box, sweeps_[c].start, th) ||
+                                                colliders_[c].reaches(box, sweeps_[c].end, th)
+                                          : box.overlaps(sweeps_[c].box);
+                           }
                          });
   // Edge midpoints first, then the vertices, so that what an edge's correction moves is checked
   // again and no vertex is left inside a shell.
