@@ -17,6 +17,7 @@ struct GridCloth {
   std::vector<Vec3d> positions;  // index i + j * nu
   std::vector<int> pinned;       // local vertex indices, sorted
   std::vector<std::array<int, 3>> triangles;  // two per grid quad, counter-clockwise about u x v
+  bool wrap_u = false;  // a tube: column nu - 1 is joined to column 0 (the seam)
 
   int index(int i, int j) const { return i + j * nu; }
   int vertex_count() const { return nu * nv; }

@@ -23,6 +23,7 @@ namespace clothlab {
 struct ClothRange {
   int offset = 0;  // global index of vertex (0, 0)
   int nu = 0, nv = 0;
+  bool wrap_u = false;  // a tube: column nu - 1 joins column 0 across the seam
 };
 
 enum class SpringKernel { row_sweep, neighbour_list };

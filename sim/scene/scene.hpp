@@ -29,7 +29,7 @@ struct SpringSpec {
 };
 
 struct ClothSpec {
-  std::string shape = "grid";
+  std::string shape = "grid";             // grid | tube
   std::array<double, 2> size{2.0, 2.0};   // metres along u and v
   std::array<int, 2> resolution{32, 32};  // vertices along u and v, each >= 1
   Vec3d origin{-1.0, 2.5, 0.0};           // world position of vertex (0, 0)
@@ -39,7 +39,12 @@ struct ClothSpec {
   std::vector<std::array<int, 2>> pins;   // (i, j) vertices held fixed
   std::optional<SpringSpec> springs;      // per-cloth springs; else Scene::springs applies
   std::optional<double> release_at;       // s: the pins let go at this time (a drop)
-  std::string key;                        // key path prefix for messages: "cloth" or "cloth[1]"
+  // Tube (a cylinder or frustum: skirt, sleeve): ring j is centred at origin + j * length /
+  // (nv - 1) along v_axis, with radius from radius[0] (first ring) to radius[1] (last ring);
+  // vertex i of a ring lies at angle 2 pi i / nu from u_axis, turning towards v_axis x u_axis.
+  std::array<double, 2> radius{0.3, 0.3};  // m
+  double length = 0.6;                     // m, first ring to last
+  std::string key;                         // key path prefix for messages: "cloth" or "cloth[1]"
 };
 
 struct WindSpec {

@@ -70,8 +70,9 @@ std::string list_names(Names names) {
 constexpr std::string_view kTopKeys[] = {"cloth", "springs", "forces",   "solver",
                                          "trace", "render",  "colliders"};
 constexpr std::string_view kPlannedTopKeys[] = {"music", "mannequin"};
-constexpr std::string_view kClothKeys[] = {"shape",  "size", "resolution", "origin",  "u_axis",
-                                           "v_axis", "mass", "pins",       "springs", "release_at"};
+constexpr std::string_view kClothKeys[] = {"shape",   "size",       "resolution", "origin",
+                                           "u_axis",  "v_axis",     "mass",       "pins",
+                                           "springs", "release_at", "radius",     "length"};
 constexpr std::string_view kSpringKeys[] = {"rule", "stiffness", "damping"};
 constexpr std::string_view kForceKeys[] = {"gravity", "drag", "wind"};
 constexpr std::string_view kWindKeys[] = {"velocity", "gust", "seed", "gust_period", "coefficient"};
@@ -294,6 +295,16 @@ class Reader {
     field(t, key, "mass", [&](auto& n, auto& k) { cloth.mass = number(n, k); });
     field(t, key, "pins", [&](auto& n, auto& k) { cloth.pins = read_pins(n, k); });
     field(t, key, "release_at", [&](auto& n, auto& k) { cloth.release_at = number(n, k); });
+    field(t, key, "radius", [&](auto& n, auto& k) {
+      // One radius (a cylinder) or [first ring, last ring] (a frustum).
+      if (n.is_array()) {
+        cloth.radius = numbers<2>(n, k);
+      } else {
+        const double r = number(n, k);
+        cloth.radius = {r, r};
+      }
+    });
+    field(t, key, "length", [&](auto& n, auto& k) { cloth.length = number(n, k); });
     // A cloth's own springs start from the top-level [springs], so they need name only what
     // differs.
     field(t, key, "springs",

@@ -90,18 +90,40 @@ class Validator {
 
   void check_cloth(const ClothSpec& cloth) const {
     const std::string& k = cloth.key;
-    if (cloth.shape != "grid") {
-      const bool planned = cloth.shape == "tube" || cloth.shape == "mesh";
+    if (cloth.shape != "grid" && cloth.shape != "tube") {
+      const bool planned = cloth.shape == "mesh";
       fail(k + ".shape", "shape \"" + cloth.shape + "\" is " +
-                             (planned ? "not supported yet" : "unknown") + " (valid: grid)");
+                             (planned ? "not supported yet" : "unknown") + " (valid: grid, tube)");
     }
-    for (double s : cloth.size) positive(k + ".size", s);
+    if (cloth.shape == "tube") {
+      check_tube(cloth);
+    } else {
+      for (const char* tube_key : {".radius", ".length"})
+        if (scene_.locations.count(k + tube_key))
+          fail(k + tube_key, "belongs to shape = \"tube\" (this cloth is a grid)");
+      for (double s : cloth.size) positive(k + ".size", s);
+    }
     check_resolution(cloth);
     check_axes(cloth);
     positive(k + ".mass", cloth.mass);
     check_pins(cloth);
     if (cloth.springs) check_springs(*cloth.springs, k + ".springs");
     if (cloth.release_at) non_negative(k + ".release_at", *cloth.release_at);
+  }
+
+  // A tube takes radius and length instead of size; at least 6 vertices round a ring (so the
+  // seed rule's offsets of up to 2 around do not meet themselves across the seam) and 2 rings.
+  void check_tube(const ClothSpec& cloth) const {
+    const std::string& k = cloth.key;
+    if (scene_.locations.count(k + ".size"))
+      fail(k + ".size", "a tube takes radius and length, not size");
+    positive(k + ".radius[0]", cloth.radius[0]);
+    positive(k + ".radius[1]", cloth.radius[1]);
+    positive(k + ".length", cloth.length);
+    const auto [nu, nv] = cloth.resolution;
+    if (nu < 6 || nv < 2)
+      fail(k + ".resolution", "a tube needs at least 6 vertices around and 2 rings (got [" +
+                                  std::to_string(nu) + ", " + std::to_string(nv) + "])");
   }
 
   void check_resolution(const ClothSpec& cloth) const {
