@@ -12,9 +12,14 @@ Eigen::Vector3d vec(const Vec3d& v) {
   return {v[0], v[1], v[2]};
 }
 
-// The rotation taking +y to unit d (the shortest arc).
+// The rotation taking +y to unit d (the shortest arc; half a turn about x when d is -y).
 Eigen::Quaterniond rotate_y_to(const Eigen::Vector3d& d) {
-  return Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitY(), d);
+  const Eigen::Vector3d axis = Eigen::Vector3d::UnitY().cross(d);
+  const double s = axis.norm(), c = d.y();
+  if (s < 1e-12)
+    return c > 0.0 ? Eigen::Quaterniond::Identity()
+                   : Eigen::Quaterniond(Eigen::AngleAxisd(kPi, Eigen::Vector3d::UnitX()));
+  return Eigen::Quaterniond(Eigen::AngleAxisd(std::atan2(s, c), axis / s));
 }
 
 // Angular velocity (world axes) that turns qa into qb in dt seconds.
@@ -47,6 +52,12 @@ Collider::Collider(const ColliderSpec& spec) : spec_(spec) {
     case ColliderKind::box:
       centre0_ = vec(spec.center);
       rotation0_ = rotation_from_degrees(spec.rotation);
+      break;
+    case ColliderKind::mesh:
+      // The OBJ's own coordinates are the local frame, placed at `center` with `rotation`.
+      centre0_ = vec(spec.center);
+      rotation0_ = rotation_from_degrees(spec.rotation);
+      if (spec.mesh) sdf_ = std::make_shared<const SdfGrid>(*spec.mesh, spec.sdf_resolution);
       break;
     case ColliderKind::capsule: {
       const Eigen::Vector3d a = vec(spec.a), b = vec(spec.b);
@@ -133,6 +144,12 @@ LocalDistance Collider::local_distance(const Eigen::Vector3d& p) const {
       }
       break;
     }
+    case ColliderKind::mesh:
+      if (sdf_)
+        d.phi = sdf_->distance(p, &d.normal);
+      else
+        d.phi = INFINITY;  // no mesh read: nothing to collide with
+      break;
     case ColliderKind::capsule: {
       // Distance to the axis segment (local y from -L to L), minus the radius.
       const Eigen::Vector3d closest(0.0, std::clamp(p.y(), -half_length_, half_length_), 0.0);
@@ -170,6 +187,17 @@ Bounds Collider::bounds(const ColliderPose& pose, double margin) const {
     case ColliderKind::capsule:
       extent = (pose.rotation.col(1) * half_length_).cwiseAbs().array() + spec_.radius;
       break;
+    case ColliderKind::mesh: {
+      if (!sdf_)
+        return Bounds{Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Constant(-INFINITY)};
+      // The grid's box (the mesh plus its margin), turned: its corners' extent about the centre.
+      const Eigen::Vector3d mid = 0.5 * (sdf_->lo() + sdf_->hi()),
+                            half = 0.5 * (sdf_->hi() - sdf_->lo());
+      extent = pose.rotation.cwiseAbs() * half;
+      b.lo = pose.to_world(mid) - extent - Eigen::Vector3d::Constant(margin);
+      b.hi = pose.to_world(mid) + extent + Eigen::Vector3d::Constant(margin);
+      return b;
+    }
   }
   b.lo = pose.centre - extent - Eigen::Vector3d::Constant(margin);
   b.hi = pose.centre + extent + Eigen::Vector3d::Constant(margin);

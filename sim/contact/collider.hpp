@@ -5,7 +5,9 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <memory>
 
+#include "sim/mesh/sdf_grid.hpp"
 #include "sim/scene/collider_spec.hpp"
 
 namespace clothlab {
@@ -67,7 +69,8 @@ class Collider {
   // centre and rotation; capsule: the midpoint of a-b and the rotation taking +y to b - a.
   Eigen::Quaterniond rotation0_ = Eigen::Quaterniond::Identity();
   Eigen::Vector3d centre0_ = Eigen::Vector3d::Zero();
-  double half_length_ = 0.0;  // capsule: half of |b - a|
+  double half_length_ = 0.0;            // capsule: half of |b - a|
+  std::shared_ptr<const SdfGrid> sdf_;  // mesh: its signed distance, shared by copies
 };
 
 // Rotation of Euler angles in degrees about x, then y, then z (R = Rz Ry Rx), as MeshSpec uses.

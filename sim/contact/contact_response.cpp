@@ -74,6 +74,7 @@ ContactResponse<T>::ContactResponse(const std::vector<ColliderSpec>& colliders, 
     if (spec.kind == ColliderKind::box)
       feature = 2.0 * std::min({spec.half_extents[0], spec.half_extents[1], spec.half_extents[2],
                                 2.0 * spec.rounding + 0.5 * longest});  // sharp edges poke too
+    if (spec.kind == ColliderKind::mesh) feature = 0.0;  // a mesh may have any sharp edge
     edges_ = edges_ || feature < 2.0 * longest;
   }
   if (!edges_) return;

@@ -4,15 +4,18 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace clothlab {
 
+struct TriangleMesh;
+
 using Vec3d = std::array<double, 3>;
 
-enum class ColliderKind { plane, sphere, box, capsule };
+enum class ColliderKind { plane, sphere, box, capsule, mesh };
 
 // A pose at a time, for keyframed motion: the collider's centre (plane: its point; capsule: the
 // midpoint of a-b) moved by `offset` and turned by `rotation` (degrees about x, then y, then z,
@@ -46,14 +49,18 @@ struct ColliderSpec {
   Vec3d rotation{0.0, 0.0, 0.0};              // box: degrees about x, then y, then z
   double rounding = 0.0;                      // box: edge radius, inside the half extents
   Vec3d a{-0.5, 0.5, 0.0}, b{0.5, 0.5, 0.0};  // capsule: the ends of its axis
-  double static_friction = 0.6;               // Coulomb: sticks while |v_t| <= mu_s dv_n
-  double kinetic_friction = 0.4;              // Coulomb: sliding loses mu_k dv_n
-  double thickness = 0.005;                   // m: the cloth stays this far outside
+  std::string file;                          // mesh: OBJ path (relative to the scene file's folder)
+  double scale = 1.0;                        // mesh: applied to the OBJ's coordinates
+  int sdf_resolution = 64;                   // mesh: distance-grid cells along its longest side
+  std::shared_ptr<const TriangleMesh> mesh;  // mesh: read by the parser (closed surface)
+  double static_friction = 0.6;              // Coulomb: sticks while |v_t| <= mu_s dv_n
+  double kinetic_friction = 0.4;             // Coulomb: sliding loses mu_k dv_n
+  double thickness = 0.005;                  // m: the cloth stays this far outside
   ColliderMotion motion;
   std::string key;  // "colliders[2]", for messages
 };
 
-extern const std::array<std::pair<ColliderKind, const char*>, 4> kColliderKindNames;
+extern const std::array<std::pair<ColliderKind, const char*>, 5> kColliderKindNames;
 const char* to_string(ColliderKind kind);
 
 }  // namespace clothlab

@@ -4,6 +4,7 @@
 // value came from; validate.cpp checks ranges. Errors are SceneError, never a crash.
 #include "sim/scene/scene_parser.hpp"
 
+#include "sim/mesh/triangle_mesh.hpp"
 #include "sim/scene/overrides.hpp"
 
 #include <toml++/toml.h>
@@ -70,9 +71,9 @@ std::string list_names(Names names) {
 constexpr std::string_view kTopKeys[] = {"cloth", "springs", "forces",   "solver",
                                          "trace", "render",  "colliders"};
 constexpr std::string_view kPlannedTopKeys[] = {"music", "mannequin"};
-constexpr std::string_view kClothKeys[] = {"shape",   "size",       "resolution", "origin",
-                                           "u_axis",  "v_axis",     "mass",       "pins",
-                                           "springs", "release_at", "radius",     "length"};
+constexpr std::string_view kClothKeys[] = {
+    "shape", "size",    "resolution", "origin", "u_axis", "v_axis",     "mass",
+    "pins",  "springs", "release_at", "radius", "length", "pins_follow"};
 constexpr std::string_view kSpringKeys[] = {"rule", "stiffness", "damping"};
 constexpr std::string_view kForceKeys[] = {"gravity", "drag", "wind"};
 constexpr std::string_view kWindKeys[] = {"velocity", "gust", "seed", "gust_period", "coefficient"};
@@ -90,8 +91,8 @@ constexpr std::string_view kPoleKeys[] = {"enabled", "radius"};
 constexpr std::string_view kMeshKeys[] = {"type",         "center",   "radius",
                                           "half_extents", "rotation", "color"};
 constexpr std::string_view kColliderKeys[] = {
-    "type", "point", "normal",   "center",   "radius",    "half_extents", "rotation",
-    "a",    "b",     "rounding", "friction", "thickness", "motion"};
+    "type",     "point",    "normal",    "center", "radius", "half_extents", "rotation",  "a", "b",
+    "rounding", "friction", "thickness", "motion", "file",   "scale",        "resolution"};
 constexpr std::string_view kFrictionKeys[] = {"static", "kinetic"};
 constexpr std::string_view kMotionKeys[] = {"velocity", "angular_velocity", "keys"};
 constexpr std::string_view kKeyframeKeys[] = {"time", "offset", "rotation"};
@@ -305,6 +306,8 @@ class Reader {
       }
     });
     field(t, key, "length", [&](auto& n, auto& k) { cloth.length = number(n, k); });
+    field(t, key, "pins_follow",
+          [&](auto& n, auto& k) { cloth.pins_follow = small_integer(n, k); });
     // A cloth's own springs start from the top-level [springs], so they need name only what
     // differs.
     field(t, key, "springs",
@@ -578,7 +581,28 @@ class Reader {
       }
     });
     field(t, key, "motion", [&](auto& n, auto& k) { c.motion = read_motion(table(n, k), k); });
+    field(t, key, "scale", [&](auto& n, auto& k) { c.scale = number(n, k); });
+    field(t, key, "resolution", [&](auto& n, auto& k) { c.sdf_resolution = small_integer(n, k); });
+    field(t, key, "file", [&](auto& n, auto& k) { c.file = text(n, k); });
+    if (c.kind == ColliderKind::mesh) read_collider_mesh(t, key, c);
     return c;
+  }
+
+  // A mesh collider's OBJ, read now so that a missing, malformed or empty file is a scene error
+  // naming the key (the path is relative to the scene file's folder).
+  void read_collider_mesh(const toml::table& t, const std::string& key, ColliderSpec& c) {
+    const std::string file_key = key + ".file";
+    if (c.file.empty()) fail(file_key, t, "missing (a mesh collider needs file = \"thing.obj\")");
+    if (!(c.scale > 0.0))
+      fail(key + ".scale", *t.get("scale"), "must be > 0 (got " + format_number(c.scale) + ")");
+    std::filesystem::path path(c.file);
+    if (path.is_relative() && scene_.file != "<string>")
+      path = std::filesystem::path(scene_.file).parent_path() / path;
+    try {
+      c.mesh = std::make_shared<const TriangleMesh>(load_obj(path.string(), c.scale));
+    } catch (const ObjError& e) {
+      fail(file_key, *t.get("file"), e.what());
+    }
   }
 
   ColliderMotion read_motion(const toml::table& t, const std::string& key) {

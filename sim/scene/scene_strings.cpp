@@ -28,11 +28,12 @@ const char* name_of(const std::array<std::pair<E, const char*>, N>& names, E val
 
 }  // namespace
 
-const std::array<std::pair<ColliderKind, const char*>, 4> kColliderKindNames{
+const std::array<std::pair<ColliderKind, const char*>, 5> kColliderKindNames{
     {{ColliderKind::plane, "plane"},
      {ColliderKind::sphere, "sphere"},
      {ColliderKind::box, "box"},
-     {ColliderKind::capsule, "capsule"}}};
+     {ColliderKind::capsule, "capsule"},
+     {ColliderKind::mesh, "mesh"}}};
 const std::array<std::pair<ShadowFilter, const char*>, 3> kShadowFilterNames{
     {{ShadowFilter::none, "none"}, {ShadowFilter::pcf, "pcf"}, {ShadowFilter::pcss, "pcss"}}};
 const std::array<std::pair<LightType, const char*>, 2> kLightTypeNames{

@@ -40,6 +40,7 @@ class Validator {
     if (scene_.trace) check_trace(*scene_.trace);
     check_render(scene_.render);
     for (const ColliderSpec& c : scene_.colliders) check_collider(c);
+    for (const ClothSpec& cloth : scene_.cloths) check_pins_follow(cloth);
   }
 
  private:
@@ -226,6 +227,16 @@ class Validator {
   void colour(const std::string& key, const Vec3d& c, double hi) const {
     for (std::size_t k = 0; k < 3; ++k) within(key + "[" + std::to_string(k) + "]", c[k], 0.0, hi);
   }
+  void check_pins_follow(const ClothSpec& cloth) const {
+    if (!cloth.pins_follow) return;
+    const int c = *cloth.pins_follow;
+    const std::string key = cloth.key + ".pins_follow";
+    if (c < 0 || c >= static_cast<int>(scene_.colliders.size()))
+      fail(key, "names collider " + std::to_string(c) + ", but the scene has " +
+                    std::to_string(scene_.colliders.size()) + " ([[colliders]] count from 0)");
+    if (cloth.pins.empty()) fail(key, "the cloth has no pins to move");
+  }
+
   // Sizes positive, friction and thickness non-negative, directions non-zero, keyframe times
   // increasing; the rounding of a box fits inside it.
   void check_collider(const ColliderSpec& c) const {
@@ -255,6 +266,15 @@ class Validator {
                                     format_number(c.rounding));
         break;
       }
+      case ColliderKind::mesh:
+        finite3(k + ".center", c.center);
+        finite3(k + ".rotation", c.rotation);
+        positive(k + ".scale", c.scale);
+        if (c.sdf_resolution < 8 || c.sdf_resolution > 256)
+          fail(k + ".resolution",
+               "must be between 8 and 256 cells (got " + std::to_string(c.sdf_resolution) + ")");
+        if (!c.mesh) fail(k + ".file", "no mesh was read (a mesh collider needs file = \"x.obj\")");
+        break;
       case ColliderKind::capsule:
         finite3(k + ".a", c.a);
         finite3(k + ".b", c.b);

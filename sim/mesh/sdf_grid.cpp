@@ -1,0 +1,171 @@
+#include "sim/mesh/sdf_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace clothlab {
+namespace {
+
+using V3 = Eigen::Vector3d;
+
+// Closest point to p on triangle abc (Ericson 2005, section 5.1.5, by Voronoi regions).
+V3 closest_on_triangle(const V3& p, const V3& a, const V3& b, const V3& c) {
+  const V3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return a;
+  const V3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + (d1 / (d1 - d3)) * ab;
+  const V3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + (d2 / (d2 - d6)) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
+    return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+  const double denom = 1.0 / (va + vb + vc);
+  return a + ab * (vb * denom) + ac * (vc * denom);
+}
+
+}  // namespace
+
+SdfGrid::SdfGrid(const TriangleMesh& mesh, int resolution, int margin) {
+  V3 lo = V3::Constant(INFINITY), hi = V3::Constant(-INFINITY);
+  for (const V3& p : mesh.positions) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  cell_ = std::max((hi - lo).maxCoeff(), 1e-6) / resolution;
+  origin_ = lo - V3::Constant(margin * cell_);
+  for (int a = 0; a < 3; ++a)
+    count_[a] = static_cast<int>(std::ceil((hi[a] - lo[a]) / cell_)) + 2 * margin + 1;
+  const std::size_t n = std::size_t(count_[0]) * std::size_t(count_[1]) * std::size_t(count_[2]);
+  std::vector<double> dist(n, INFINITY);
+  std::vector<int> nearest(n, -1);
+  auto index = [&](int i, int j, int k) {
+    return static_cast<std::size_t>(i + count_[0] * (j + count_[1] * k));
+  };
+  auto point = [&](int i, int j, int k) { return V3(origin_ + cell_ * V3(i, j, k)); };
+  auto distance_to = [&](const V3& p, int t) {
+    const auto& tri = mesh.triangles[std::size_t(t)];
+    return (p - closest_on_triangle(p, mesh.positions[std::size_t(tri[0])],
+                                    mesh.positions[std::size_t(tri[1])],
+                                    mesh.positions[std::size_t(tri[2])]))
+        .norm();
+  };
+
+  // 1. Exact distances in a band round each triangle.
+  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
+    const auto& tri = mesh.triangles[std::size_t(t)];
+    V3 tlo = mesh.positions[std::size_t(tri[0])], thi = tlo;
+    for (int v : tri) {
+      tlo = tlo.cwiseMin(mesh.positions[std::size_t(v)]);
+      thi = thi.cwiseMax(mesh.positions[std::size_t(v)]);
+    }
+    std::array<int, 3> from{}, to{};
+    for (int a = 0; a < 3; ++a) {
+      from[a] = std::max(0, static_cast<int>(std::floor((tlo[a] - origin_[a]) / cell_)) - 2);
+      to[a] =
+          std::min(count_[a] - 1, static_cast<int>(std::ceil((thi[a] - origin_[a]) / cell_)) + 2);
+    }
+    for (int k = from[2]; k <= to[2]; ++k)
+      for (int j = from[1]; j <= to[1]; ++j)
+        for (int i = from[0]; i <= to[0]; ++i) {
+          const double d = distance_to(point(i, j, k), t);
+          const std::size_t g = index(i, j, k);
+          if (d < dist[g]) dist[g] = d, nearest[g] = t;
+        }
+  }
+  // 2. Closest triangles carried to every point: sweeps in the eight diagonal directions, twice.
+  for (int pass = 0; pass < 2; ++pass)
+    for (int dir = 0; dir < 8; ++dir) {
+      const int si = dir & 1 ? -1 : 1, sj = dir & 2 ? -1 : 1, sk = dir & 4 ? -1 : 1;
+      for (int kk = 0; kk < count_[2]; ++kk)
+        for (int jj = 0; jj < count_[1]; ++jj)
+          for (int ii = 0; ii < count_[0]; ++ii) {
+            const int i = si > 0 ? ii : count_[0] - 1 - ii, j = sj > 0 ? jj : count_[1] - 1 - jj,
+                      k = sk > 0 ? kk : count_[2] - 1 - kk;
+            const std::size_t g = index(i, j, k);
+            for (const auto& [di, dj, dk] :
+                 {std::array<int, 3>{-si, 0, 0}, {0, -sj, 0}, {0, 0, -sk}}) {
+              const int ni = i + di, nj = j + dj, nk = k + dk;
+              if (ni < 0 || nj < 0 || nk < 0 || ni >= count_[0] || nj >= count_[1] ||
+                  nk >= count_[2])
+                continue;
+              const int t = nearest[index(ni, nj, nk)];
+              if (t < 0 || t == nearest[g]) continue;
+              const double d = distance_to(point(i, j, k), t);
+              if (d < dist[g]) dist[g] = d, nearest[g] = t;
+            }
+          }
+    }
+  // 3. Signs by ray parity along +x for each (y, z) row, nudged off the grid's planes by
+  // irrational fractions of a cell so no ray runs through an axis-aligned edge or vertex.
+  phi_.assign(n, 0.0);
+  std::vector<double> hits;
+  for (int k = 0; k < count_[2]; ++k)
+    for (int j = 0; j < count_[1]; ++j) {
+      const double y = origin_.y() + cell_ * (j + 1.0e-4 * std::sqrt(2.0)),
+                   z = origin_.z() + cell_ * (k + 1.0e-4 * std::sqrt(3.0));
+      hits.clear();
+      for (const auto& tri : mesh.triangles) {
+        const V3 &a = mesh.positions[std::size_t(tri[0])], &b = mesh.positions[std::size_t(tri[1])],
+                 &c = mesh.positions[std::size_t(tri[2])];
+        // Barycentric coordinates of (y, z) in the triangle projected on the y-z plane.
+        const double det = (b.y() - a.y()) * (c.z() - a.z()) - (c.y() - a.y()) * (b.z() - a.z());
+        if (std::abs(det) < 1e-18) continue;  // edge-on to the ray
+        const double u = ((y - a.y()) * (c.z() - a.z()) - (c.y() - a.y()) * (z - a.z())) / det;
+        const double v = ((b.y() - a.y()) * (z - a.z()) - (y - a.y()) * (b.z() - a.z())) / det;
+        if (u < 0.0 || v < 0.0 || u + v > 1.0) continue;
+        hits.push_back(a.x() + u * (b.x() - a.x()) + v * (c.x() - a.x()));
+      }
+      std::sort(hits.begin(), hits.end());
+      std::size_t crossed = 0;
+      for (int i = 0; i < count_[0]; ++i) {
+        const double x = origin_.x() + cell_ * i;
+        while (crossed < hits.size() && hits[crossed] < x) ++crossed;
+        const std::size_t g = index(i, j, k);
+        phi_[g] = (crossed % 2 == 1 ? -1.0 : 1.0) * dist[g];
+      }
+    }
+}
+
+double SdfGrid::distance(const V3& p, V3* gradient) const {
+  // Clamp into the grid; outside it, add the distance to the clamped point.
+  const V3 hi_corner = hi();
+  const V3 q = p.cwiseMax(origin_).cwiseMin(hi_corner);
+  const double outside = (p - q).norm();
+  const V3 f = (q - origin_) / cell_;
+  std::array<int, 3> c{};
+  std::array<double, 3> t{};
+  for (int a = 0; a < 3; ++a) {
+    c[a] = std::min(static_cast<int>(std::floor(f[a])), count_[a] - 2);
+    t[a] = f[a] - c[a];
+  }
+  const double c000 = at(c[0], c[1], c[2]), c100 = at(c[0] + 1, c[1], c[2]),
+               c010 = at(c[0], c[1] + 1, c[2]), c110 = at(c[0] + 1, c[1] + 1, c[2]),
+               c001 = at(c[0], c[1], c[2] + 1), c101 = at(c[0] + 1, c[1], c[2] + 1),
+               c011 = at(c[0], c[1] + 1, c[2] + 1), c111 = at(c[0] + 1, c[1] + 1, c[2] + 1);
+  const double x0 = c000 + t[0] * (c100 - c000), x1 = c010 + t[0] * (c110 - c010),
+               x2 = c001 + t[0] * (c101 - c001), x3 = c011 + t[0] * (c111 - c011);
+  const double y0 = x0 + t[1] * (x1 - x0), y1 = x2 + t[1] * (x3 - x2);
+  const double value = y0 + t[2] * (y1 - y0);
+  if (gradient) {
+    // The trilinear interpolant's own derivatives; outside the grid, away from the box.
+    V3 g;
+    g.x() = ((1 - t[1]) * (1 - t[2]) * (c100 - c000) + t[1] * (1 - t[2]) * (c110 - c010) +
+             (1 - t[1]) * t[2] * (c101 - c001) + t[1] * t[2] * (c111 - c011));
+    g.y() = ((1 - t[2]) * (x1 - x0) + t[2] * (x3 - x2));
+    g.z() = (y1 - y0);
+    if (outside > 0.0) g += (p - q) / outside * cell_;
+    const double len = g.norm();
+    *gradient = len > 1e-12 ? V3(g / len) : V3::UnitY();
+  }
+  return value + outside;
+}
+
+}  // namespace clothlab

@@ -1,0 +1,48 @@
+#include "sim/mesh/triangle_mesh.hpp"
+
+#include <tiny_obj_loader.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace clothlab {
+
+TriangleMesh load_obj(const std::string& path, double scale) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw ObjError(path + ": no such OBJ file");
+  if (!std::ifstream(path)) throw ObjError(path + ": cannot open OBJ file");
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = true;
+  config.vertex_color = false;
+  tinyobj::ObjReader reader;
+  // tinyobjloader reports problems as text, with the OBJ line where it knows it.
+  if (!reader.ParseFromFile(path, config) || !reader.Error().empty()) {
+    std::string message = reader.Error();
+    while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
+      message.pop_back();
+    throw ObjError(path + ": not a valid OBJ file (" +
+                   (message.empty() ? std::string("the reader gave no reason") : message) + ")");
+  }
+  TriangleMesh mesh;
+  const std::vector<float>& v = reader.GetAttrib().vertices;
+  for (std::size_t i = 0; i + 2 < v.size(); i += 3)
+    mesh.positions.emplace_back(scale * v[i], scale * v[i + 1], scale * v[i + 2]);
+  const int count = static_cast<int>(mesh.positions.size());
+  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    const auto& indices = shape.mesh.indices;
+    for (std::size_t f = 0; f + 2 < indices.size(); f += 3) {
+      std::array<int, 3> t{indices[f].vertex_index, indices[f + 1].vertex_index,
+                           indices[f + 2].vertex_index};
+      for (int k : t)
+        if (k < 0 || k >= count)
+          throw ObjError(path + ": face " + std::to_string(mesh.triangles.size() + 1) +
+                         " names vertex " + std::to_string(k + 1) + ", but the file has " +
+                         std::to_string(count) + " vertices");
+      mesh.triangles.push_back(t);
+    }
+  }
+  if (mesh.triangles.empty()) throw ObjError(path + ": the OBJ file has no faces");
+  return mesh;
+}
+
+}  // namespace clothlab
