@@ -261,6 +261,26 @@ if(XVFB_RUN)
   set_tests_properties(cli.view.record_pinned PROPERTIES TIMEOUT 120 FIXTURES_SETUP view_record
     ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
   set_tests_properties(cli.view.record_pinned_csv PROPERTIES FIXTURES_REQUIRED view_record)
+  # D drops the cloth: the solver lets go of its pins (the window says so only when it has).
+  add_test(NAME cli.view.drop_key
+    COMMAND ${CMAKE_COMMAND}
+      "-DCOMMAND=${CMAKE_COMMAND}|-E|env|--unset=WAYLAND_DISPLAY|CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=6|CLOTHLAB_VIEW_KEYS=,,D|${XVFB_RUN}|-a|-s|-screen 0 1280x800x24|$<TARGET_FILE:clothlab>|view|${CLOTHLAB_DEFAULT_SCENE}"
+      "-DEXPECT_RC=0"
+      "-DEXPECT_REGEX=clothlab view: pins released"
+      -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
+  set_tests_properties(cli.view.drop_key PROPERTIES TIMEOUT 120
+    ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
+  # Ctrl + left drag pulls the cloth: a scripted drag from the window's centre (the hanging
+  # cloth) 200 points up grabs the vertex there, and at the release that vertex is nearer the
+  # drag's last target than it was when grabbed.
+  add_test(NAME cli.view.grab_drag
+    COMMAND ${CMAKE_COMMAND}
+      "-DCOMMAND=${CMAKE_COMMAND}|-E|env|--unset=WAYLAND_DISPLAY|CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=17|CLOTHLAB_VIEW_DRAG=640,400,640,200,3,16|${XVFB_RUN}|-a|-s|-screen 0 1280x800x24|$<TARGET_FILE:clothlab>|view|${CLOTHLAB_DEFAULT_SCENE}"
+      "-DEXPECT_RC=0"
+      "-DEXPECT_REGEX=clothlab view: grab: released vertex [0-9]+ [^\n]*\\(closer\\)"
+      -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
+  set_tests_properties(cli.view.grab_drag PROPERTIES TIMEOUT 120
+    ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
 else()
   message(WARNING "xvfb-run not found: the window test is not run (scripts/deps installs it)")
 endif()

@@ -125,7 +125,7 @@ int run_render(const RenderArgs& args) {
   try {
     vis::HeadlessRenderer renderer(args.width, args.height);
     renderer.set_cloth(*solver);
-    renderer.set_scene(scene.render, *solver);
+    renderer.set_scene(scene.render, *solver, scene.colliders);
     vis::ViewSettings view = vis::scene_view(scene, *solver);
     if (args.mode != 0) view.mode = static_cast<vis::DisplayMode>(args.mode);
     apply_view_options(args, view);

@@ -26,6 +26,18 @@ Mesh make_box(glm::vec3 half_extents);
 // flat discs at both ends (normals -x and +x, planar uvs); without, an open tube.
 Mesh make_cylinder(float radius, float length, int slices, bool caps);
 
+// Box with rounded edges and corners (the shape of a rounded box collider: the box of half
+// extents h - r grown by r): `rounding` r is clamped to the smallest half extent, r <= 0 gives
+// make_box. `segments` >= 1 steps per quarter circle of rounding; smooth normals, uvs [0,1]^2
+// per face, tangents from compute_tangents().
+Mesh make_rounded_box(glm::vec3 half_extents, float rounding, int segments);
+
+// Capsule along y about the origin: the segment from (0, -half_length, 0) to (0, half_length, 0)
+// grown by `radius` (half_length >= 0; 0 gives a sphere). `slices` >= 3 around y, `cap_stacks`
+// >= 1 rings per hemisphere. Smooth normals, u = longitude / 2pi as on the UV sphere (seam
+// duplicated), v = height from the bottom (0) to the top (1), analytic tangents (east).
+Mesh make_capsule(float radius, float half_length, int slices, int cap_stacks);
+
 // A (p, q) torus knot (p, q coprime, >= 1) swept with a tube: the centre line
 //   c(t) = radius * ((2 + cos(q t)) / 2 * (cos(p t), sin(p t), 0) + (0, 0, sin(q t) / 2)),
 // t in [0, 2pi), lies on a torus of major radius `radius` and minor radius radius / 2 (three.js'

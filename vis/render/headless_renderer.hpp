@@ -29,9 +29,11 @@ class HeadlessRenderer {
     renderer_.set_cloth(solver);
     diagnostics_.set_cloth();
   }
-  // The scenery of the scene's [render] table (pole, meshes); after set_cloth.
-  void set_scene(const RenderSpec& spec, const Solver& solver) {
-    renderer_.set_scene(spec, solver);
+  // The scenery of the scene's [render] table (pole, meshes) and its [[colliders]]; after
+  // set_cloth.
+  void set_scene(const RenderSpec& spec, const Solver& solver,
+                 const std::vector<ColliderSpec>& colliders = {}) {
+    renderer_.set_scene(spec, solver, colliders);
   }
   // Uploads the solver's state (and what the view's diagnostics need) and draws the frame, with
   // its colour bars, into the multisampled target, without reading it back.

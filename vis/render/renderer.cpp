@@ -11,6 +11,7 @@
 #include "vis/passes/diffusion_pass.hpp"
 #include "vis/passes/shadow_pass.hpp"
 #include "vis/passes/sky_pass.hpp"
+#include "vis/render/collider_scenery.hpp"
 #include "vis/render/scenery.hpp"
 #include "vis/textures/cloth_tangents.hpp"
 #include "vis/textures/fabric_texture.hpp"
@@ -92,8 +93,15 @@ void Renderer::enable_pass_timing(bool on) {
   if (!on) timer_.reset();
 }
 
-void Renderer::set_scene(const RenderSpec& spec, const Solver& solver) {
+void Renderer::set_scene(const RenderSpec& spec, const Solver& solver,
+                         const std::vector<ColliderSpec>& colliders) {
   scenery_->set_scene(spec, solver);
+  if (colliders.empty()) {
+    colliders_.reset();
+    return;
+  }
+  if (!colliders_) colliders_ = std::make_unique<ColliderScenery>();
+  colliders_->set_colliders(colliders, solver);
 }
 
 void Renderer::set_cloth(Solver& solver) {
@@ -204,6 +212,7 @@ void Renderer::update_cloth(Solver& solver) {
   cloth_lo_ = lo;
   cloth_hi_ = hi;
   tangents_stale_ = true;
+  if (colliders_) colliders_->update(solver.time());  // where the moving ones are now
   solver.copy_normals(staging_.data() + 3 * vertices_);
   glNamedBufferSubData(dynamic_vbo_.get(), 0,
                        static_cast<GLsizeiptr>(staging_.size() * sizeof(float)), staging_.data());
@@ -293,11 +302,15 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
   const bool depth_view = view.mode == DisplayMode::light_depth;
   const bool shadows = view.shadows != ShadowFilter::none || depth_view;
-  // The casters the light must see: the cloth and the scenery.
+  // The casters the light must see: the cloth, the scenery and the colliders (planes aside).
   glm::vec3 lo = cloth_lo_, hi = cloth_hi_;
   if (!scenery_->empty()) {
     lo = glm::min(lo, scenery_->lo());
     hi = glm::max(hi, scenery_->hi());
+  }
+  if (colliders_ && colliders_->has_bounds()) {
+    lo = glm::min(lo, colliders_->lo());
+    hi = glm::max(hi, colliders_->hi());
   }
   light_ = fit_light(view, lo, hi, view.floor_height, view.shadow_map_size);
   const glm::vec3 centre = 0.5f * (lo + hi);  // the sun of the sky lies from here to the light
@@ -378,6 +391,7 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
   glDrawArrays(GL_TRIANGLES, 0, 6);
 
   scenery_->draw();
+  if (colliders_) colliders_->draw();
   const bool blended_cloth = view.mode == DisplayMode::translucent;
   if (blended_cloth) draw_sky(view, frame.view_proj, centre);  // behind the translucent cloth
 
@@ -469,7 +483,8 @@ void Renderer::draw_sky(const ViewSettings& view, const glm::mat4& view_proj, gl
   if (timer_) timer_->begin(Pass::scene);  // what follows the sky belongs to the scene again
 }
 
-// Every caster into the light's depth map: the floor, then the cloth (its current positions).
+// Every caster into the light's depth map: the floor, the cloth (its current positions), the
+// scenery and the colliders.
 void Renderer::draw_shadow_map(const ViewSettings& view, bool translucent) {
   if (!shadow_) shadow_ = std::make_unique<ShadowPass>();
   shadow_->begin(view.shadow_map_size);
@@ -477,10 +492,12 @@ void Renderer::draw_shadow_map(const ViewSettings& view, bool translucent) {
   if (triangle_indices_ > 0)
     shadow_->draw_triangles(cloth_vao_.get(), triangle_indices_, glm::mat4(1.0f));
   scenery_->draw_shadow(*shadow_);
+  if (colliders_) colliders_->draw_shadow(*shadow_);
   if (translucent) {
     shadow_->begin_opaque();
     shadow_->draw_floor(view.floor_height, view.floor_half_size);
     scenery_->draw_shadow(*shadow_);
+    if (colliders_) colliders_->draw_shadow(*shadow_);
     if (triangle_indices_ > 0) {
       shadow_->begin_transmittance();
       const glm::vec3 flat =

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "sim/model/model.hpp"
+#include "sim/scene/collider_spec.hpp"
 #include "vis/gl/objects.hpp"
 #include "vis/gl/pass_timer.hpp"
 #include "vis/render/light_rig.hpp"
@@ -21,6 +22,7 @@ struct Image;
 
 namespace clothlab::vis {
 
+class ColliderScenery;
 class DiffusionPass;
 class Scenery;
 class ShadowPass;
@@ -34,11 +36,14 @@ class Renderer {
   // (Re)builds the cloth's static buffers: UVs, rest positions, triangle and spring indices.
   // Call after building or resizing the solver.
   void set_cloth(Solver& solver);
-  // (Re)builds the scenery of the scene's [render] table: the pole from the solver's pins and
-  // the extra meshes. Call after set_cloth.
-  void set_scene(const RenderSpec& spec, const Solver& solver);
+  // (Re)builds the scenery of the scene's [render] table (the pole from the solver's pins and
+  // the extra meshes) and of its [[colliders]] (vis/render/collider_scenery.hpp; a horizontal
+  // plane is the floor, which scene_view() places). Call after set_cloth.
+  void set_scene(const RenderSpec& spec, const Solver& solver,
+                 const std::vector<ColliderSpec>& colliders = {});
   // Uploads the current positions and smooth normals (computed in parallel by the solver) into
-  // the vertex buffer, in place. Call once per frame before draw().
+  // the vertex buffer, in place, and poses moving colliders at the solver's time(). Call once
+  // per frame before draw().
   void update_cloth(Solver& solver);
   // The colour-by scalar, one per vertex (vertex_count() values), and the range the colour map
   // spans, for draws while view.color.field is not none.
@@ -80,6 +85,7 @@ class Renderer {
   std::unique_ptr<DiffusionPass> diffusion_;  // only while mode 6 shows subsurface light
   glm::vec2 atlas_per_metre_{1.0f};           // UV-atlas units per metre of cloth (u, v)
   std::unique_ptr<Scenery> scenery_;
+  std::unique_ptr<ColliderScenery> colliders_;  // only while the scene has colliders
   LightRig light_;
   // The box around the cloth's current positions (update_cloth): a caster the light must see.
   glm::vec3 cloth_lo_{0.0f}, cloth_hi_{0.0f};

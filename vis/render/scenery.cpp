@@ -9,6 +9,7 @@
 #include "vis/meshes/mesh.hpp"
 #include "vis/meshes/shapes.hpp"
 #include "vis/passes/shadow_pass.hpp"
+#include "vis/render/gpu_mesh.hpp"
 
 namespace clothlab::vis {
 namespace {
@@ -39,35 +40,12 @@ glm::mat4 rotate_x_to(glm::vec3 d) {
 Scenery::Scenery() : program_(build_program({"object.vert", "object.frag"})) {}
 
 void Scenery::add(const Mesh& mesh, const glm::mat4& model, glm::vec3 color) {
-  Object o;
-  o.vao = make_vertex_array();
-  o.vbo = make_buffer();
-  o.ebo = make_buffer();
-  std::vector<float> interleaved;
-  interleaved.reserve(6 * mesh.vertex_count());
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
-    const glm::vec3 p = mesh.positions[v], n = mesh.normals[v];
-    interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
-    const glm::vec3 w = glm::vec3(model * glm::vec4(p, 1.0f));
+    const glm::vec3 w = glm::vec3(model * glm::vec4(mesh.positions[v], 1.0f));
     lo_ = objects_.empty() && v == 0 ? w : glm::min(lo_, w);
     hi_ = objects_.empty() && v == 0 ? w : glm::max(hi_, w);
   }
-  glNamedBufferStorage(o.vbo.get(), static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)),
-                       interleaved.data(), 0);
-  glNamedBufferStorage(o.ebo.get(),
-                       static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
-                       mesh.indices.data(), 0);
-  glVertexArrayVertexBuffer(o.vao.get(), 0, o.vbo.get(), 0, 6 * sizeof(float));
-  for (GLuint a = 0; a < 2; ++a) {
-    glEnableVertexArrayAttrib(o.vao.get(), a);
-    glVertexArrayAttribFormat(o.vao.get(), a, 3, GL_FLOAT, GL_FALSE, a * 3 * sizeof(float));
-    glVertexArrayAttribBinding(o.vao.get(), a, 0);
-  }
-  glVertexArrayElementBuffer(o.vao.get(), o.ebo.get());
-  o.indices = static_cast<GLsizei>(mesh.indices.size());
-  o.model = model;
-  o.color = color;
-  objects_.push_back(std::move(o));
+  objects_.push_back({upload_mesh(mesh), model, color});
 }
 
 void Scenery::set_scene(const RenderSpec& spec, const Solver& solver) {
@@ -134,15 +112,15 @@ void Scenery::draw() const {
   for (const Object& o : objects_) {
     glProgramUniformMatrix4fv(program_.get(), kModel, 1, GL_FALSE, &o.model[0][0]);
     glProgramUniform3f(program_.get(), kColor, o.color.r, o.color.g, o.color.b);
-    glBindVertexArray(o.vao.get());
-    glDrawElements(GL_TRIANGLES, o.indices, GL_UNSIGNED_INT, nullptr);
+    glBindVertexArray(o.mesh.vao.get());
+    glDrawElements(GL_TRIANGLES, o.mesh.indices, GL_UNSIGNED_INT, nullptr);
   }
   glDisable(GL_CULL_FACE);
   glBindVertexArray(0);
 }
 
 void Scenery::draw_shadow(ShadowPass& pass) const {
-  for (const Object& o : objects_) pass.draw_triangles(o.vao.get(), o.indices, o.model);
+  for (const Object& o : objects_) pass.draw_triangles(o.mesh.vao.get(), o.mesh.indices, o.model);
 }
 
 }  // namespace clothlab::vis

@@ -8,6 +8,7 @@
 
 #include "sim/scene/render_spec.hpp"
 #include "vis/gl/objects.hpp"
+#include "vis/render/gpu_mesh.hpp"
 
 namespace clothlab {
 class Solver;
@@ -37,9 +38,7 @@ class Scenery {
 
  private:
   struct Object {
-    VertexArray vao;
-    Buffer vbo, ebo;
-    GLsizei indices = 0;
+    GpuMesh mesh;
     glm::mat4 model{1.0f};
     glm::vec3 color{0.8f};  // sRGB albedo
   };

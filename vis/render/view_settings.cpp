@@ -5,8 +5,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <vector>
 
+#include "sim/contact/collider.hpp"
 #include "sim/scene/scene.hpp"
 #include "sim/solver.hpp"
+#include "vis/render/floor_collider.hpp"
 
 namespace clothlab::vis {
 
@@ -46,16 +48,14 @@ void OrbitCamera::zoom(float factor) {
   distance = std::clamp(distance * factor, 0.05f, 500.0f);
 }
 
-ViewSettings default_view(const Solver& solver) {
-  ViewSettings s;
-  std::vector<float> xyz(3 * solver.vertex_count());
-  solver.copy_positions(xyz.data());
-  glm::vec3 lo(INFINITY), hi(-INFINITY);
-  for (std::size_t i = 0; i < solver.vertex_count(); ++i) {
-    const glm::vec3 p{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
+namespace {
+
+glm::vec3 to_glm(const Vec3d& v) {
+  return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
+}
+
+// Camera, floor and light around the box lo..hi (what default_view frames).
+void frame_box(ViewSettings& s, glm::vec3 lo, glm::vec3 hi) {
   const glm::vec3 centre = 0.5f * (lo + hi);
   const float radius = std::max(0.25f, 0.5f * glm::length(hi - lo));
   s.floor_height = std::min(0.0f, lo.y - 0.5f * radius);
@@ -68,19 +68,49 @@ ViewSettings default_view(const Solver& solver) {
   s.light_intensity = 1.2f * d * d;
   s.floor_half_size = std::max(30.0f, 15.0f * radius);  // out to near the horizon
   s.floor_tile_size = std::max(2.0f, 1.5f * radius);    // 4 x 4 stone tiles per repeat
-  return s;
 }
 
-namespace {
-
-glm::vec3 to_glm(const Vec3d& v) {
-  return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
+void cloth_bounds(const Solver& solver, glm::vec3& lo, glm::vec3& hi) {
+  std::vector<float> xyz(3 * solver.vertex_count());
+  solver.copy_positions(xyz.data());
+  lo = glm::vec3(INFINITY);
+  hi = glm::vec3(-INFINITY);
+  for (std::size_t i = 0; i < solver.vertex_count(); ++i) {
+    const glm::vec3 p{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
 }
 
 }  // namespace
 
+ViewSettings default_view(const Solver& solver) {
+  ViewSettings s;
+  glm::vec3 lo, hi;
+  cloth_bounds(solver, lo, hi);
+  frame_box(s, lo, hi);
+  return s;
+}
+
 ViewSettings scene_view(const Scene& scene, const Solver& solver) {
   ViewSettings s = default_view(solver);
+  // The cloth lands on its colliders: frame them too (where they are at t = 0; planes have no
+  // bounds and are left out).
+  glm::vec3 lo, hi;
+  cloth_bounds(solver, lo, hi);
+  bool grown = false;
+  for (const ColliderSpec& spec : scene.colliders) {
+    if (spec.kind == ColliderKind::plane) continue;
+    const Collider c(spec);
+    const clothlab::Bounds b = c.bounds(c.pose(0.0), 0.0);
+    lo = glm::min(lo, glm::vec3(float(b.lo.x()), float(b.lo.y()), float(b.lo.z())));
+    hi = glm::max(hi, glm::vec3(float(b.hi.x()), float(b.hi.y()), float(b.hi.z())));
+    grown = true;
+  }
+  if (grown) frame_box(s, lo, hi);
+  // A ground plane collider is the floor: the cloth must be seen landing on the floor it hits.
+  if (const auto floor = floor_collider(scene.colliders))
+    s.floor_height = static_cast<float>(scene.colliders[*floor].point[1]);
   const RenderSpec& r = scene.render;
   s.mode = static_cast<DisplayMode>(r.mode);
   s.shadows = r.shadows;

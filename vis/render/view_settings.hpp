@@ -113,7 +113,9 @@ glm::mat4 view_projection(const OrbitCamera& camera, int width, int height);
 // (at 0 when the cloth is above 0), light above and in front.
 ViewSettings default_view(const Solver& solver);
 
-// default_view with the scene's [render] choices: display mode, shadows, light, sky.
+// default_view with the scene's [render] choices: display mode, shadows, light, sky; framing the
+// colliders (other than planes) as well as the cloth, and the floor at the height of a ground
+// plane collider where the scene has one (floor_collider.hpp).
 ViewSettings scene_view(const Scene& scene, const Solver& solver);
 
 }  // namespace clothlab::vis

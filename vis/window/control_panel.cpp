@@ -134,6 +134,11 @@ std::optional<Action> buttons(const SimSession& session) {
   ImGui::SameLine();
   if (ImGui::Button("Reset (R)")) clicked = Action::reset;
   ImGui::SameLine();
+  // Greyed out once dropped: only Reset pins the cloth again.
+  ImGui::BeginDisabled(session.solver().pins_released());
+  if (ImGui::Button("Drop (D)")) clicked = Action::release_pins;
+  ImGui::EndDisabled();
+  ImGui::SameLine();
   if (ImGui::Button("Screenshot")) clicked = Action::screenshot;
   // Record writes the CSV trace of the pinned probe's vertex (or the scene's traced vertices).
   if (ImGui::Button(session.recording() ? "Stop recording" : "Record CSV"))
@@ -267,7 +272,11 @@ void draw_help_overlay(bool& open) {
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(b.help.data(), b.help.data() + b.help.size());
       }
-      const char* mouse[][2] = {{"left drag", "orbit"}, {"right drag", "pan"}, {"wheel", "zoom"}};
+      const char* mouse[][2] = {
+          {"left drag", "orbit"},
+          {"right drag", "pan"},
+          {"wheel", "zoom"},
+          {"Ctrl + left drag", "pull the cloth at the vertex under the cursor"}};
       for (const auto& row : mouse) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();

@@ -25,6 +25,7 @@ enum class Action {
   toggle_normal_arrows,  // N
   push,                  // P
   toggle_wind,           // W
+  release_pins,          // D: drop the cloth (onto the colliders); R pins it again
   pause,                 // Space
   single_step,           // .
   reset,                 // R
@@ -55,7 +56,8 @@ std::optional<Action> action_named(std::string_view name);
 // Display mode after key 1-3: key 1 toggles between springs and the last shaded mode.
 void select_mode(ViewSettings& view, DisplayMode& last_shaded, Action action);
 
-// Mouse camera control: left drag orbits, right drag pans, the wheel zooms.
+// Mouse camera control: left drag orbits, right drag pans, the wheel zooms (Ctrl + left drag
+// pulls the cloth instead: vis/window/cloth_grab.hpp).
 class MouseCamera {
  public:
   // A button went down or up at (x, y) window pixels. A press over the UI (ui_has_mouse) or with

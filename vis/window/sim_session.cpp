@@ -51,6 +51,7 @@ void SimSession::apply_dynamics() {
   // A diverged state is not worth carrying over: the new values wait for R.
   if (divergence_) return;
   next->load_state(*solver_);
+  if (solver_->pins_released()) next->release_pins();  // a dropped cloth stays dropped (D)
   solver_ = std::move(next);
 }
 

@@ -63,6 +63,14 @@ ViewHooks ViewHooks::from_environment() {
   }
   if (const char* n = std::getenv("CLOTHLAB_VIEW_CLICK")) hooks.click_frame = std::atol(n);
   if (const char* path = std::getenv("CLOTHLAB_VIEW_RECORD")) hooks.record = path;
+  if (const char* drag = std::getenv("CLOTHLAB_VIEW_DRAG")) {
+    const std::vector<std::string> v = split_commas(drag);
+    if (v.size() == 6) {
+      std::array<double, 6> d{};
+      for (std::size_t k = 0; k < 6; ++k) d[k] = std::atof(v[k].c_str());
+      hooks.drag = d;
+    }
+  }
   return hooks;
 }
 
@@ -103,6 +111,9 @@ void ViewApp::install_callbacks() {
     app.mouse_.button(button, action, mods, ui, x, y);
     // A left press and release in place (not a drag) is a click: it pins the probe.
     if (button != GLFW_MOUSE_BUTTON_LEFT) return;
+    // Ctrl + left drag pulls the cloth: the vertex is picked in the frame's draw.
+    if (action == GLFW_PRESS && !ui && (mods & GLFW_MOD_CONTROL)) app.grab_.press(x, y);
+    if (action == GLFW_RELEASE) app.grab_.release(app.session_.solver());
     if (action == GLFW_PRESS && !ui && !(mods & GLFW_MOD_CONTROL)) {
       app.left_press_ = std::array<double, 2>{x, y};
     } else if (action == GLFW_RELEASE && app.left_press_) {
@@ -116,6 +127,7 @@ void ViewApp::install_callbacks() {
     int width = 0, height = 0;
     glfwGetWindowSize(win, &width, &height);
     app.mouse_.move(app.view_, x, y, height);
+    app.grab_.drag_to(app.session_.solver(), app.view_.camera, x, y, width, height);
   });
   glfwSetScrollCallback(w, [](GLFWwindow* win, double, double dy) {
     ViewApp& app = app_of(win);
@@ -156,6 +168,7 @@ void ViewApp::frame() {
   }
   if (frame_index_ == hooks_.click_frame && hooks_.cursor)
     click((*hooks_.cursor)[0], (*hooks_.cursor)[1]);
+  drag_hook();
   for (Action a : pending_actions_) dispatch(a);
   pending_actions_.clear();
 
@@ -247,6 +260,9 @@ void ViewApp::dispatch(Action action) {
     case Action::toggle_wind:
       session_.toggle_wind();
       break;
+    case Action::release_pins:
+      release_pins();
+      break;
     case Action::pause:
       session_.paused = !session_.paused;
       break;
@@ -288,13 +304,42 @@ void ViewApp::push() {
   session_.push(Vec3d{s * d.x, s * d.y, s * d.z});
 }
 
+// D: the cloth lets go of its pins and drops (onto the colliders); R pins it again.
+void ViewApp::release_pins() {
+  session_.solver().release_pins();
+  if (!session_.solver().pins_released()) return;
+  panel_.message = "pins released: the cloth drops (R pins it again)";
+  std::printf("clothlab view: %s\n", panel_.message.c_str());
+}
+
+// The scripted Ctrl + left drag of CLOTHLAB_VIEW_DRAG: what the mouse callbacks would do.
+void ViewApp::drag_hook() {
+  if (!hooks_.drag) return;
+  const std::array<double, 6>& d = *hooks_.drag;
+  const long f0 = std::lround(d[4]), f1 = std::lround(d[5]);
+  if (frame_index_ == f0) {
+    grab_.press(d[0], d[1]);
+  } else if (frame_index_ > f0 && frame_index_ < f1) {
+    const double s =
+        std::min(1.0, double(frame_index_ - f0) / std::max(1.0, 0.5 * double(f1 - f0)));
+    int w = 0, h = 0;
+    glfwGetWindowSize(window_.handle(), &w, &h);
+    grab_.drag_to(session_.solver(), view_.camera, d[0] + s * (d[2] - d[0]),
+                  d[1] + s * (d[3] - d[1]), w, h);
+  } else if (frame_index_ == f1) {
+    const std::string line = grab_.release(session_.solver());
+    std::printf("clothlab view: grab: %s\n", line.empty() ? "nothing grabbed" : line.c_str());
+  }
+}
+
 void ViewApp::draw(int width, int height) {
   Solver& solver = session_.solver();
   if (rendered_generation_ != session_.generation()) {
     renderer_->set_cloth(solver);  // a reset may have changed the vertex count
-    renderer_->set_scene(session_.scene().render, solver);
+    renderer_->set_scene(session_.scene().render, solver, session_.scene().colliders);
     diagnostics_->set_cloth();
     pinned_vertex_ = -1;
+    grab_.forget();  // its vertex belonged to the old solver
     rendered_generation_ = session_.generation();
   }
   // A diverged state is all NaN or kilometres away: keep showing the last sane one.
@@ -307,6 +352,12 @@ void ViewApp::draw(int width, int height) {
   renderer_->draw(view_, width, height);
   diagnostics_->draw(view_, *renderer_);
   draw_legends(view_, *diagnostics_);
+  if (grab_.pending()) {
+    int window_w = 0, window_h = 0;
+    glfwGetWindowSize(window_.handle(), &window_w, &window_h);
+    grab_.pick(solver, *renderer_, field_pass_, view_, width, height, window_w, window_h);
+    if (!panel_.probe) field_pass_.reset();
+  }
   if (panel_.probe) probe_under_cursor(width, height);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, width, height);

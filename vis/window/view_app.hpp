@@ -13,6 +13,7 @@
 #include "sim/realtime/frame_stepper.hpp"
 #include "sim/scene/scene.hpp"
 #include "vis/render/view_settings.hpp"
+#include "vis/window/cloth_grab.hpp"
 #include "vis/window/control_panel.hpp"
 #include "vis/window/frame_stats.hpp"
 #include "vis/window/glfw_window.hpp"
@@ -37,7 +38,11 @@ class Renderer;
 //   CLOTHLAB_VIEW_CLICK=N              a left click at that point on frame N (pins the probe);
 //   CLOTHLAB_VIEW_RECORD=file.csv      press Record on frame 1 (or the frame after the click),
 //                                      writing to file.csv (the window closing while recording
-//                                      must leave it complete).
+//                                      must leave it complete);
+//   CLOTHLAB_VIEW_DRAG="X0,Y0,X1,Y1,F0,F1"  a Ctrl + left drag: press at (X0, Y0) on frame F0,
+//                                      the cursor moving to (X1, Y1) by the frame halfway to
+//                                      F1 and held there, release on frame F1 (prints a line
+//                                      "clothlab view: grab: released vertex ...").
 struct ViewHooks {
   long exit_after_frames = 0;  // 0: run until the user quits
   std::string screenshot;
@@ -45,6 +50,7 @@ struct ViewHooks {
   std::optional<std::array<double, 2>> cursor;
   long click_frame = 0;
   std::string record;
+  std::optional<std::array<double, 6>> drag;
 
   static ViewHooks from_environment();
 };
@@ -75,13 +81,16 @@ class ViewApp {
   void take_screenshot(const std::string& path, int width, int height);
   void update_title();
   void push();
+  void release_pins();
+  void drag_hook();  // CLOTHLAB_VIEW_DRAG
 
   SimSession session_;
   ViewHooks hooks_;
   std::string scene_name_;
   GlfwWindow window_;
   std::unique_ptr<Renderer> renderer_;
-  std::unique_ptr<FieldPass> field_pass_;     // only while a probe is on; sized to the framebuffer
+  // Only while a probe is on (and for the pick of a Ctrl + drag); sized to the framebuffer.
+  std::unique_ptr<FieldPass> field_pass_;
   std::unique_ptr<Diagnostics> diagnostics_;  // colour-by scalar and arrows (what is on)
   // Clicking with a probe on pins it to the vertex under the cursor: it follows that vertex.
   std::optional<std::array<double, 2>> pending_click_;
@@ -92,6 +101,7 @@ class ViewApp {
   ViewSettings view_;
   DisplayMode last_shaded_ = DisplayMode::lambert;
   MouseCamera mouse_;
+  ClothGrab grab_;  // Ctrl + left drag
   PanelState panel_;
   FrameStepper stepper_;
   FrameStats stats_;

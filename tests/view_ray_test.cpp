@@ -1,0 +1,34 @@
+// Ctrl + drag's geometry (vis/render/view_ray.hpp): the point found under a pixel on the plane
+// through an anchor lies on that plane and projects back onto the same pixel.
+#include <gtest/gtest.h>
+
+#include "pixels.hpp"
+#include "vis/render/view_ray.hpp"
+
+namespace clothlab {
+namespace {
+
+TEST(ViewRayTest, PointUnderCursorOnTheCameraFacingPlane) {
+  vis::OrbitCamera camera;
+  camera.target = {0.2f, 1.0f, -0.3f};
+  camera.yaw_deg = 35.0f;
+  camera.pitch_deg = 20.0f;
+  camera.distance = 4.0f;
+  const int w = 640, h = 400;
+  const glm::vec3 anchor{0.5f, 1.2f, 0.1f};
+  const glm::vec3 forward = glm::normalize(camera.target - camera.eye());
+  // The anchor's own pixel gives the anchor back.
+  const glm::vec2 a = testing::screen_position(camera, w, h, anchor);
+  const glm::vec3 same = vis::point_on_view_plane(camera, w, h, a.x, a.y, anchor);
+  EXPECT_NEAR(glm::length(same - anchor), 0.0f, 1e-4f);
+  for (const glm::vec2 cursor : {glm::vec2(100.0f, 50.0f), glm::vec2(600.0f, 380.0f)}) {
+    const glm::vec3 p = vis::point_on_view_plane(camera, w, h, cursor.x, cursor.y, anchor);
+    EXPECT_NEAR(glm::dot(p - anchor, forward), 0.0f, 1e-4f);  // on the plane
+    const glm::vec2 back = testing::screen_position(camera, w, h, p);
+    EXPECT_NEAR(back.x, cursor.x, 0.01f);
+    EXPECT_NEAR(back.y, cursor.y, 0.01f);
+  }
+}
+
+}  // namespace
+}  // namespace clothlab
