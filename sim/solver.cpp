@@ -57,6 +57,7 @@ SolverT<T>::SolverT(const Scene& scene, SpringKernel kernel)
   force_field_.resize(model_.n);
   if (!scene.colliders.empty())
     contacts_ = std::make_unique<ContactResponse<T>>(scene.colliders, model_);
+  if (spec_.self_collision) self_ = std::make_unique<SelfCollision<T>>(model_, spec_);
   for (const ClothSpec& c : scene.cloths) release_at_.push_back(c.release_at);
   built_release_at_ = release_at_;
   built_pins_ = model_.pinned;
@@ -84,13 +85,16 @@ AdvanceResult SolverT<T>::step(long count) {
   for (long k = 0; k < count; ++k) {
     const double t0 = time();
     release_due(false);
+    // Self-collision pairs once per step, reused by every substep (contact.md section 2).
+    if (self_) self_->find_pairs(model_, state_, dt_, threads_);
     for (int sub = 0; sub < substeps_; ++sub) {
       if (contacts_) contacts_->begin(state_, threads_);
       integrator_->step(sys, state_, t0 + sub * h, static_cast<T>(h));
       record(integrator_->last_stats());
       if (grab_) pull_grabbed(h);
-      if (contacts_ && contacts_->respond(model_, state_, t0 + sub * h, h, threads_))
-        integrator_->state_corrected();
+      bool corrected = contacts_ && contacts_->respond(model_, state_, t0 + sub * h, h, threads_);
+      if (self_ && self_->respond(model_, state_, h)) corrected = true;
+      if (corrected) integrator_->state_corrected();
     }
     ++steps_;
     ++result.steps;

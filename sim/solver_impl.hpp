@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "sim/contact/contact_response.hpp"
+#include "sim/contact/self_collision.hpp"
 #include "sim/solver.hpp"
 
 namespace clothlab {
@@ -61,6 +62,9 @@ class SolverT final : public Solver {
     return contacts_ ? contacts_->last() : ContactStats{};
   }
 
+  // The self-collision response (solver.self_collision), or null when it is off.
+  const SelfCollision<T>* self_collision() const { return self_.get(); }
+
   // Direct access for tests and benchmarks. Call state_changed() after writing the state.
   const Model<T>& model() const { return model_; }
   State<T>& state() { return state_; }
@@ -94,6 +98,7 @@ class SolverT final : public Solver {
   int threads_ = 1;
   std::unique_ptr<Integrator<T>> integrator_;
   std::unique_ptr<ContactResponse<T>> contacts_;   // only with colliders
+  std::unique_ptr<SelfCollision<T>> self_;         // only with solver.self_collision
   std::vector<std::optional<double>> release_at_;  // per cloth, s; reset when it happened
   std::vector<std::optional<double>> built_release_at_;
   std::vector<int> built_pins_;  // global indices, as built
