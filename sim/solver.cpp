@@ -58,6 +58,8 @@ SolverT<T>::SolverT(const Scene& scene, SpringKernel kernel)
   if (!scene.colliders.empty())
     contacts_ = std::make_unique<ContactResponse<T>>(scene.colliders, model_);
   if (spec_.self_collision) self_ = std::make_unique<SelfCollision<T>>(model_, spec_);
+  moving_pins_ = std::make_unique<KinematicPins<T>>(scene, model_);
+  if (moving_pins_->empty()) moving_pins_.reset();
   for (const ClothSpec& c : scene.cloths) release_at_.push_back(c.release_at);
   built_release_at_ = release_at_;
   built_pins_ = model_.pinned;
@@ -89,8 +91,10 @@ AdvanceResult SolverT<T>::step(long count) {
     if (self_) self_->find_pairs(model_, state_, dt_, threads_);
     for (int sub = 0; sub < substeps_; ++sub) {
       if (contacts_) contacts_->begin(state_, threads_);
+      if (moving_pins_) moving_pins_->drive(model_, state_, t0 + sub * h, h);
       integrator_->step(sys, state_, t0 + sub * h, static_cast<T>(h));
       record(integrator_->last_stats());
+      if (moving_pins_) moving_pins_->place(model_, state_, t0 + (sub + 1) * h);
       if (grab_) pull_grabbed(h);
       bool corrected = contacts_ && contacts_->respond(model_, state_, t0 + sub * h, h, threads_);
       if (self_ && self_->respond(model_, state_, h)) corrected = true;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "sim/contact/contact_response.hpp"
+#include "sim/contact/kinematic_pins.hpp"
 #include "sim/contact/self_collision.hpp"
 #include "sim/solver.hpp"
 
@@ -99,6 +100,7 @@ class SolverT final : public Solver {
   std::unique_ptr<Integrator<T>> integrator_;
   std::unique_ptr<ContactResponse<T>> contacts_;   // only with colliders
   std::unique_ptr<SelfCollision<T>> self_;         // only with solver.self_collision
+  std::unique_ptr<KinematicPins<T>> moving_pins_;  // only with cloth.pins_follow
   std::vector<std::optional<double>> release_at_;  // per cloth, s; reset when it happened
   std::vector<std::optional<double>> built_release_at_;
   std::vector<int> built_pins_;  // global indices, as built
