@@ -66,6 +66,14 @@ struct ClothLookSpec {
   std::optional<Vec3d> color;      // a plain sRGB albedo instead of the woven texture
 };
 
+// Where the view starts (the orbit camera: it looks at `target` from `distance` m, turned `yaw`
+// degrees about the vertical from +z and raised `pitch` degrees); anything absent is framed from
+// the cloth and the colliders.
+struct CameraSpec {
+  std::optional<Vec3d> target;
+  std::optional<double> yaw, pitch, distance;
+};
+
 struct RenderSpec {
   int mode = 3;  // the display mode (keys 1-7) the view starts in
   ShadowFilter shadows = ShadowFilter::pcf;
@@ -75,6 +83,7 @@ struct RenderSpec {
   PoleSpec pole;
   std::vector<MeshSpec> meshes;
   ClothLookSpec cloth;
+  CameraSpec camera;
 };
 
 // Names as written in scene files, in enum order (the parser and the UI list them).

@@ -82,8 +82,9 @@ constexpr std::string_view kSolverKeys[] = {
     "threads",    "precision", "backend",  "self_collision", "self_thickness"};
 constexpr std::string_view kTraceKeys[] = {"vertices", "fields", "every"};
 constexpr std::string_view kTraceFields[] = {"position", "velocity", "force", "energy"};
-constexpr std::string_view kRenderKeys[] = {"mode", "shadows", "shadow_map_size", "light",
-                                            "sky",  "pole",    "meshes",          "cloth"};
+constexpr std::string_view kRenderKeys[] = {"mode", "shadows", "shadow_map_size", "light", "sky",
+                                            "pole", "meshes",  "cloth",           "camera"};
+constexpr std::string_view kCameraKeys[] = {"target", "yaw", "pitch", "distance"};
 constexpr std::string_view kLightKeys[] = {"type",  "position",  "target", "direction",
                                            "color", "intensity", "size"};
 constexpr std::string_view kSkyKeys[] = {"enabled", "turbidity"};
@@ -509,6 +510,14 @@ class Reader {
       }
     });
     field(t, key, "cloth", [&](auto& n, auto& k) { read_look(table(n, k), k, r.cloth); });
+    field(t, key, "camera", [&](auto& n, auto& k) {
+      const toml::table& c = table(n, k);
+      check_keys(c, k, kCameraKeys);
+      field(c, k, "target", [&](auto& m, auto& q) { r.camera.target = numbers<3>(m, q); });
+      field(c, k, "yaw", [&](auto& m, auto& q) { r.camera.yaw = number(m, q); });
+      field(c, k, "pitch", [&](auto& m, auto& q) { r.camera.pitch = number(m, q); });
+      field(c, k, "distance", [&](auto& m, auto& q) { r.camera.distance = number(m, q); });
+    });
   }
 
   void read_light(const toml::table& t, const std::string& key, LightSpec& light) {

@@ -324,6 +324,10 @@ class Validator {
     non_negative("render.light.size", l.size);
     within("render.sky.turbidity", r.sky.turbidity, 1.7, 10.0);  // Preetham's fitted range
     within("render.pole.radius", r.pole.radius, 1e-4, 1.0);
+    if (r.camera.target) finite3("render.camera.target", *r.camera.target);
+    if (r.camera.yaw) finite("render.camera.yaw", *r.camera.yaw);
+    if (r.camera.pitch) within("render.camera.pitch", *r.camera.pitch, -89.0, 89.0);
+    if (r.camera.distance) within("render.camera.distance", *r.camera.distance, 0.01, 1e4);
     for (const MeshSpec& m : r.meshes) {
       finite3(m.key + ".center", m.center);
       positive(m.key + ".radius", m.radius);

@@ -101,7 +101,9 @@ ViewSettings scene_view(const Scene& scene, const Solver& solver) {
   bool grown = false;
   for (const ColliderSpec& spec : scene.colliders) {
     if (spec.kind == ColliderKind::plane) continue;
-    const Collider c(spec);
+    ColliderSpec pose_only = spec;  // a mesh's distance grid is the solver's business
+    pose_only.mesh.reset();
+    const Collider c(pose_only);
     const clothlab::Bounds b = c.bounds(c.pose(0.0), 0.0);
     lo = glm::min(lo, glm::vec3(float(b.lo.x()), float(b.lo.y()), float(b.lo.z())));
     hi = glm::max(hi, glm::vec3(float(b.hi.x()), float(b.hi.y()), float(b.hi.z())));
@@ -112,6 +114,11 @@ ViewSettings scene_view(const Scene& scene, const Solver& solver) {
   if (const auto floor = floor_collider(scene.colliders))
     s.floor_height = static_cast<float>(scene.colliders[*floor].point[1]);
   const RenderSpec& r = scene.render;
+  // The scene's own camera, where it gives one.
+  if (r.camera.target) s.camera.target = to_glm(*r.camera.target);
+  if (r.camera.yaw) s.camera.yaw_deg = static_cast<float>(*r.camera.yaw);
+  if (r.camera.pitch) s.camera.pitch_deg = static_cast<float>(*r.camera.pitch);
+  if (r.camera.distance) s.camera.distance = static_cast<float>(*r.camera.distance);
   s.mode = static_cast<DisplayMode>(r.mode);
   s.shadows = r.shadows;
   s.shadow_map_size = r.shadow_map_size;
