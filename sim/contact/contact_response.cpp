@@ -4,23 +4,12 @@
 #include <cmath>
 
 #include "sim/core/parallel.hpp"
+#include "sim/core/vec3_eigen.hpp"
 
 namespace clothlab {
 namespace {
 
 using V3 = Eigen::Vector3d;
-
-template <class T>
-V3 load(const Vec3Array<T>& a, std::size_t i) {
-  return {double(a.x[i]), double(a.y[i]), double(a.z[i])};
-}
-
-template <class T>
-void store(Vec3Array<T>& a, std::size_t i, const V3& v) {
-  a.x[i] = static_cast<T>(v.x());
-  a.y[i] = static_cast<T>(v.y());
-  a.z[i] = static_cast<T>(v.z());
-}
 
 // The first point of the local path p0 -> p1 on the shell phi = thickness, by sphere tracing
 // (each march as long as the distance to the shell, which no exact signed distance overshoots).
@@ -61,10 +50,10 @@ ContactResponse<T>::ContactResponse(const std::vector<ColliderSpec>& colliders, 
     for (int j = 0; j < c.nv; ++j)
       for (int i = 0; i < c.nu; ++i) {
         const auto v = static_cast<std::size_t>(c.offset + i + j * c.nu);
-        const V3 x = load(m.rest_positions, v);
-        if (i + 1 < c.nu) longest = std::max(longest, (load(m.rest_positions, v + 1) - x).norm());
+        const V3 x = load3(m.rest_positions, v);
+        if (i + 1 < c.nu) longest = std::max(longest, (load3(m.rest_positions, v + 1) - x).norm());
         if (j + 1 < c.nv)
-          longest = std::max(longest, (load(m.rest_positions, v + std::size_t(c.nu)) - x).norm());
+          longest = std::max(longest, (load3(m.rest_positions, v + std::size_t(c.nu)) - x).norm());
       }
   for (const Collider& c : colliders_) {
     const ColliderSpec& spec = c.spec();
@@ -161,10 +150,10 @@ template <class T>
 bool ContactResponse<T>::vertex(std::size_t i, const Model<T>& m, State<T>& s, double h,
                                 double& depth) const {
   if (m.inv_mass[i] == T(0)) return false;  // pinned: held where it is
-  V3 x1 = load(s.pos, i), v = load(s.vel, i);
-  if (!point(load(start_, i), x1, v, h, depth)) return false;
-  store(s.pos, i, x1);
-  store(s.vel, i, v);
+  V3 x1 = load3(s.pos, i), v = load3(s.vel, i);
+  if (!point(load3(start_, i), x1, v, h, depth)) return false;
+  store3(s.pos, i, x1);
+  store3(s.vel, i, v);
   return true;
 }
 
@@ -176,8 +165,8 @@ bool ContactResponse<T>::edge(std::size_t a, std::size_t b, const Model<T>& m, S
                               double h, double& depth) const {
   const bool free_a = m.inv_mass[a] != T(0), free_b = m.inv_mass[b] != T(0);
   if (!free_a && !free_b) return false;
-  const V3 x0 = 0.5 * (load(start_, a) + load(start_, b));
-  const V3 xa = load(s.pos, a), xb = load(s.pos, b), va = load(s.vel, a), vb = load(s.vel, b);
+  const V3 x0 = 0.5 * (load3(start_, a) + load3(start_, b));
+  const V3 xa = load3(s.pos, a), xb = load3(s.pos, b), va = load3(s.vel, a), vb = load3(s.vel, b);
   const V3 mid = 0.5 * (xa + xb), v_mid = 0.5 * (va + vb);
   V3 x1 = mid, v = v_mid;
   if (!point(x0, x1, v, h, depth)) return false;
@@ -185,12 +174,12 @@ bool ContactResponse<T>::edge(std::size_t a, std::size_t b, const Model<T>& m, S
   const double scale = free_a && free_b ? 1.0 : 2.0;
   const V3 dx = scale * (x1 - mid), dv = scale * (v - v_mid);
   if (free_a) {
-    store(s.pos, a, V3(xa + dx));
-    store(s.vel, a, V3(va + dv));
+    store3(s.pos, a, V3(xa + dx));
+    store3(s.vel, a, V3(va + dv));
   }
   if (free_b) {
-    store(s.pos, b, V3(xb + dx));
-    store(s.vel, b, V3(vb + dv));
+    store3(s.pos, b, V3(xb + dx));
+    store3(s.vel, b, V3(vb + dv));
   }
   return true;
 }
@@ -213,7 +202,7 @@ bool ContactResponse<T>::respond(const Model<T>& m, State<T>& s, double t, doubl
                          [&](std::size_t block, std::size_t b, std::size_t e) {
                            Bounds box{V3::Constant(INFINITY), V3::Constant(-INFINITY)};
                            for (std::size_t i = b; i < e; ++i) {
-                             const V3 x0 = load(start_, i), x1 = load(s.pos, i);
+                             const V3 x0 = load3(start_, i), x1 = load3(s.pos, i);
                              box.lo = box.lo.cwiseMin(x0.cwiseMin(x1));
                              box.hi = box.hi.cwiseMax(x0.cwiseMax(x1));
                            }

@@ -4,23 +4,12 @@
 #include <cmath>
 
 #include "sim/core/parallel.hpp"
+#include "sim/core/vec3_eigen.hpp"
 
 namespace clothlab {
 namespace {
 
 using V3 = Eigen::Vector3d;
-
-template <class T>
-V3 load(const Vec3Array<T>& a, std::size_t i) {
-  return {double(a.x[i]), double(a.y[i]), double(a.z[i])};
-}
-
-template <class T>
-void store(Vec3Array<T>& a, std::size_t i, const V3& v) {
-  a.x[i] = static_cast<T>(v.x());
-  a.y[i] = static_cast<T>(v.y());
-  a.z[i] = static_cast<T>(v.z());
-}
 
 // A cell coordinate, clamped so that a stray (or non-finite) position still gets a cell and the
 // neighbouring cell's coordinate (+1) cannot overflow.
@@ -64,7 +53,7 @@ SelfCollision<T>::SelfCollision(const Model<T>& m, const SolverSpec& spec)
                 static_cast<std::int32_t>(c));
     // Half a grid square's diagonal: the widest hole between a layer's vertices.
     const auto at = [&](int i, int j) {
-      return load(m.rest_positions, std::size_t(r.offset + i + j * r.nu));
+      return load3(m.rest_positions, std::size_t(r.offset + i + j * r.nu));
     };
     const double eu = r.nu > 1 ? (at(1, 0) - at(0, 0)).norm() : 0.0;
     const double ev = r.nv > 1 ? (at(0, 1) - at(0, 0)).norm() : 0.0;
@@ -106,7 +95,7 @@ template <class T>
 bool SelfCollision<T>::skipped(std::size_t i, std::size_t j, const Model<T>& m) const {
   if (m.inv_mass[i] == T(0) && m.inv_mass[j] == T(0)) return true;  // neither can move
   if (cloth_of_[i] != cloth_of_[j]) return false;
-  const V3 d = load(m.rest_positions, j) - load(m.rest_positions, i);
+  const V3 d = load3(m.rest_positions, j) - load3(m.rest_positions, i);
   return d.squaredNorm() < skip_distance_ * skip_distance_;
 }
 
@@ -116,7 +105,7 @@ void SelfCollision<T>::find_pairs(const Model<T>& m, const State<T>& s, double d
   // vmax: the largest speed, per block and then over the blocks (a max is exact in any order).
   for_each_block_indexed(n, threads, [&](std::size_t block, std::size_t b, std::size_t e) {
     double top = 0.0;
-    for (std::size_t i = b; i < e; ++i) top = std::max(top, load(s.vel, i).squaredNorm());
+    for (std::size_t i = b; i < e; ++i) top = std::max(top, load3(s.vel, i).squaredNorm());
     block_speed2_[block] = top;
   });
   double speed2 = 0.0;
@@ -131,7 +120,7 @@ void SelfCollision<T>::find_pairs(const Model<T>& m, const State<T>& s, double d
 
   for_each_block(n, threads, [&](std::size_t b, std::size_t e) {
     for (std::size_t i = b; i < e; ++i) {
-      const V3 x = load(s.pos, i) * inv_cell;
+      const V3 x = load3(s.pos, i) * inv_cell;
       cell_[i] = {cell_coordinate(x.x()), cell_coordinate(x.y()), cell_coordinate(x.z())};
       bucket_[i] = hash(cell_[i]);
     }
@@ -151,7 +140,7 @@ void SelfCollision<T>::find_pairs(const Model<T>& m, const State<T>& s, double d
     Pair* out = pairs_.data() + block * block_capacity_;
     int count = 0, dropped = 0;
     for (std::size_t i = b; i < e; ++i) {
-      const V3 xi = load(s.pos, i);
+      const V3 xi = load3(s.pos, i);
       const Cell ci = cell_[i];
       for (const Cell& d : kHalfStencil) {
         const Cell c{ci.x + d.x, ci.y + d.y, ci.z + d.z};
@@ -193,10 +182,10 @@ bool SelfCollision<T>::respond(const Model<T>& m, State<T>& s, double h) {
     const auto i = static_cast<std::size_t>(p.a), j = static_cast<std::size_t>(p.b);
     const double wi = double(m.inv_mass[i]), wj = double(m.inv_mass[j]), w = wi + wj;
     if (w == 0.0) return;
-    V3 xi = load(s.pos, i), xj = load(s.pos, j);
+    V3 xi = load3(s.pos, i), xj = load3(s.pos, j);
     const V3 d = xj - xi;
     const double dist2 = d.squaredNorm();
-    const V3 vi0 = load(s.vel, i), vj0 = load(s.vel, j);
+    const V3 vi0 = load3(s.vel, i), vj0 = load3(s.vel, j);
     const V3 rel = vj0 - vi0;
     // Most pairs are apart and not closing: nothing to do (and no square root).
     if (dist2 >= th * th && rel.dot(d) >= 0.0) return;
@@ -220,16 +209,16 @@ bool SelfCollision<T>::respond(const Model<T>& m, State<T>& s, double h) {
       else
         vt *= 1.0 - kFriction * dvn / speed;
       const V3 dv = (vt + vn_min * n) - rel;  // the change of the relative velocity
-      store(s.vel, i, V3(vi0 - (wi / w) * dv));
-      store(s.vel, j, V3(vj0 + (wj / w) * dv));
+      store3(s.vel, i, V3(vi0 - (wi / w) * dv));
+      store3(s.vel, j, V3(vj0 + (wj / w) * dv));
       changed = true;
     }
     if (gap < 0.0) {
       // Pushed apart to the thickness, by inverse mass; the velocities stay.
       xi -= (wi / w) * (-gap) * n;
       xj += (wj / w) * (-gap) * n;
-      store(s.pos, i, xi);
-      store(s.pos, j, xj);
+      store3(s.pos, i, xi);
+      store3(s.pos, j, xj);
       depth = std::max(depth, -gap);
       changed = true;
     }
