@@ -44,6 +44,7 @@ clothlab_bad_scene(unknown_integrator 6 "solver\\.integrator" "unknown integrato
 clothlab_bad_scene(gpu_backend 6 "solver\\.backend" ".*not supported yet")
 clothlab_bad_scene(collider_radius 8 "colliders.0.\\.radius" "must be > 0")
 clothlab_bad_scene(collider_friction 8 "colliders.0.\\.friction\\.static" "must be >= 0")
+clothlab_bad_scene(collider_obj_missing 6 "colliders.0.\\.file" "[^\n]*no_such_chair\\.obj: no such OBJ file")
 clothlab_bad_scene(skewed_axes 5 "cloth\\.v_axis" "must be orthogonal")
 clothlab_bad_scene(wind_without_velocity 6 "forces\\.wind\\.velocity" "missing")
 clothlab_bad_scene(trace_outside 7 "trace\\.vertices.1." "vertex .8, 2. is outside")
@@ -280,6 +281,24 @@ if(XVFB_RUN)
       "-DEXPECT_REGEX=clothlab view: grab: released vertex [0-9]+ [^\n]*\\(closer\\)"
       -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
   set_tests_properties(cli.view.grab_drag PROPERTIES TIMEOUT 120
+    ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
+  # The scene picker opens another scene in the running window (its colliders with it); a
+  # file that cannot be built leaves the running scene and says why.
+  add_test(NAME cli.view.scene_picker
+    COMMAND ${CMAKE_COMMAND}
+      "-DCOMMAND=${CMAKE_COMMAND}|-E|env|--unset=WAYLAND_DISPLAY|CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=5|CLOTHLAB_VIEW_OPEN=2:${PROJECT_SOURCE_DIR}/scenes/drop_sphere.toml|${XVFB_RUN}|-a|-s|-screen 0 1280x800x24|$<TARGET_FILE:clothlab>|view|${CLOTHLAB_DEFAULT_SCENE}"
+      "-DEXPECT_RC=0"
+      "-DEXPECT_REGEX=clothlab view: opened drop_sphere\\.toml \\(1024 vertices, 2 colliders\\)"
+      -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
+  set_tests_properties(cli.view.scene_picker PROPERTIES TIMEOUT 120
+    ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
+  add_test(NAME cli.view.scene_picker_bad
+    COMMAND ${CMAKE_COMMAND}
+      "-DCOMMAND=${CMAKE_COMMAND}|-E|env|--unset=WAYLAND_DISPLAY|CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=5|CLOTHLAB_VIEW_OPEN=2:${CLOTHLAB_BAD_SCENES}/collider_radius.toml|${XVFB_RUN}|-a|-s|-screen 0 1280x800x24|$<TARGET_FILE:clothlab>|view|${CLOTHLAB_DEFAULT_SCENE}"
+      "-DEXPECT_RC=0"
+      "-DEXPECT_REGEX=clothlab view: not opened: [^\n]*collider_radius\\.toml:8:[0-9]+: colliders.0.\\.radius: must be > 0"
+      -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
+  set_tests_properties(cli.view.scene_picker_bad PROPERTIES TIMEOUT 120
     ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
 else()
   message(WARNING "xvfb-run not found: the window test is not run (scripts/deps installs it)")

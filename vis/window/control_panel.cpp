@@ -1,5 +1,7 @@
 #include "vis/window/control_panel.hpp"
 
+#include <algorithm>
+
 #include <imgui.h>
 
 #include <cfloat>
@@ -182,6 +184,32 @@ void messages(const SimSession& session, const FrameStats& stats, const PanelSta
 
 }  // namespace
 
+namespace {
+
+// The scene picker: a combo of the scene files in the running scene's folder (scenes/ for the
+// shipped ones); choosing one asks the app to open it.
+void scene_picker(const SimSession& session, PanelState& state) {
+  namespace fs = std::filesystem;
+  const fs::path current(session.scene().file);
+  if (state.scene_files.empty()) {
+    std::error_code ec;
+    const fs::path folder = current.has_parent_path() ? current.parent_path() : fs::path(".");
+    for (const auto& entry : fs::directory_iterator(folder, ec))
+      if (entry.path().extension() == ".toml") state.scene_files.push_back(entry.path().string());
+    std::sort(state.scene_files.begin(), state.scene_files.end());
+  }
+  const std::string name = current.filename().string();
+  ImGui::SetNextItemWidth(180.0f);
+  if (!ImGui::BeginCombo("##scene", name.c_str())) return;
+  for (const std::string& file : state.scene_files) {
+    const std::string label = fs::path(file).filename().string();
+    if (ImGui::Selectable(label.c_str(), label == name) && label != name) state.open_scene = file;
+  }
+  ImGui::EndCombo();
+}
+
+}  // namespace
+
 std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view, PanelState& state,
                                          const FrameStats& stats) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
@@ -193,8 +221,9 @@ std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view
     return clicked;
   }
   ImGui::PushItemWidth(-150.0f);  // room for the labels on the right
-  ImGui::TextDisabled("%s   (H: keys)",
-                      std::filesystem::path(session.scene().file).filename().string().c_str());
+  scene_picker(session, state);
+  ImGui::SameLine();
+  ImGui::TextDisabled("(H: keys)");
   clicked = buttons(session);
 
   Scene& draft = session.draft();

@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "vis/render/field_pass.hpp"
 #include "vis/render/view_settings.hpp"
@@ -20,6 +21,10 @@ struct PanelState {
   bool show_help = false;
   std::optional<Field> probe;  // keys 8 / 9 / 0; nothing: probing off (no field pass drawn)
   std::string message;         // last notice, e.g. where a screenshot went
+  // The scene picker: the .toml files beside the running scene (listed once), and the one the
+  // user chose this frame, for the app to open.
+  std::vector<std::string> scene_files;
+  std::optional<std::string> open_scene;
 };
 
 // Draws the panel. Applies edits to the session (values that keep the topology at once, a

@@ -81,6 +81,19 @@ void SimSession::reset() {
   choose_threads();  // + / - may have crossed kParallelVertices
 }
 
+void SimSession::load(Scene scene) {
+  std::unique_ptr<Solver> next = build(scene);  // throws: the running scene stays
+  if (recording()) stop_recording();
+  solver_ = std::move(next);
+  base_ = applied_ = draft_ = std::move(scene);
+  error_.clear();
+  structure_error_.clear();
+  divergence_.reset();
+  parallel_chosen_ = false;
+  ++generation_;
+  choose_threads();
+}
+
 void SimSession::scale_resolution(double factor) {
   if (vis::scale_resolution(draft_, factor)) reset();
 }

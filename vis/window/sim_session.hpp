@@ -37,6 +37,9 @@ class SimSession {
   // Rebuilds from the draft at t = 0 (R, the Reset button): applies pending structural edits and
   // clears a divergence. On a bad draft sets an error and keeps the running solver.
   void reset();
+  // The panel's scene picker: runs `scene` from t = 0 instead (its own view, colliders and
+  // look; recording stops). Throws SceneError when it cannot be built (the running one stays).
+  void load(Scene scene);
   // + / -: scales the draft's resolution by factor and resets.
   void scale_resolution(double factor);
   void toggle_wind();

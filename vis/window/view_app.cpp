@@ -1,5 +1,7 @@
 #include "vis/window/view_app.hpp"
 
+#include "sim/scene/scene_parser.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -63,6 +65,14 @@ ViewHooks ViewHooks::from_environment() {
   }
   if (const char* n = std::getenv("CLOTHLAB_VIEW_CLICK")) hooks.click_frame = std::atol(n);
   if (const char* path = std::getenv("CLOTHLAB_VIEW_RECORD")) hooks.record = path;
+  if (const char* open = std::getenv("CLOTHLAB_VIEW_OPEN")) {
+    const std::string text(open);
+    const auto colon = text.find(':');
+    if (colon != std::string::npos) {
+      hooks.open_frame = std::atol(text.substr(0, colon).c_str());
+      hooks.open_scene = text.substr(colon + 1);
+    }
+  }
   if (const char* drag = std::getenv("CLOTHLAB_VIEW_DRAG")) {
     const std::vector<std::string> v = split_commas(drag);
     if (v.size() == 6) {
@@ -169,6 +179,8 @@ void ViewApp::frame() {
   if (frame_index_ == hooks_.click_frame && hooks_.cursor)
     click((*hooks_.cursor)[0], (*hooks_.cursor)[1]);
   drag_hook();
+  if (frame_index_ == hooks_.open_frame && !hooks_.open_scene.empty())
+    panel_.open_scene = hooks_.open_scene;
   for (Action a : pending_actions_) dispatch(a);
   pending_actions_.clear();
 
@@ -180,6 +192,10 @@ void ViewApp::frame() {
   if (rendered_generation_ == session_.generation()) simulate(wall);
 
   if (const auto clicked = draw_control_panel(session_, view_, panel_, stats_)) dispatch(*clicked);
+  if (panel_.open_scene) {
+    open_scene(*panel_.open_scene);
+    panel_.open_scene.reset();
+  }
   if (view_.mode != DisplayMode::springs) last_shaded_ = view_.mode;
   draw_help_overlay(panel_.show_help);
   draw_status_overlay(session_, stats_);
@@ -330,6 +346,25 @@ void ViewApp::drag_hook() {
     const std::string line = grab_.release(session_.solver());
     std::printf("clothlab view: grab: %s\n", line.empty() ? "nothing grabbed" : line.c_str());
   }
+}
+
+// The scene picker (or CLOTHLAB_VIEW_OPEN): the chosen file replaces the running scene, with
+// its own view; a file that cannot be read or built leaves the running one and says why.
+void ViewApp::open_scene(const std::string& path) {
+  try {
+    session_.load(parse_scene_file(path));
+  } catch (const SceneError& e) {
+    panel_.message = e.what();
+    std::printf("clothlab view: not opened: %s\n", e.what());
+    return;
+  }
+  view_ = scene_view(session_.scene(), session_.solver());
+  scene_name_ = std::filesystem::path(path).filename().string();
+  panel_.push_strength = 0.5 * total_mass(session_.scene());
+  panel_.probe.reset();
+  std::printf("clothlab view: opened %s (%zu vertices, %zu colliders)\n", scene_name_.c_str(),
+              session_.solver().vertex_count(), session_.scene().colliders.size());
+  update_title();
 }
 
 void ViewApp::draw(int width, int height) {

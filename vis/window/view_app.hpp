@@ -39,6 +39,8 @@ class Renderer;
 //   CLOTHLAB_VIEW_RECORD=file.csv      press Record on frame 1 (or the frame after the click),
 //                                      writing to file.csv (the window closing while recording
 //                                      must leave it complete);
+//   CLOTHLAB_VIEW_OPEN="F:PATH"          opens PATH through the scene picker on frame F (prints
+//                                      "clothlab view: opened NAME ...");
 //   CLOTHLAB_VIEW_DRAG="X0,Y0,X1,Y1,F0,F1"  a Ctrl + left drag: press at (X0, Y0) on frame F0,
 //                                      the cursor moving to (X1, Y1) by the frame halfway to
 //                                      F1 and held there, release on frame F1 (prints a line
@@ -51,6 +53,8 @@ struct ViewHooks {
   long click_frame = 0;
   std::string record;
   std::optional<std::array<double, 6>> drag;
+  long open_frame = 0;  // CLOTHLAB_VIEW_OPEN="FRAME:PATH": the scene picker, on that frame
+  std::string open_scene;
 
   static ViewHooks from_environment();
 };
@@ -83,6 +87,7 @@ class ViewApp {
   void push();
   void release_pins();
   void drag_hook();  // CLOTHLAB_VIEW_DRAG
+  void open_scene(const std::string& path);
 
   SimSession session_;
   ViewHooks hooks_;
