@@ -62,18 +62,34 @@ FieldPass::FieldPass(int width, int height)
 
 void FieldPass::draw(const Renderer& renderer, const std::vector<float>& force,
                      const std::vector<float>& velocity, const glm::mat4& view_proj) {
-  const std::size_t n = renderer.vertex_count();
+  const std::size_t n = renderer.vertex_count(), rn = renderer.render_vertex_count();
   if (force.size() != 3 * n || velocity.size() != 3 * n)
     throw std::invalid_argument("FieldPass::draw: 3 floats per vertex expected");
-  const auto half = static_cast<GLsizeiptr>(3 * n * sizeof(float));
-  if (!field_vbo_ || field_vertices_ != n) {  // immutable storage: a new buffer per size
+  const auto half = static_cast<GLsizeiptr>(3 * rn * sizeof(float));
+  if (!field_vbo_ || field_vertices_ != rn) {  // immutable storage: a new buffer per size
     field_vbo_ = make_buffer();
     glNamedBufferStorage(field_vbo_.get(), std::max<GLsizeiptr>(1, 2 * half), nullptr,
                          GL_DYNAMIC_STORAGE_BIT);
-    field_vertices_ = n;
+    field_vertices_ = rn;
   }
-  glNamedBufferSubData(field_vbo_.get(), 0, half, force.data());
-  glNamedBufferSubData(field_vbo_.get(), half, half, velocity.data());
+  const auto solver_half = static_cast<GLsizeiptr>(3 * n * sizeof(float));
+  glNamedBufferSubData(field_vbo_.get(), 0, solver_half, force.data());
+  glNamedBufferSubData(field_vbo_.get(), half, solver_half, velocity.data());
+  // A tube's seam copies (render vertices after the solver's) carry their solver vertex's values.
+  const std::vector<int>& copies = renderer.seam_copies();
+  if (!copies.empty()) {
+    copy_scratch_.resize(6 * copies.size());  // allocates only when the cloth grows
+    for (std::size_t k = 0; k < copies.size(); ++k)
+      for (int d = 0; d < 3; ++d) {
+        const std::size_t from = 3 * static_cast<std::size_t>(copies[k]) + d;
+        copy_scratch_[3 * k + d] = force[from];
+        copy_scratch_[3 * (copies.size() + k) + d] = velocity[from];
+      }
+    const auto copy_bytes = static_cast<GLsizeiptr>(3 * copies.size() * sizeof(float));
+    glNamedBufferSubData(field_vbo_.get(), solver_half, copy_bytes, copy_scratch_.data());
+    glNamedBufferSubData(field_vbo_.get(), half + solver_half, copy_bytes,
+                         copy_scratch_.data() + 3 * copies.size());
+  }
   // The renderer's buffers are bound anew each time: set_cloth() may have replaced them.
   glVertexArrayVertexBuffer(vao_.get(), 0, renderer.position_buffer(), 0, 3 * sizeof(float));
   glVertexArrayVertexBuffer(vao_.get(), 1, field_vbo_.get(), 0, 3 * sizeof(float));
@@ -140,7 +156,9 @@ std::optional<ProbeSample> probe_fields(Solver& solver, const Renderer& renderer
   // object read one frame late would avoid the stall; one pixel a frame is cheap enough).
   std::optional<ProbeSample> s = pass.read(px, py);
   if (!s) return s;
-  // The triangle's vertex nearest to the surface point under the pixel, measured in double.
+  // The triangle's vertex nearest to the surface point under the pixel, measured in double. The
+  // id indexes the solver's triangles, whose vertices are solver vertices: a tube's seam copy
+  // (Renderer::seam_copies) is never named, its solver vertex is.
   double best = INFINITY;
   for (int v : solver.triangles().at(static_cast<std::size_t>(s->triangle))) {
     const Vec3d p = solver.position(v);

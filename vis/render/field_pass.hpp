@@ -39,7 +39,8 @@ class FieldPass {
   FieldPass(int width, int height);
 
   // Draws `renderer`'s cloth (positions from its last update_cloth()) with per-vertex force and
-  // velocity (3 floats per vertex each, renderer.vertex_count() vertices).
+  // velocity (3 floats per vertex each, renderer.vertex_count() solver vertices; a tube's seam
+  // copies get their solver vertex's).
   void draw(const Renderer& renderer, const std::vector<float>& force,
             const std::vector<float>& velocity, const glm::mat4& view_proj);
   // The sample under pixel (px, py) of the last draw, row 0 at the top; nothing where no cloth
@@ -58,8 +59,9 @@ class FieldPass {
   Renderbuffer force_, velocity_, world_, triangle_, depth_;
   Program program_;
   VertexArray vao_;
-  Buffer field_vbo_;  // force for every vertex, then velocity
+  Buffer field_vbo_;  // force for every render vertex, then velocity
   std::size_t field_vertices_ = 0;
+  std::vector<float> copy_scratch_;  // the seam copies' force, then velocity
 };
 
 // The one probe both the headless renderer and the window use: computes the solver's force field

@@ -107,41 +107,109 @@ void Renderer::set_scene(const RenderSpec& spec, const Solver& solver,
 void Renderer::set_cloth(Solver& solver) {
   vertices_ = solver.vertex_count();
   const std::size_t n = vertices_;
-  // Static attributes: UV (i / (nu - 1), j / (nv - 1)) per cloth, then rest positions, then the
-  // place in the UV atlas of mode 6's diffusion (cloth k of K in rows k / K .. (k + 1) / K).
-  std::vector<float> fixed(7 * n);
-  for (const ClothRange& c : solver.cloths()) {
+  const auto cloths = solver.cloths();
+  // A tube's seam copies: column 0 once more per row, appended after the solver's vertices so
+  // these keep their indices (springs, scalars and probes need no mapping).
+  seam_copies_.clear();
+  std::vector<std::size_t> first_copy(cloths.size(), 0);  // render index of cloth k's row 0 copy
+  for (std::size_t k = 0; k < cloths.size(); ++k) {
+    const ClothRange& c = cloths[k];
+    first_copy[k] = n + seam_copies_.size();
+    if (c.wrap_u)
+      for (int j = 0; j < c.nv; ++j) seam_copies_.push_back(c.offset + j * c.nu);
+  }
+  const std::size_t rn = render_vertex_count();
+  // Static attributes per render vertex: UV per cloth (i / (nu - 1), j / (nv - 1) on a grid;
+  // i / nu round a tube, its seam copies at u = 1), then rest positions, then the place in the UV
+  // atlas of mode 6's diffusion (cloth k of K in rows k / K .. (k + 1) / K).
+  std::vector<float> fixed(7 * rn);
+  for (std::size_t k = 0; k < cloths.size(); ++k) {
+    const ClothRange& c = cloths[k];
+    const float u_steps = c.wrap_u ? float(c.nu) : float(c.nu - 1);
     for (int j = 0; j < c.nv; ++j) {
+      const float v_coord = c.nv > 1 ? float(j) / float(c.nv - 1) : 0.0f;
       for (int i = 0; i < c.nu; ++i) {
         const std::size_t v = static_cast<std::size_t>(c.offset + i + j * c.nu);
-        fixed[2 * v] = c.nu > 1 ? float(i) / float(c.nu - 1) : 0.0f;
-        fixed[2 * v + 1] = c.nv > 1 ? float(j) / float(c.nv - 1) : 0.0f;
+        fixed[2 * v] = c.nu > 1 ? float(i) / u_steps : 0.0f;
+        fixed[2 * v + 1] = v_coord;
+      }
+      if (c.wrap_u) {
+        const std::size_t copy = first_copy[k] + static_cast<std::size_t>(j);
+        fixed[2 * copy] = 1.0f;
+        fixed[2 * copy + 1] = v_coord;
       }
     }
   }
-  solver.copy_rest_positions(fixed.data() + 2 * n);
-  const auto cloths = solver.cloths();
+  solver.copy_rest_positions(fixed.data() + 2 * rn);
+  for (std::size_t k = 0; k < seam_copies_.size(); ++k)
+    for (int d = 0; d < 3; ++d)
+      fixed[2 * rn + 3 * (n + k) + d] =
+          fixed[2 * rn + 3 * static_cast<std::size_t>(seam_copies_[k]) + d];
   const float rows = static_cast<float>(std::max<std::size_t>(1, cloths.size()));
   float longest_u = 1e-3f, longest_v = 1e-3f;
   for (std::size_t k = 0; k < cloths.size(); ++k) {
     const ClothRange& c = cloths[k];
     auto rest = [&](int i, int j) {
-      const std::size_t v = 2 * n + 3 * static_cast<std::size_t>(c.offset + i + j * c.nu);
+      const std::size_t v = 2 * rn + 3 * static_cast<std::size_t>(c.offset + i + j * c.nu);
       return glm::vec3(fixed[v], fixed[v + 1], fixed[v + 2]);
     };
-    longest_u = std::max(longest_u, glm::length(rest(c.nu - 1, 0) - rest(0, 0)));
-    longest_v = std::max(longest_v, glm::length(rest(0, c.nv - 1) - rest(0, 0)));
-    for (int v = c.offset; v < c.offset + c.nu * c.nv; ++v) {
-      const std::size_t at = static_cast<std::size_t>(v);
-      fixed[5 * n + 2 * at] = fixed[2 * at];
-      fixed[5 * n + 2 * at + 1] = (fixed[2 * at + 1] + float(k)) / rows;
+    if (c.wrap_u) {
+      // Round the longer of the end rings (a frustum's differ), the seam's chord included.
+      for (int j : {0, c.nv - 1}) {
+        float ring = 0.0f;
+        for (int i = 0; i < c.nu; ++i) ring += glm::length(rest((i + 1) % c.nu, j) - rest(i, j));
+        longest_u = std::max(longest_u, ring);
+      }
+    } else {
+      longest_u = std::max(longest_u, glm::length(rest(c.nu - 1, 0) - rest(0, 0)));
     }
+    longest_v = std::max(longest_v, glm::length(rest(0, c.nv - 1) - rest(0, 0)));
+    auto to_atlas = [&](std::size_t at) {
+      fixed[5 * rn + 2 * at] = fixed[2 * at];
+      fixed[5 * rn + 2 * at + 1] = (fixed[2 * at + 1] + float(k)) / rows;
+    };
+    for (int v = c.offset; v < c.offset + c.nu * c.nv; ++v) to_atlas(static_cast<std::size_t>(v));
+    if (c.wrap_u)
+      for (int j = 0; j < c.nv; ++j) to_atlas(first_copy[k] + static_cast<std::size_t>(j));
   }
   atlas_per_metre_ = glm::vec2(1.0f / longest_u, 1.0f / (longest_v * rows));
 
+  // The solver's triangles; on a tube those of the seam's quads (with a vertex in column nu - 1
+  // and one in column 0) take column 0's seam copies, at u = 1.
   std::vector<std::uint32_t> triangles;
-  for (const auto& t : solver.triangles())
-    for (int v : t) triangles.push_back(static_cast<std::uint32_t>(v));
+  const auto& solver_triangles = solver.triangles();
+  triangles.reserve(3 * solver_triangles.size());
+  std::vector<std::uint32_t> seam_copy;  // per solver vertex: its copy, or itself
+  if (!seam_copies_.empty()) {
+    seam_copy.resize(n);
+    for (std::size_t v = 0; v < n; ++v) seam_copy[v] = static_cast<std::uint32_t>(v);
+    for (std::size_t k = 0; k < seam_copies_.size(); ++k)
+      seam_copy[static_cast<std::size_t>(seam_copies_[k])] = static_cast<std::uint32_t>(n + k);
+  }
+  auto column = [&](int v, const ClothRange*& cloth) {
+    for (const ClothRange& c : cloths)
+      if (v >= c.offset && v < c.offset + c.nu * c.nv) {
+        cloth = &c;
+        return (v - c.offset) % c.nu;
+      }
+    cloth = nullptr;
+    return -1;
+  };
+  for (const auto& t : solver_triangles) {
+    bool seam = false;
+    if (!seam_copies_.empty()) {
+      const ClothRange* c = nullptr;
+      bool first = false, last = false;
+      for (int v : t) {
+        const int i = column(v, c);
+        if (c && c->wrap_u) first |= i == 0, last |= i == c->nu - 1;
+      }
+      seam = first && last;
+    }
+    for (int v : t)
+      triangles.push_back(seam ? seam_copy[static_cast<std::size_t>(v)]
+                               : static_cast<std::uint32_t>(v));
+  }
   std::vector<std::uint32_t> lines;
   for (const auto& s : solver.spring_pairs())
     for (int v : s) lines.push_back(static_cast<std::uint32_t>(v));
@@ -153,18 +221,18 @@ void Renderer::set_cloth(Solver& solver) {
   scalar_vbo_ = make_buffer();
   tangent_vbo_ = make_buffer();
   grids_ = solver.cloths();
-  tangents_.assign(4 * n, 0.0f);
+  tangents_.assign(4 * rn, 0.0f);
   tangents_stale_ = true;
   triangle_ebo_ = make_buffer();
   line_ebo_ = make_buffer();
   auto bytes = [](const auto& v) {
     return static_cast<GLsizeiptr>(std::max<std::size_t>(1, v.size() * sizeof(v[0])));
   };
-  glNamedBufferStorage(dynamic_vbo_.get(), static_cast<GLsizeiptr>(6 * n * sizeof(float)), nullptr,
+  glNamedBufferStorage(dynamic_vbo_.get(), static_cast<GLsizeiptr>(6 * rn * sizeof(float)), nullptr,
                        GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(static_vbo_.get(), bytes(fixed), fixed.data(), 0);
   glNamedBufferStorage(scalar_vbo_.get(),
-                       static_cast<GLsizeiptr>(std::max<std::size_t>(1, n) * sizeof(float)),
+                       static_cast<GLsizeiptr>(std::max<std::size_t>(1, rn) * sizeof(float)),
                        nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(triangle_ebo_.get(), bytes(triangles), triangles.data(), 0);
   glNamedBufferStorage(line_ebo_.get(), bytes(lines), lines.data(), 0);
@@ -173,28 +241,29 @@ void Renderer::set_cloth(Solver& solver) {
   cloth_vao_ = make_vertex_array();
   line_vao_ = make_vertex_array();
   for (GLuint vao : {cloth_vao_.get(), line_vao_.get()}) {
-    const auto n_bytes = static_cast<GLintptr>(3 * n * sizeof(float));
+    const auto n_bytes = static_cast<GLintptr>(3 * rn * sizeof(float));
     glVertexArrayVertexBuffer(vao, 0, dynamic_vbo_.get(), 0, 3 * sizeof(float));        // position
     glVertexArrayVertexBuffer(vao, 1, dynamic_vbo_.get(), n_bytes, 3 * sizeof(float));  // normal
     glVertexArrayVertexBuffer(vao, 2, static_vbo_.get(), 0, 2 * sizeof(float));         // uv
     glVertexArrayVertexBuffer(vao, 3, static_vbo_.get(),
-                              static_cast<GLintptr>(2 * n * sizeof(float)),
+                              static_cast<GLintptr>(2 * rn * sizeof(float)),
                               3 * sizeof(float));  // rest position
     for (GLuint a = 0; a < 4; ++a) attribute(vao, a, a, a == 2 ? 2 : 3);
   }
   glVertexArrayVertexBuffer(cloth_vao_.get(), 4, scalar_vbo_.get(), 0, sizeof(float));
   attribute(cloth_vao_.get(), 4, 4, 1);
   glNamedBufferStorage(tangent_vbo_.get(),
-                       static_cast<GLsizeiptr>(std::max<std::size_t>(1, 4 * n) * sizeof(float)),
+                       static_cast<GLsizeiptr>(std::max<std::size_t>(1, 4 * rn) * sizeof(float)),
                        nullptr, GL_DYNAMIC_STORAGE_BIT);
   glVertexArrayVertexBuffer(cloth_vao_.get(), 5, tangent_vbo_.get(), 0, 4 * sizeof(float));
   attribute(cloth_vao_.get(), 5, 5, 4);
   glVertexArrayVertexBuffer(cloth_vao_.get(), 6, static_vbo_.get(),
-                            static_cast<GLintptr>(5 * n * sizeof(float)), 2 * sizeof(float));
+                            static_cast<GLintptr>(5 * rn * sizeof(float)), 2 * sizeof(float));
   attribute(cloth_vao_.get(), 6, 6, 2);
   glVertexArrayElementBuffer(cloth_vao_.get(), triangle_ebo_.get());
   glVertexArrayElementBuffer(line_vao_.get(), line_ebo_.get());
-  staging_.resize(6 * n);
+  staging_.resize(6 * rn);
+  scalar_staging_.resize(rn);
 }
 
 void Renderer::update_cloth(Solver& solver) {
@@ -213,7 +282,17 @@ void Renderer::update_cloth(Solver& solver) {
   cloth_hi_ = hi;
   tangents_stale_ = true;
   if (colliders_) colliders_->update(solver.time());  // where the moving ones are now
-  solver.copy_normals(staging_.data() + 3 * vertices_);
+  const std::size_t rn = render_vertex_count();
+  solver.copy_normals(staging_.data() + 3 * rn);
+  // The seam copies take their solver vertex's position and normal.
+  for (std::size_t k = 0; k < seam_copies_.size(); ++k) {
+    const std::size_t from = 3 * static_cast<std::size_t>(seam_copies_[k]),
+                      to = 3 * (vertices_ + k);
+    for (int d = 0; d < 3; ++d) {
+      staging_[to + d] = staging_[from + d];
+      staging_[3 * rn + to + d] = staging_[3 * rn + from + d];
+    }
+  }
   glNamedBufferSubData(dynamic_vbo_.get(), 0,
                        static_cast<GLsizeiptr>(staging_.size() * sizeof(float)), staging_.data());
 }
@@ -223,11 +302,17 @@ void Renderer::update_cloth(Solver& solver) {
 void Renderer::update_tangents() {
   if (!tangents_stale_ || vertices_ == 0) return;
   const float* positions = staging_.data();
-  const float* normals = staging_.data() + 3 * vertices_;
+  const float* normals = staging_.data() + 3 * render_vertex_count();
   for (const ClothRange& c : grids_) {
     const std::size_t o = static_cast<std::size_t>(c.offset);
-    compute_grid_tangents(c.nu, c.nv, positions + 3 * o, normals + 3 * o, tangents_.data() + 4 * o);
+    compute_grid_tangents(c.nu, c.nv, positions + 3 * o, normals + 3 * o, tangents_.data() + 4 * o,
+                          c.wrap_u);
   }
+  // A seam copy has column 0's frame: the ring's dP/du is continuous there, so is the frame.
+  for (std::size_t k = 0; k < seam_copies_.size(); ++k)
+    for (int d = 0; d < 4; ++d)
+      tangents_[4 * (vertices_ + k) + d] =
+          tangents_[4 * static_cast<std::size_t>(seam_copies_[k]) + d];
   glNamedBufferSubData(tangent_vbo_.get(), 0,
                        static_cast<GLsizeiptr>(tangents_.size() * sizeof(float)), tangents_.data());
   tangents_stale_ = false;
@@ -292,8 +377,13 @@ void Renderer::upload_normal_map(const Image& map) {
 void Renderer::set_scalars(const std::vector<float>& values, ScalarRange range) {
   if (values.size() != vertices_)
     throw std::invalid_argument("Renderer::set_scalars: one value per vertex expected");
-  glNamedBufferSubData(scalar_vbo_.get(), 0, static_cast<GLsizeiptr>(values.size() * sizeof(float)),
-                       values.data());
+  // Through the staging copy (sized by set_cloth: no allocation per frame), seam copies filled.
+  std::copy(values.begin(), values.end(), scalar_staging_.begin());
+  for (std::size_t k = 0; k < seam_copies_.size(); ++k)
+    scalar_staging_[vertices_ + k] = values[static_cast<std::size_t>(seam_copies_[k])];
+  glNamedBufferSubData(scalar_vbo_.get(), 0,
+                       static_cast<GLsizeiptr>(scalar_staging_.size() * sizeof(float)),
+                       scalar_staging_.data());
   scalar_range_ = range;
 }
 

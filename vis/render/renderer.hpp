@@ -61,12 +61,25 @@ class Renderer {
   // The light as the last draw() placed it (tests project through its matrices).
   const LightRig& light() const { return light_; }
 
-  // For passes that draw the same cloth (FieldPass): the buffer whose first 3 floats per vertex
-  // are the positions of the last update_cloth(), and the triangles' index buffer.
+  // Render vertices: the solver's vertices (same indices), then for every tube (wrap_u) one copy
+  // of column 0 per row with u = 1, which the seam's triangles use instead of column 0 so the
+  // texture wraps round the ring rather than running back from 1 to 0 across one quad.
+  // For passes that draw the same cloth (FieldPass): the buffer whose first 3 floats per render
+  // vertex are the positions of the last update_cloth(), and the triangles' index buffer (the
+  // solver's triangles in their order, indexing render vertices).
   GLuint position_buffer() const { return dynamic_vbo_.get(); }
   GLuint triangle_buffer() const { return triangle_ebo_.get(); }
   GLsizei triangle_index_count() const { return triangle_indices_; }
+  // The solver's vertices (what set_scalars and FieldPass::draw take values for).
   std::size_t vertex_count() const { return vertices_; }
+  std::size_t render_vertex_count() const { return vertices_ + seam_copies_.size(); }
+  // The solver vertex render vertex vertex_count() + k copies.
+  const std::vector<int>& seam_copies() const { return seam_copies_; }
+  // The solver vertex behind any render vertex.
+  int physics_vertex(std::size_t render_vertex) const {
+    return render_vertex < vertices_ ? static_cast<int>(render_vertex)
+                                     : seam_copies_[render_vertex - vertices_];
+  }
   // The 256 x 1 sRGB table of a colour map (for the arrows and legends that share it).
   GLuint colormap_texture(ColorMap map) const { return colormaps_[static_cast<int>(map)].get(); }
 
@@ -107,8 +120,10 @@ class Renderer {
   ScalarRange scalar_range_;
   std::array<Texture, kAllColorMaps.size()> colormaps_;
   VertexArray cloth_vao_, line_vao_, empty_vao_;
-  std::vector<float> staging_;
-  std::size_t vertices_ = 0;
+  std::vector<float> staging_;         // positions, then normals, per render vertex
+  std::vector<float> scalar_staging_;  // the colour-by scalar per render vertex
+  std::size_t vertices_ = 0;           // the solver's
+  std::vector<int> seam_copies_;       // render vertex vertices_ + k copies solver vertex [k]
   GLsizei triangle_indices_ = 0, line_indices_ = 0;
 };
 

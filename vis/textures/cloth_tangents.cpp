@@ -37,6 +37,14 @@ V3 difference(const float* positions, std::size_t base, std::size_t stride, int 
   return (double(count - 1) / double(hi - lo)) * d;
 }
 
+// The same along a closed ring of count vertices: central everywhere, across the seam too.
+V3 ring_difference(const float* positions, std::size_t base, int k, int count) {
+  if (count < 3) return {0.0, 0.0, 0.0};
+  const int lo = k > 0 ? k - 1 : count - 1, hi = k + 1 < count ? k + 1 : 0;
+  const V3 d = load(positions, base + std::size_t(hi)) - load(positions, base + std::size_t(lo));
+  return (0.5 * double(count)) * d;
+}
+
 // The part of a orthogonal to unit n, normalised; false when it is (relatively) negligible.
 bool orthogonal_unit(V3 a, V3 n, V3& out) {
   const V3 t = a - dot(n, a) * n;
@@ -58,7 +66,7 @@ V3 any_orthogonal(V3 n) {
 }  // namespace
 
 void compute_grid_tangent_row(int nu, int nv, int j, const float* positions, const float* normals,
-                              float* tangents) {
+                              float* tangents, bool wrap_u) {
   if (nu < 1 || nv < 1 || j < 0 || j >= nv) return;
   const std::size_t row = std::size_t(j) * std::size_t(nu);
   for (int i = 0; i < nu; ++i) {
@@ -71,7 +79,8 @@ void compute_grid_tangent_row(int nu, int nv, int j, const float* positions, con
       continue;
     }
     n = (1.0 / n_len) * n;
-    const V3 dpdu = difference(positions, row, 1, i, nu);
+    const V3 dpdu =
+        wrap_u ? ring_difference(positions, row, i, nu) : difference(positions, row, 1, i, nu);
     const V3 dpdv = difference(positions, std::size_t(i), std::size_t(nu), j, nv);
 
     V3 t;
@@ -85,9 +94,10 @@ void compute_grid_tangent_row(int nu, int nv, int j, const float* positions, con
 }
 
 void compute_grid_tangents(int nu, int nv, const float* positions, const float* normals,
-                           float* tangents) {
+                           float* tangents, bool wrap_u) {
   if (nu < 1 || nv < 1) return;
-  for (int j = 0; j < nv; ++j) compute_grid_tangent_row(nu, nv, j, positions, normals, tangents);
+  for (int j = 0; j < nv; ++j)
+    compute_grid_tangent_row(nu, nv, j, positions, normals, tangents, wrap_u);
 }
 
 }  // namespace clothlab

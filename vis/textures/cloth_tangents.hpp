@@ -18,13 +18,16 @@ namespace clothlab {
 // along N): T = normalize(dP/dv x N), the direction a right-handed frame with B along dP/dv
 // would have; if that is degenerate too, a fixed function of N alone (Duff et al., "Building an
 // orthonormal basis, revisited", JCGT 2017). A zero normal gives T = (1, 0, 0), w = +1.
+// wrap_u (a tube, sim/cloth/tube_cloth.hpp): column nu - 1 neighbours column 0 across the seam,
+// so dP/du is a central difference on every column, the seam's included (UV i / nu round the
+// ring): the frame is as continuous across the seam as anywhere else.
 // Allocation-free; each output depends only on the inputs, so rows may run in parallel.
 // Does nothing when nu or nv < 1.
 void compute_grid_tangents(int nu, int nv, const float* positions, const float* normals,
-                           float* tangents);
+                           float* tangents, bool wrap_u = false);
 
 // One row j of compute_grid_tangents (for callers that split rows between threads).
 void compute_grid_tangent_row(int nu, int nv, int j, const float* positions, const float* normals,
-                              float* tangents);
+                              float* tangents, bool wrap_u = false);
 
 }  // namespace clothlab
