@@ -90,7 +90,7 @@ AdvanceResult SolverT<T>::step(long count) {
     // Self-collision pairs once per step, reused by every substep (contact.md section 2).
     if (self_) self_->find_pairs(model_, state_, dt_, threads_);
     for (int sub = 0; sub < substeps_; ++sub) {
-      if (contacts_) contacts_->begin(state_, threads_);
+      if (contacts_) contacts_->begin(state_, t0 + sub * h, h, threads_);
       if (moving_pins_) moving_pins_->drive(model_, state_, t0 + sub * h, h);
       integrator_->step(sys, state_, t0 + sub * h, static_cast<T>(h));
       record(integrator_->last_stats());

@@ -157,7 +157,7 @@ TEST(ContactResponse, NeverRaisesKineticEnergyAgainstAStaticCollider) {
     s.pos.resize(m.n);
     s.vel.resize(m.n);
     for (std::size_t i = 0; i < m.n; ++i) s.pos.set(i, 0.5 * u(rng), 0.5 * u(rng), 0.5 * u(rng));
-    response.begin(s, 1);
+    response.begin(s, 0.0, 1e-3, 1);
     const double h = 1e-3;
     double before = 0.0;
     for (std::size_t i = 0; i < m.n; ++i) {

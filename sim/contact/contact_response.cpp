@@ -77,9 +77,63 @@ ContactResponse<T>::ContactResponse(const std::vector<ColliderSpec>& colliders, 
 }
 
 template <class T>
-void ContactResponse<T>::begin(const State<T>& s, int threads) {
+void ContactResponse<T>::begin(const State<T>& s, double t, double h, int threads) {
   if (colliders_.empty()) return;
-  for_each_block(s.pos.size(), threads, [&](std::size_t b, std::size_t e) {
+  // The cheap test first: the cloth's box now, grown by twice the fastest vertex's move over the
+  // next kWindow substeps and a centimetre (no spring accelerates a vertex that far meanwhile),
+  // against every collider over those substeps. When nothing can be reached, the answer holds
+  // for the whole window: no start is kept, respond() does nothing, and a collider far from the
+  // cloth costs one pass over the state every kWindow substeps.
+  if (!active_ && quiet_substeps_ > 0) {
+    --quiet_substeps_;
+    return;
+  }
+  active_ = false;
+  const double window = kWindow * h;
+  const std::size_t n = s.pos.size();
+  T lo[3], hi[3], speed2 = T(0);
+  for (int a = 0; a < 3; ++a) {
+    const T* x = s.pos.axis(a).data();
+    T l = x[0], u = x[0];
+#pragma omp simd reduction(min : l) reduction(max : u)
+    for (std::size_t i = 0; i < n; ++i) {
+      l = std::min(l, x[i]);
+      u = std::max(u, x[i]);
+    }
+    lo[a] = l;
+    hi[a] = u;
+  }
+  {
+    const T *vx = s.vel.x.data(), *vy = s.vel.y.data(), *vz = s.vel.z.data();
+#pragma omp simd reduction(max : speed2)
+    for (std::size_t i = 0; i < n; ++i)
+      speed2 = std::max(speed2, vx[i] * vx[i] + vy[i] * vy[i] + vz[i] * vz[i]);
+  }
+  const double margin = 2.0 * std::sqrt(double(speed2)) * window + 0.01;
+  const Bounds cloth{V3(lo[0], lo[1], lo[2]) - V3::Constant(margin),
+                     V3(hi[0], hi[1], hi[2]) + V3::Constant(margin)};
+  for (std::size_t c = 0; c < colliders_.size() && !active_; ++c) {
+    const Collider& collider = colliders_[c];
+    const double th = collider.thickness();
+    // Its poses at the window's start, middle and end (a turn or a keyframe in between); for a
+    // bounded shape the box round all three, which holds its path when it moves in a line.
+    Bounds swept{V3::Constant(INFINITY), V3::Constant(-INFINITY)};
+    for (double f : {0.0, 0.5, 1.0}) {
+      const ColliderPose pose = collider.pose(t + f * window);
+      if (collider.spec().kind == ColliderKind::plane) {
+        active_ = active_ || collider.reaches(cloth, pose, th);
+      } else {
+        const Bounds b = collider.bounds(pose, th);
+        swept = {swept.lo.cwiseMin(b.lo), swept.hi.cwiseMax(b.hi)};
+      }
+    }
+    if (collider.spec().kind != ColliderKind::plane) active_ = active_ || cloth.overlaps(swept);
+  }
+  if (!active_) {
+    quiet_substeps_ = kWindow - 1;
+    return;
+  }
+  for_each_block(n, threads, [&](std::size_t b, std::size_t e) {
     for (int a = 0; a < 3; ++a)
       std::copy(s.pos.axis(a).begin() + long(b), s.pos.axis(a).begin() + long(e),
                 start_.axis(a).begin() + long(b));
@@ -187,7 +241,7 @@ bool ContactResponse<T>::edge(std::size_t a, std::size_t b, const Model<T>& m, S
 template <class T>
 bool ContactResponse<T>::respond(const Model<T>& m, State<T>& s, double t, double h, int threads) {
   stats_ = {};
-  if (colliders_.empty()) return false;
+  if (!active_) return false;  // begin() found nothing within reach
   for (std::size_t c = 0; c < colliders_.size(); ++c) {
     Sweep& sweep = sweeps_[c];
     sweep.start = colliders_[c].pose(t);

@@ -41,8 +41,9 @@ class ContactResponse {
   bool empty() const { return colliders_.empty(); }
   const std::vector<Collider>& colliders() const { return colliders_; }
 
-  // Before a substep: remembers where every vertex starts.
-  void begin(const State<T>& s, int threads);
+  // Before the substep from t to t + h: decides whether any collider is within reach of the
+  // cloth this substep and, if so, remembers where every vertex starts.
+  void begin(const State<T>& s, double t, double h, int threads);
   // After the substep from t to t + h: responds to every contact it made. Returns true when it
   // changed some vertex.
   bool respond(const Model<T>& m, State<T>& s, double t, double h, int threads);
@@ -75,6 +76,10 @@ class ContactResponse {
   std::vector<Sweep> sweeps_;
   Vec3Array<T> start_;
   std::vector<BlockResult> blocks_;
+  // begin()'s cheap test holds for this many substeps when it finds nothing within reach.
+  static constexpr int kWindow = 16;
+  bool active_ = false;     // begin() found a collider within reach this substep
+  int quiet_substeps_ = 0;  // substeps the last "nothing within reach" still covers
   bool edges_ = false;  // edge midpoints are contact points too (a collider thinner than an edge)
   std::vector<EdgeRun> rows_, columns_;
   ContactStats stats_;
