@@ -262,44 +262,36 @@ if(XVFB_RUN)
   set_tests_properties(cli.view.record_pinned PROPERTIES TIMEOUT 120 FIXTURES_SETUP view_record
     ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
   set_tests_properties(cli.view.record_pinned_csv PROPERTIES FIXTURES_REQUIRED view_record)
+  # clothlab_view_test(NAME HOOKS REGEX): `clothlab view` on the default scene in a 1280x800
+  # virtual screen with the test hooks HOOKS (VAR=value entries joined by '|'), which must exit
+  # 0 and print a line matching REGEX.
+  function(clothlab_view_test name hooks regex)
+    add_test(NAME cli.view.${name}
+      COMMAND ${CMAKE_COMMAND}
+        "-DCOMMAND=${CMAKE_COMMAND}|-E|env|--unset=WAYLAND_DISPLAY|${hooks}|${XVFB_RUN}|-a|-s|-screen 0 1280x800x24|$<TARGET_FILE:clothlab>|view|${CLOTHLAB_DEFAULT_SCENE}"
+        "-DEXPECT_RC=0"
+        "-DEXPECT_REGEX=${regex}"
+        -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
+    set_tests_properties(cli.view.${name} PROPERTIES TIMEOUT 120
+      ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
+  endfunction()
   # D drops the cloth: the solver lets go of its pins (the window says so only when it has).
-  add_test(NAME cli.view.drop_key
-    COMMAND ${CMAKE_COMMAND}
-      "-DCOMMAND=${CMAKE_COMMAND}|-E|env|--unset=WAYLAND_DISPLAY|CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=6|CLOTHLAB_VIEW_KEYS=,,D|${XVFB_RUN}|-a|-s|-screen 0 1280x800x24|$<TARGET_FILE:clothlab>|view|${CLOTHLAB_DEFAULT_SCENE}"
-      "-DEXPECT_RC=0"
-      "-DEXPECT_REGEX=clothlab view: pins released"
-      -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
-  set_tests_properties(cli.view.drop_key PROPERTIES TIMEOUT 120
-    ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
+  clothlab_view_test(drop_key "CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=6|CLOTHLAB_VIEW_KEYS=,,D"
+    "clothlab view: pins released")
   # Ctrl + left drag pulls the cloth: a scripted drag from the window's centre (the hanging
   # cloth) 200 points up grabs the vertex there, and at the release that vertex is nearer the
   # drag's last target than it was when grabbed.
-  add_test(NAME cli.view.grab_drag
-    COMMAND ${CMAKE_COMMAND}
-      "-DCOMMAND=${CMAKE_COMMAND}|-E|env|--unset=WAYLAND_DISPLAY|CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=17|CLOTHLAB_VIEW_DRAG=640,400,640,200,3,16|${XVFB_RUN}|-a|-s|-screen 0 1280x800x24|$<TARGET_FILE:clothlab>|view|${CLOTHLAB_DEFAULT_SCENE}"
-      "-DEXPECT_RC=0"
-      "-DEXPECT_REGEX=clothlab view: grab: released vertex [0-9]+ [^\n]*\\(closer\\)"
-      -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
-  set_tests_properties(cli.view.grab_drag PROPERTIES TIMEOUT 120
-    ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
+  clothlab_view_test(grab_drag
+    "CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=17|CLOTHLAB_VIEW_DRAG=640,400,640,200,3,16"
+    "clothlab view: grab: released vertex [0-9]+ [^\n]*\\(closer\\)")
   # The scene picker opens another scene in the running window (its colliders with it); a
   # file that cannot be built leaves the running scene and says why.
-  add_test(NAME cli.view.scene_picker
-    COMMAND ${CMAKE_COMMAND}
-      "-DCOMMAND=${CMAKE_COMMAND}|-E|env|--unset=WAYLAND_DISPLAY|CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=5|CLOTHLAB_VIEW_OPEN=2:${PROJECT_SOURCE_DIR}/scenes/drop_sphere.toml|${XVFB_RUN}|-a|-s|-screen 0 1280x800x24|$<TARGET_FILE:clothlab>|view|${CLOTHLAB_DEFAULT_SCENE}"
-      "-DEXPECT_RC=0"
-      "-DEXPECT_REGEX=clothlab view: opened drop_sphere\\.toml \\(1024 vertices, 2 colliders\\)"
-      -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
-  set_tests_properties(cli.view.scene_picker PROPERTIES TIMEOUT 120
-    ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
-  add_test(NAME cli.view.scene_picker_bad
-    COMMAND ${CMAKE_COMMAND}
-      "-DCOMMAND=${CMAKE_COMMAND}|-E|env|--unset=WAYLAND_DISPLAY|CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=5|CLOTHLAB_VIEW_OPEN=2:${CLOTHLAB_BAD_SCENES}/collider_radius.toml|${XVFB_RUN}|-a|-s|-screen 0 1280x800x24|$<TARGET_FILE:clothlab>|view|${CLOTHLAB_DEFAULT_SCENE}"
-      "-DEXPECT_RC=0"
-      "-DEXPECT_REGEX=clothlab view: not opened: [^\n]*collider_radius\\.toml:8:[0-9]+: colliders.0.\\.radius: must be > 0"
-      -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
-  set_tests_properties(cli.view.scene_picker_bad PROPERTIES TIMEOUT 120
-    ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
+  clothlab_view_test(scene_picker
+    "CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=5|CLOTHLAB_VIEW_OPEN=2:${PROJECT_SOURCE_DIR}/scenes/drop_sphere.toml"
+    "clothlab view: opened drop_sphere\\.toml \\(1024 vertices, 2 colliders\\)")
+  clothlab_view_test(scene_picker_bad
+    "CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=5|CLOTHLAB_VIEW_OPEN=2:${CLOTHLAB_BAD_SCENES}/collider_radius.toml"
+    "clothlab view: not opened: [^\n]*collider_radius\\.toml:8:[0-9]+: colliders.0.\\.radius: must be > 0")
 else()
   message(WARNING "xvfb-run not found: the window test is not run (scripts/deps installs it)")
 endif()
