@@ -58,8 +58,9 @@ SolverT<T>::SolverT(const Scene& scene, SpringKernel kernel)
   if (!scene.colliders.empty())
     contacts_ = std::make_unique<ContactResponse<T>>(scene.colliders, model_);
   if (spec_.self_collision) self_ = std::make_unique<SelfCollision<T>>(model_, spec_);
-  moving_pins_ = std::make_unique<KinematicPins<T>>(scene, model_);
-  if (moving_pins_->empty()) moving_pins_.reset();
+  const bool pins_move = std::any_of(scene.cloths.begin(), scene.cloths.end(),
+                                     [](const ClothSpec& c) { return c.pins_follow.has_value(); });
+  if (pins_move) moving_pins_ = std::make_unique<KinematicPins<T>>(scene, model_);
   for (const ClothSpec& c : scene.cloths) release_at_.push_back(c.release_at);
   built_release_at_ = release_at_;
   built_pins_ = model_.pinned;
