@@ -40,6 +40,12 @@ Eigen::Quaterniond rotation_from_degrees(const Vec3d& degrees) {
          Eigen::AngleAxisd(degrees[0] * k, Eigen::Vector3d::UnitX());
 }
 
+Collider pose_only_collider(const ColliderSpec& spec) {
+  ColliderSpec posed = spec;
+  posed.mesh.reset();
+  return Collider(posed);
+}
+
 Collider::Collider(const ColliderSpec& spec) : spec_(spec) {
   switch (spec.kind) {
     case ColliderKind::plane:

@@ -73,6 +73,10 @@ class Collider {
   std::shared_ptr<const SdfGrid> sdf_;  // mesh: its signed distance, shared by copies
 };
 
+// A collider for its poses alone (drawing, framing, moving pins): a mesh collider's distance grid
+// is not built again; the collision response holds the one that is.
+Collider pose_only_collider(const ColliderSpec& spec);
+
 // Rotation of Euler angles in degrees about x, then y, then z (R = Rz Ry Rx), as MeshSpec uses.
 Eigen::Quaterniond rotation_from_degrees(const Vec3d& degrees);
 

@@ -4,12 +4,7 @@ namespace clothlab {
 
 template <class T>
 KinematicPins<T>::KinematicPins(const Scene& scene, const Model<T>& m) {
-  // Only the poses are needed: a mesh collider's distance grid stays with the collision
-  // response (building it again here would double the scene's start-up for nothing).
-  for (ColliderSpec spec : scene.colliders) {
-    spec.mesh.reset();
-    colliders_.emplace_back(spec);
-  }
+  for (const ColliderSpec& spec : scene.colliders) colliders_.push_back(pose_only_collider(spec));
   for (std::size_t c = 0; c < scene.cloths.size() && c < m.cloths.size(); ++c) {
     const ClothSpec& cloth = scene.cloths[c];
     if (!cloth.pins_follow) continue;

@@ -121,10 +121,7 @@ void ColliderScenery::set_colliders(const std::vector<ColliderSpec>& colliders,
   const std::optional<std::size_t> floor = floor_collider(colliders);
   for (std::size_t i = 0; i < colliders.size(); ++i) {
     if (floor && *floor == i) continue;  // drawn as the floor
-    // Only its pose is needed here: leave a mesh collider's distance grid to the solver.
-    ColliderSpec pose_only = colliders[i];
-    pose_only.mesh.reset();
-    Collider collider(pose_only);
+    Collider collider = pose_only_collider(colliders[i]);
     const Eigen::Vector3d local = collider.pose(0.0).to_local(
         Eigen::Vector3d(cloth_centre.x, cloth_centre.y, cloth_centre.z));
     const Mesh mesh = collider_mesh(colliders[i], plane_half,

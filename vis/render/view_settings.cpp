@@ -101,9 +101,7 @@ ViewSettings scene_view(const Scene& scene, const Solver& solver) {
   bool grown = false;
   for (const ColliderSpec& spec : scene.colliders) {
     if (spec.kind == ColliderKind::plane) continue;
-    ColliderSpec pose_only = spec;  // a mesh's distance grid is the solver's business
-    pose_only.mesh.reset();
-    const Collider c(pose_only);
+    const Collider c = pose_only_collider(spec);
     const clothlab::Bounds b = c.bounds(c.pose(0.0), 0.0);
     lo = glm::min(lo, glm::vec3(float(b.lo.x()), float(b.lo.y()), float(b.lo.z())));
     hi = glm::max(hi, glm::vec3(float(b.hi.x()), float(b.hi.y()), float(b.hi.z())));
