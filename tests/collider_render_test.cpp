@@ -6,12 +6,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "pixels.hpp"
+#include "sim/mesh/triangle_mesh.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
 #include "vis/render/headless_renderer.hpp"
@@ -81,8 +84,7 @@ class ColliderRenderTest : public ::testing::Test {
   }
   // The view rendered with `colliders` drawn (the solver's own, or none).
   static Shot shoot(Solver& solver, const std::vector<ColliderSpec>& colliders,
-                    const vis::ViewSettings& v) {
-    RenderSpec spec;
+                    const vis::ViewSettings& v, RenderSpec spec = {}) {
     spec.pole.enabled = false;
     renderer_->set_cloth(solver);
     renderer_->set_scene(spec, solver, colliders);
@@ -239,6 +241,59 @@ TEST_F(ColliderRenderTest, CollidersCastShadows) {
   // Beyond the shadow the floor is as lit as without the sphere.
   const glm::vec2 aside = pixel(v, {0.8f, 0.0f, 0.0f});
   EXPECT_NEAR(with.lum(aside), without.lum(aside), 0.02 * without.lum(aside) + 0.002);
+}
+
+// OBJ scenery ([[render.meshes]] type = "obj"): an elongated box read from an OBJ file, turned a
+// quarter about y, is drawn where the scene places it (reaching along z, not x), shaded like the
+// box collider above, and casts a shadow; it is scenery, so the solver knows nothing of it.
+TEST_F(ColliderRenderTest, ObjSceneryIsDrawnTurnedAndCastsShadows) {
+  const std::string path = ::testing::TempDir() + "clothlab_scenery_box.obj";
+  {
+    std::ofstream obj(path);
+    obj << "# 0.9 x 0.2 x 0.2 box about the origin\n";
+    for (int k = 0; k < 8; ++k)
+      obj << "v " << (k & 1 ? 0.45 : -0.45) << ' ' << (k & 2 ? 0.1 : -0.1) << ' '
+          << (k & 4 ? 0.1 : -0.1) << '\n';
+    obj << "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
+  }
+  RenderSpec spec;
+  MeshSpec box;
+  box.kind = MeshKind::obj;
+  box.obj = std::make_shared<const TriangleMesh>(load_obj(path));
+  box.center = {0.6, 0.3, 0.0};
+  box.rotation = {0.0, 90.0, 0.0};
+  box.color = {0.7, 0.7, 0.72};
+  spec.meshes = {box};
+  std::remove(path.c_str());
+
+  const Scene scene = side_cloth();
+  auto solver = make_solver(scene);
+  vis::ViewSettings v = view(*solver);
+  v.light_type = LightType::directional;
+  v.light_direction = glm::normalize(v.camera.target - v.camera.eye());
+  v.light_intensity = 1.0f;
+  v.light_color = {1.0f, 1.0f, 1.0f};
+  v.ambient = 0.0f;
+  const Shot with = shoot(*solver, {}, v, spec), without = shoot(*solver, {}, v);
+  // As the box collider: the front face (z = 0.45) lit head-on, the side face (x = 0.5) edge-on
+  // and black, the unrotated box's end showing floor.
+  EXPECT_GT(with.lum(pixel(v, {0.6f, 0.3f, 0.45f})),
+            1.6 * without.lum(pixel(v, {0.6f, 0.3f, 0.45f})));
+  EXPECT_LT(with.lum(pixel(v, {0.5f, 0.3f, 0.2f})),
+            0.3 * without.lum(pixel(v, {0.5f, 0.3f, 0.2f})));
+  EXPECT_LE(with.differs(without, pixel(v, {0.6f + 0.35f, 0.4f, 0.0f})), 2);
+
+  // A shadow on the floor under it, lit from straight above.
+  v = view(*solver);
+  v.light_position = {0.6f, 4.0f, 0.0f};
+  v.shadows = ShadowFilter::pcf;
+  v.shadow_map_size = 1024;
+  const Shot lit = shoot(*solver, {}, v, spec), bare = shoot(*solver, {}, v);
+  // The box floats 0.2 m above the floor: under it (x 0.5..0.7, z -0.45..0.45) the floor is in
+  // shadow; 0.2 m beyond its side it is lit as without the box.
+  EXPECT_LT(lit.lum(pixel(v, {0.6f, 0.0f, 0.3f})), 0.5 * bare.lum(pixel(v, {0.6f, 0.0f, 0.3f})));
+  EXPECT_NEAR(lit.lum(pixel(v, {0.9f, 0.0f, 0.0f})), bare.lum(pixel(v, {0.9f, 0.0f, 0.0f})),
+              0.02 * bare.lum(pixel(v, {0.9f, 0.0f, 0.0f})) + 0.002);
 }
 
 }  // namespace

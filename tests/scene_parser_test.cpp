@@ -3,9 +3,12 @@
 // the file and line).
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <fstream>
 #include <string>
 #include <vector>
 
+#include "sim/mesh/triangle_mesh.hpp"
 #include "sim/scene/scene_parser.hpp"
 
 namespace clothlab {
@@ -361,6 +364,33 @@ rotation = [0, 45, 0]
                "unknown mesh type \"teapot\"");
   expect_error(kMinimal + "[render.cloth]\nopacity = 1.5\n", "render.cloth.opacity", 10,
                "between 0 and 1");
+  // OBJ scenery: the file is read with the scene, so a missing one is the scene's error.
+  expect_error(kMinimal + "[[render.meshes]]\ntype = \"obj\"\n", "render.meshes[0].file", 9,
+               "missing");
+  expect_error(kMinimal + "[[render.meshes]]\ntype = \"obj\"\nfile = \"no_such_vase.obj\"\n",
+               "render.meshes[0].file", 11, "no_such_vase.obj");
+  expect_error(kMinimal + "[[render.meshes]]\ntype = \"obj\"\nfile = \"v.obj\"\nscale = 0\n",
+               "render.meshes[0].scale", 12, "> 0");
+}
+
+// An OBJ mesh as scenery is read (scaled) with the scene.
+TEST(SceneParser, ObjSceneryIsReadWithTheScene) {
+  const std::string path = ::testing::TempDir() + "clothlab_parser_tri.obj";
+  {
+    std::ofstream obj(path);
+    obj << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  }
+  const Scene s = parse_scene_string(kMinimal + "[[render.meshes]]\ntype = \"obj\"\nfile = \"" +
+                                         path + "\"\nscale = 0.5\nsmooth = true\n",
+                                     "t.toml");
+  std::remove(path.c_str());
+  ASSERT_EQ(s.render.meshes.size(), 1u);
+  const MeshSpec& m = s.render.meshes[0];
+  EXPECT_EQ(m.kind, MeshKind::obj);
+  EXPECT_TRUE(m.smooth);
+  ASSERT_TRUE(m.obj);
+  EXPECT_EQ(m.obj->triangles.size(), 4u);
+  EXPECT_DOUBLE_EQ(m.obj->positions[1].x(), 0.5);
 }
 
 TEST(SceneParser, UnknownIntegratorListsValidNames) {

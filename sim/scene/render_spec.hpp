@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -11,11 +12,13 @@
 
 namespace clothlab {
 
+struct TriangleMesh;
+
 using Vec3d = std::array<double, 3>;
 
 enum class ShadowFilter { none, pcf, pcss };
 enum class LightType { spot, directional };
-enum class MeshKind { sphere, box, torus_knot };
+enum class MeshKind { sphere, box, torus_knot, obj };
 enum class ThreadMetal { none, gold, silver };
 
 struct LightSpec {
@@ -48,7 +51,14 @@ struct MeshSpec {
   Vec3d half_extents{0.2, 0.2, 0.2};  // box
   Vec3d rotation{0.0, 0.0, 0.0};      // degrees about x, then y, then z
   Vec3d color{0.75, 0.75, 0.75};      // sRGB albedo
-  std::string key;                    // "render.meshes[2]", for messages
+  // obj: a Wavefront OBJ (path relative to the scene file's folder), scaled about its own origin
+  // and then placed at `center` turned by `rotation`; smooth = false gives every facet its own
+  // normal (hard-edged furniture), true averages them (area-weighted) at shared vertices.
+  std::string file;
+  double scale = 1.0;
+  bool smooth = false;
+  std::shared_ptr<const TriangleMesh> obj;  // read by the parser
+  std::string key;                          // "render.meshes[2]", for messages
 };
 
 // The cloth's material in modes 4-6 (rendering.md sections 2-5).
@@ -89,7 +99,7 @@ struct RenderSpec {
 // Names as written in scene files, in enum order (the parser and the UI list them).
 extern const std::array<std::pair<ShadowFilter, const char*>, 3> kShadowFilterNames;
 extern const std::array<std::pair<LightType, const char*>, 2> kLightTypeNames;
-extern const std::array<std::pair<MeshKind, const char*>, 3> kMeshKindNames;
+extern const std::array<std::pair<MeshKind, const char*>, 4> kMeshKindNames;
 extern const std::array<std::pair<ThreadMetal, const char*>, 3> kThreadMetalNames;
 
 const char* to_string(ShadowFilter filter);

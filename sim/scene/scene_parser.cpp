@@ -89,8 +89,8 @@ constexpr std::string_view kLightKeys[] = {"type",  "position",  "target", "dire
                                            "color", "intensity", "size"};
 constexpr std::string_view kSkyKeys[] = {"enabled", "turbidity"};
 constexpr std::string_view kPoleKeys[] = {"enabled", "radius"};
-constexpr std::string_view kMeshKeys[] = {"type",         "center",   "radius",
-                                          "half_extents", "rotation", "color"};
+constexpr std::string_view kMeshKeys[] = {"type",  "center", "radius", "half_extents", "rotation",
+                                          "color", "file",   "scale",  "smooth"};
 constexpr std::string_view kColliderKeys[] = {
     "type",     "point",    "normal",    "center", "radius", "half_extents", "rotation",  "a", "b",
     "rounding", "friction", "thickness", "motion", "file",   "scale",        "resolution"};
@@ -537,7 +537,8 @@ class Reader {
     MeshSpec mesh;
     mesh.key = key;
     if (!t.contains("type"))
-      fail(key + ".type", t, "missing (a mesh needs type = \"sphere\", \"box\" or \"torus_knot\")");
+      fail(key + ".type", t,
+           "missing (a mesh needs type = \"sphere\", \"box\", \"torus_knot\" or \"obj\")");
     field(t, key, "type",
           [&](auto& n, auto& k) { mesh.kind = choice(n, k, kMeshKindNames, "mesh type"); });
     field(t, key, "center", [&](auto& n, auto& k) { mesh.center = numbers<3>(n, k); });
@@ -545,7 +546,31 @@ class Reader {
     field(t, key, "half_extents", [&](auto& n, auto& k) { mesh.half_extents = numbers<3>(n, k); });
     field(t, key, "rotation", [&](auto& n, auto& k) { mesh.rotation = numbers<3>(n, k); });
     field(t, key, "color", [&](auto& n, auto& k) { mesh.color = numbers<3>(n, k); });
+    field(t, key, "file", [&](auto& n, auto& k) { mesh.file = text(n, k); });
+    field(t, key, "scale", [&](auto& n, auto& k) { mesh.scale = number(n, k); });
+    field(t, key, "smooth", [&](auto& n, auto& k) { mesh.smooth = boolean(n, k); });
+    if (mesh.kind == MeshKind::obj) {
+      if (mesh.file.empty())
+        fail(key + ".file", t, "missing (an obj mesh needs file = \"thing.obj\")");
+      mesh.obj = std::make_shared<const TriangleMesh>(read_obj(t, key, mesh.file, mesh.scale));
+    }
     return mesh;
+  }
+
+  // An OBJ named by `key`.file, read now so that a missing, malformed or empty file is a scene
+  // error naming the key (the path is relative to the scene file's folder).
+  TriangleMesh read_obj(const toml::table& t, const std::string& key, const std::string& file,
+                        double scale) {
+    if (!(scale > 0.0))
+      fail(key + ".scale", *t.get("scale"), "must be > 0 (got " + format_number(scale) + ")");
+    std::filesystem::path path(file);
+    if (path.is_relative() && scene_.file != "<string>")
+      path = std::filesystem::path(scene_.file).parent_path() / path;
+    try {
+      return load_obj(path.string(), scale);
+    } catch (const ObjError& e) {
+      fail(key + ".file", *t.get("file"), e.what());
+    }
   }
 
   void read_colliders(const toml::node& node) {
@@ -597,21 +622,10 @@ class Reader {
     return c;
   }
 
-  // A mesh collider's OBJ, read now so that a missing, malformed or empty file is a scene error
-  // naming the key (the path is relative to the scene file's folder).
   void read_collider_mesh(const toml::table& t, const std::string& key, ColliderSpec& c) {
-    const std::string file_key = key + ".file";
-    if (c.file.empty()) fail(file_key, t, "missing (a mesh collider needs file = \"thing.obj\")");
-    if (!(c.scale > 0.0))
-      fail(key + ".scale", *t.get("scale"), "must be > 0 (got " + format_number(c.scale) + ")");
-    std::filesystem::path path(c.file);
-    if (path.is_relative() && scene_.file != "<string>")
-      path = std::filesystem::path(scene_.file).parent_path() / path;
-    try {
-      c.mesh = std::make_shared<const TriangleMesh>(load_obj(path.string(), c.scale));
-    } catch (const ObjError& e) {
-      fail(file_key, *t.get("file"), e.what());
-    }
+    if (c.file.empty())
+      fail(key + ".file", t, "missing (a mesh collider needs file = \"thing.obj\")");
+    c.mesh = std::make_shared<const TriangleMesh>(read_obj(t, key, c.file, c.scale));
   }
 
   ColliderMotion read_motion(const toml::table& t, const std::string& key) {

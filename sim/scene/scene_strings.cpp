@@ -38,8 +38,11 @@ const std::array<std::pair<ShadowFilter, const char*>, 3> kShadowFilterNames{
     {{ShadowFilter::none, "none"}, {ShadowFilter::pcf, "pcf"}, {ShadowFilter::pcss, "pcss"}}};
 const std::array<std::pair<LightType, const char*>, 2> kLightTypeNames{
     {{LightType::spot, "spot"}, {LightType::directional, "directional"}}};
-const std::array<std::pair<MeshKind, const char*>, 3> kMeshKindNames{
-    {{MeshKind::sphere, "sphere"}, {MeshKind::box, "box"}, {MeshKind::torus_knot, "torus_knot"}}};
+const std::array<std::pair<MeshKind, const char*>, 4> kMeshKindNames{
+    {{MeshKind::sphere, "sphere"},
+     {MeshKind::box, "box"},
+     {MeshKind::torus_knot, "torus_knot"},
+     {MeshKind::obj, "obj"}}};
 const std::array<std::pair<ThreadMetal, const char*>, 3> kThreadMetalNames{
     {{ThreadMetal::none, "none"}, {ThreadMetal::gold, "gold"}, {ThreadMetal::silver, "silver"}}};
 

@@ -1,13 +1,12 @@
 #include "vis/render/collider_scenery.hpp"
 
-#include "sim/mesh/triangle_mesh.hpp"
-
 #include <algorithm>
 #include <cmath>
 
 #include "sim/solver.hpp"
 #include "vis/gl/program.hpp"
 #include "vis/meshes/mesh.hpp"
+#include "vis/meshes/obj_mesh.hpp"
 #include "vis/meshes/shapes.hpp"
 #include "vis/passes/shadow_pass.hpp"
 #include "vis/render/floor_collider.hpp"
@@ -43,28 +42,6 @@ Mesh make_plane_quad(float half, float cx, float cz) {
   return mesh;
 }
 
-// An OBJ collider as read (its own coordinates are its frame), flat shaded: each triangle gets
-// its own three vertices with the face normal, so the edges of a chair stay crisp.
-Mesh flat_mesh(const TriangleMesh& obj) {
-  Mesh mesh;
-  for (const auto& t : obj.triangles) {
-    glm::vec3 p[3];
-    for (int k = 0; k < 3; ++k) {
-      const Eigen::Vector3d& v = obj.positions[static_cast<std::size_t>(t[k])];
-      p[k] = glm::vec3(static_cast<float>(v.x()), static_cast<float>(v.y()),
-                       static_cast<float>(v.z()));
-    }
-    const glm::vec3 n = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
-    for (int k = 0; k < 3; ++k) {
-      mesh.indices.push_back(static_cast<std::uint32_t>(mesh.positions.size()));
-      mesh.positions.push_back(p[k]);
-      mesh.normals.push_back(n);
-      mesh.uvs.emplace_back(0.0f, 0.0f);
-    }
-  }
-  return mesh;
-}
-
 // The collider's shape in its own frame (sim/contact/collider.hpp: the plane is local y = 0 with
 // its normal +y, the capsule's axis runs along local y).
 Mesh collider_mesh(const ColliderSpec& c, float plane_half, glm::vec2 plane_centre) {
@@ -84,7 +61,7 @@ Mesh collider_mesh(const ColliderSpec& c, float plane_half, glm::vec2 plane_cent
       return make_capsule(f(c.radius), 0.5f * f(std::sqrt(len2)), kSlices, kCapStacks);
     }
     case ColliderKind::mesh:
-      return c.mesh ? flat_mesh(*c.mesh) : Mesh{};
+      return c.mesh ? make_obj_mesh(*c.mesh, false) : Mesh{};  // crisp edges
   }
   return Mesh{};
 }

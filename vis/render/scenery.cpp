@@ -7,6 +7,7 @@
 #include "sim/solver.hpp"
 #include "vis/gl/program.hpp"
 #include "vis/meshes/mesh.hpp"
+#include "vis/meshes/obj_mesh.hpp"
 #include "vis/meshes/shapes.hpp"
 #include "vis/passes/shadow_pass.hpp"
 #include "vis/render/gpu_mesh.hpp"
@@ -100,6 +101,9 @@ void Scenery::set_scene(const RenderSpec& spec, const Solver& solver) {
       case MeshKind::torus_knot:
         // A (2, 3) trefoil: overall radius r, tube 0.14 r.
         add(make_torus_knot(2, 3, 0.72f * r, 0.14f * r, 256, 16), model, to_glm(m.color));
+        break;
+      case MeshKind::obj:
+        if (m.obj) add(make_obj_mesh(*m.obj, m.smooth), model, to_glm(m.color));
         break;
     }
   }
