@@ -194,8 +194,9 @@ TEST(SceneParser, OutOfRange) {
                "outside the 4 x 3 grid");
   expect_error(kMinimal + "[trace]\nvertices = [[0, 0], [0, 0]]\n", "trace.vertices[1]", 10,
                "twice");
-  expect_error("[cloth]\nshape = \"mesh\"\n", "cloth.shape", 2, "not supported yet");
-  expect_error("[cloth]\nshape = \"cone\"\n", "cloth.shape", 2, "unknown (valid: grid, tube)");
+  expect_error("[cloth]\nshape = \"mesh\"\n", "cloth.file", 1, "missing (a mesh cloth needs file");
+  expect_error("[cloth]\nshape = \"cone\"\n", "cloth.shape", 2,
+               "unknown (valid: grid, tube, mesh)");
   expect_error(kMinimal + "precision = \"half\"\n", "solver.precision", 9, "float, double");
   expect_error(kMinimal + "backend = \"gpu\"\n", "solver.backend", 9, "not supported yet");
   EXPECT_NO_THROW(parse_scene_string(kMinimal + "backend = \"cpu\"\n", "t"));

@@ -18,6 +18,10 @@ struct GridCloth {
   std::vector<int> pinned;       // local vertex indices, sorted
   std::vector<std::array<int, 3>> triangles;  // two per grid quad, counter-clockwise about u x v
   bool wrap_u = false;  // a tube: column nu - 1 is joined to column 0 (the seam)
+  // A mesh cloth (sim/cloth/mesh_cloth.hpp): no grid, nu = vertex count, nv = 1; its triangles
+  // come from the OBJ and each vertex has its own mass (`masses`, lumped by area).
+  bool mesh = false;
+  std::vector<double> masses;  // empty: every vertex has vertex_mass
 
   int index(int i, int j) const { return i + j * nu; }
   int vertex_count() const { return nu * nv; }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/cloth/mesh_cloth.hpp"
 #include "sim/core/parallel.hpp"
 #include "sim/core/vec3_eigen.hpp"
 
@@ -46,15 +47,28 @@ ContactResponse<T>::ContactResponse(const std::vector<ColliderSpec>& colliders, 
   // Edge midpoints join in when some collider is thinner than the cloth's longest grid edge at
   // rest: a rod or a thin box edge could otherwise pass between two rows of vertices.
   double longest = 0.0;
+  // A mesh cloth's edges are its triangles' (the model's, between its offset and offset + nu).
+  std::vector<std::array<int, 3>> mesh_triangles;
+  for (const auto& t : m.triangles)
+    for (const ClothRange& c : m.cloths)
+      if (c.mesh && t[0] >= c.offset && t[0] < c.offset + c.nu) mesh_triangles.push_back(t);
+  const std::vector<std::array<int, 2>> mesh_edge_list = mesh_edges(mesh_triangles);
+  for (const auto& e : mesh_edge_list)
+    longest = std::max(longest, (load3(m.rest_positions, std::size_t(e[0])) -
+                                 load3(m.rest_positions, std::size_t(e[1])))
+                                    .norm());
   for (const ClothRange& c : m.cloths)
-    for (int j = 0; j < c.nv; ++j)
-      for (int i = 0; i < c.nu; ++i) {
-        const auto v = static_cast<std::size_t>(c.offset + i + j * c.nu);
-        const V3 x = load3(m.rest_positions, v);
-        if (i + 1 < c.nu) longest = std::max(longest, (load3(m.rest_positions, v + 1) - x).norm());
-        if (j + 1 < c.nv)
-          longest = std::max(longest, (load3(m.rest_positions, v + std::size_t(c.nu)) - x).norm());
-      }
+    if (!c.mesh)
+      for (int j = 0; j < c.nv; ++j)
+        for (int i = 0; i < c.nu; ++i) {
+          const auto v = static_cast<std::size_t>(c.offset + i + j * c.nu);
+          const V3 x = load3(m.rest_positions, v);
+          if (i + 1 < c.nu)
+            longest = std::max(longest, (load3(m.rest_positions, v + 1) - x).norm());
+          if (j + 1 < c.nv)
+            longest =
+                std::max(longest, (load3(m.rest_positions, v + std::size_t(c.nu)) - x).norm());
+        }
   for (const Collider& c : colliders_) {
     const ColliderSpec& spec = c.spec();
     double feature = INFINITY;  // the collider's thinnest dimension
@@ -67,7 +81,9 @@ ContactResponse<T>::ContactResponse(const std::vector<ColliderSpec>& colliders, 
     edges_ = edges_ || feature < 2.0 * longest;
   }
   if (!edges_) return;
+  mesh_edges_ = mesh_edge_list;
   for (const ClothRange& c : m.cloths) {
+    if (c.mesh) continue;
     for (int j = 0; j < c.nv; ++j) {
       const int row = c.offset + j * c.nu;
       if (c.nu > 1) rows_.push_back({row, 1, c.nu - 1});
@@ -327,6 +343,14 @@ void ContactResponse<T>::respond_edges(const Model<T>& m, State<T>& s, double h,
     stats_.contacts += contacts;
     stats_.max_depth = std::max(stats_.max_depth, depth);
   }
+  // A mesh cloth's edges have no colouring into independent rounds: one after another, on one
+  // thread (the same result for any thread count).
+  double depth = 0.0;
+  for (const auto& e : mesh_edges_) {
+    const auto a = static_cast<std::size_t>(e[0]), b = static_cast<std::size_t>(e[1]);
+    if ((near(a) || near(b)) && edge(a, b, m, s, h, depth)) ++stats_.contacts;
+  }
+  stats_.max_depth = std::max(stats_.max_depth, depth);
 }
 
 template class ContactResponse<float>;

@@ -82,6 +82,7 @@ class ContactResponse {
   int quiet_substeps_ = 0;  // substeps the last "nothing within reach" still covers
   bool edges_ = false;  // edge midpoints are contact points too (a collider thinner than an edge)
   std::vector<EdgeRun> rows_, columns_;
+  std::vector<std::array<int, 2>> mesh_edges_;  // mesh cloths' edges (a < b)
   ContactStats stats_;
 };
 

@@ -51,6 +51,7 @@ SelfCollision<T>::SelfCollision(const Model<T>& m, const SolverSpec& spec)
     const ClothRange& r = m.cloths[c];
     std::fill_n(cloth_of_.begin() + r.offset, std::size_t(r.nu) * std::size_t(r.nv),
                 static_cast<std::int32_t>(c));
+    if (r.mesh) continue;  // below, from its triangles
     // Half a grid square's diagonal: the widest hole between a layer's vertices.
     const auto at = [&](int i, int j) {
       return load3(m.rest_positions, std::size_t(r.offset + i + j * r.nu));
@@ -58,6 +59,17 @@ SelfCollision<T>::SelfCollision(const Model<T>& m, const SolverSpec& spec)
     const double eu = r.nu > 1 ? (at(1, 0) - at(0, 0)).norm() : 0.0;
     const double ev = r.nv > 1 ? (at(0, 1) - at(0, 0)).norm() : 0.0;
     min_thickness_ = std::max(min_thickness_, 0.5 * std::sqrt(eu * eu + ev * ev));
+  }
+  // A mesh cloth's widest hole: half the longest side of its largest triangle (on a grid's
+  // half-squares that is half the diagonal again).
+  for (const auto& t : m.triangles) {
+    const ClothRange& r = m.cloths[std::size_t(cloth_of_[std::size_t(t[0])])];
+    if (!r.mesh) continue;
+    for (int c = 0; c < 3; ++c)
+      min_thickness_ =
+          std::max(min_thickness_, 0.5 * (load3(m.rest_positions, std::size_t(t[c])) -
+                                          load3(m.rest_positions, std::size_t(t[(c + 1) % 3])))
+                                             .norm());
   }
   // Every spring-connected pair is skipped: the seed rule joins all pairs closer than its
   // longest spring, so a rest distance up to the longest spring covers them (with a margin for

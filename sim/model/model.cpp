@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "sim/cloth/grid_cloth.hpp"
+#include "sim/cloth/mesh_cloth.hpp"
 #include "sim/cloth/tube_cloth.hpp"
 
 namespace clothlab {
@@ -106,21 +107,25 @@ Model<T> build_model(const Scene& scene, SpringKernel kernel) {
   // The row sweep walks a grid's rows; a tube's springs cross its seam, so a scene with one
   // takes the neighbour list (the kernel for any topology).
   for (const ClothSpec& c : scene.cloths)
-    if (c.shape == "tube") kernel = SpringKernel::neighbour_list;
+    if (c.shape == "tube" || c.shape == "mesh") kernel = SpringKernel::neighbour_list;
   m.kernel = kernel;
   std::vector<Spring> springs;  // neighbour_list only: 24 bytes a spring
   std::vector<double> spring_damping;
   std::vector<Vec3d> positions;
   std::vector<double> masses;
   for (std::size_t c = 0; c < scene.cloths.size(); ++c) {
-    const bool tube = scene.cloths[c].shape == "tube";
-    const GridCloth g =
-        tube ? build_tube_cloth(scene.cloths[c]) : build_grid_cloth(scene.cloths[c]);
+    const std::string& shape = scene.cloths[c].shape;
+    const GridCloth g = shape == "tube"   ? build_tube_cloth(scene.cloths[c])
+                        : shape == "mesh" ? build_mesh_cloth(scene.cloths[c])
+                                          : build_grid_cloth(scene.cloths[c]);
     const SpringSpec& spec = scene.springs_of(c);
     const int offset = static_cast<int>(positions.size());
-    m.cloths.push_back({offset, g.nu, g.nv, g.wrap_u});
+    m.cloths.push_back({offset, g.nu, g.nv, g.wrap_u, g.mesh});
     positions.insert(positions.end(), g.positions.begin(), g.positions.end());
-    masses.insert(masses.end(), g.positions.size(), g.vertex_mass);
+    if (g.masses.empty())
+      masses.insert(masses.end(), g.positions.size(), g.vertex_mass);
+    else
+      masses.insert(masses.end(), g.masses.begin(), g.masses.end());
     for (int p : g.pinned) m.pinned.push_back(offset + p);
     m.has_damping = m.has_damping || spec.damping != 0.0;
     if (kernel == SpringKernel::row_sweep) {
@@ -129,8 +134,11 @@ Model<T> build_model(const Scene& scene, SpringKernel kernel) {
         m.spring_count +=
             static_cast<std::size_t>(g.nu - std::abs(o.di)) * static_cast<std::size_t>(g.nv - o.dj);
     } else {
-      for (Spring s :
-           tube ? seed_springs_tube(g, spec.stiffness) : seed_springs_grid(g, spec.stiffness)) {
+      const std::vector<Spring> cloth_springs =
+          shape == "tube"   ? seed_springs_tube(g, spec.stiffness)
+          : shape == "mesh" ? mesh_springs(g, spec.stiffness)
+                            : seed_springs_grid(g, spec.stiffness);
+      for (Spring s : cloth_springs) {
         s.a += offset;
         s.b += offset;
         springs.push_back(s);

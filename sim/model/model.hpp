@@ -24,6 +24,9 @@ struct ClothRange {
   int offset = 0;  // global index of vertex (0, 0)
   int nu = 0, nv = 0;
   bool wrap_u = false;  // a tube: column nu - 1 joins column 0 across the seam
+  // A mesh cloth (sim/cloth/mesh_cloth.hpp): no grid; nu is its vertex count and nv 1, and its
+  // surface is the model's triangles between offset and offset + nu.
+  bool mesh = false;
 };
 
 enum class SpringKernel { row_sweep, neighbour_list };

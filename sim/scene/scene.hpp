@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,7 +30,7 @@ struct SpringSpec {
 };
 
 struct ClothSpec {
-  std::string shape = "grid";             // grid | tube
+  std::string shape = "grid";             // grid | tube | mesh
   std::array<double, 2> size{2.0, 2.0};   // metres along u and v
   std::array<int, 2> resolution{32, 32};  // vertices along u and v, each >= 1
   Vec3d origin{-1.0, 2.5, 0.0};           // world position of vertex (0, 0)
@@ -47,7 +48,14 @@ struct ClothSpec {
   // vertex i of a ring lies at angle 2 pi i / nu from u_axis, turning towards v_axis x u_axis.
   std::array<double, 2> radius{0.3, 0.3};  // m
   double length = 0.6;                     // m, first ring to last
-  std::string key;                         // key path prefix for messages: "cloth" or "cloth[1]"
+  // Mesh (cloth from an OBJ file, sim/cloth/mesh_cloth.hpp): the OBJ's coordinates times `scale`,
+  // turned by `rotation` (degrees about x, then y, then z) and moved by `origin` (0 unless given).
+  // Pins are OBJ vertex numbers, stored as (number - 1, 0); resolution becomes [vertices, 1].
+  std::string file;
+  double scale = 1.0;
+  Vec3d rotation{0.0, 0.0, 0.0};
+  std::shared_ptr<const TriangleMesh> mesh;  // read by the parser
+  std::string key;                           // key path prefix for messages: "cloth" or "cloth[1]"
 };
 
 struct WindSpec {

@@ -72,8 +72,8 @@ constexpr std::string_view kTopKeys[] = {"cloth", "springs", "forces",   "solver
                                          "trace", "render",  "colliders"};
 constexpr std::string_view kPlannedTopKeys[] = {"music", "mannequin"};
 constexpr std::string_view kClothKeys[] = {
-    "shape", "size",    "resolution", "origin", "u_axis", "v_axis",     "mass",
-    "pins",  "springs", "release_at", "radius", "length", "pins_follow"};
+    "shape",   "size",       "resolution", "origin", "u_axis",      "v_axis", "mass",  "pins",
+    "springs", "release_at", "radius",     "length", "pins_follow", "file",   "scale", "rotation"};
 constexpr std::string_view kSpringKeys[] = {"rule", "stiffness", "damping"};
 constexpr std::string_view kForceKeys[] = {"gravity", "drag", "wind"};
 constexpr std::string_view kWindKeys[] = {"velocity", "gust", "seed", "gust_period", "coefficient"};
@@ -295,7 +295,9 @@ class Reader {
     field(t, key, "u_axis", [&](auto& n, auto& k) { cloth.u_axis = numbers<3>(n, k); });
     field(t, key, "v_axis", [&](auto& n, auto& k) { cloth.v_axis = numbers<3>(n, k); });
     field(t, key, "mass", [&](auto& n, auto& k) { cloth.mass = number(n, k); });
-    field(t, key, "pins", [&](auto& n, auto& k) { cloth.pins = read_pins(n, k); });
+    field(t, key, "pins", [&](auto& n, auto& k) {
+      cloth.pins = cloth.shape == "mesh" ? read_vertex_pins(n, k) : read_pins(n, k);
+    });
     field(t, key, "release_at", [&](auto& n, auto& k) { cloth.release_at = number(n, k); });
     field(t, key, "radius", [&](auto& n, auto& k) {
       // One radius (a cylinder) or [first ring, last ring] (a frustum).
@@ -313,7 +315,33 @@ class Reader {
     // differs.
     field(t, key, "springs",
           [&](auto& n, auto& k) { cloth.springs = read_springs(table(n, k), k, scene_.springs); });
+    field(t, key, "file", [&](auto& n, auto& k) { cloth.file = text(n, k); });
+    field(t, key, "scale", [&](auto& n, auto& k) { cloth.scale = number(n, k); });
+    field(t, key, "rotation", [&](auto& n, auto& k) { cloth.rotation = numbers<3>(n, k); });
+    if (cloth.shape == "mesh") read_cloth_mesh(t, key, cloth);
     return cloth;
+  }
+
+  // A mesh cloth's OBJ, read now (errors name the key); its vertex count becomes the resolution
+  // [n, 1], the layout a mesh cloth has in the solver (sim/model/model.hpp, ClothRange).
+  void read_cloth_mesh(const toml::table& t, const std::string& key, ClothSpec& cloth) {
+    if (cloth.file.empty())
+      fail(key + ".file", t, "missing (a mesh cloth needs file = \"cloth.obj\")");
+    if (!t.contains("origin")) cloth.origin = {0.0, 0.0, 0.0};
+    cloth.mesh = std::make_shared<const TriangleMesh>(read_obj(t, key, cloth.file, cloth.scale));
+    cloth.resolution = {static_cast<int>(cloth.mesh->positions.size()), 1};
+  }
+
+  // A mesh cloth's pins: OBJ vertex numbers (1 = the file's first v line, as its f lines count).
+  std::vector<std::array<int, 2>> read_vertex_pins(const toml::node& node, const std::string& key) {
+    const toml::array& a = array(node, key, std::nullopt, " of OBJ vertex numbers");
+    std::vector<std::array<int, 2>> pins;
+    for (std::size_t n = 0; n < a.size(); ++n) {
+      const std::string k = key + "[" + std::to_string(n) + "]";
+      note(k, *a.get(n));
+      pins.push_back({small_integer(*a.get(n), k) - 1, 0});
+    }
+    return pins;
   }
 
   std::vector<std::array<int, 2>> read_pins(const toml::node& node, const std::string& key) {

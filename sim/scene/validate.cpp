@@ -2,6 +2,8 @@
 // rules on values, so that a Scene built in code (tests, benchmarks) is checked the same way.
 #include "sim/scene/validate.hpp"
 
+#include "sim/mesh/triangle_mesh.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -91,12 +93,11 @@ class Validator {
 
   void check_cloth(const ClothSpec& cloth) const {
     const std::string& k = cloth.key;
-    if (cloth.shape != "grid" && cloth.shape != "tube") {
-      const bool planned = cloth.shape == "mesh";
-      fail(k + ".shape", "shape \"" + cloth.shape + "\" is " +
-                             (planned ? "not supported yet" : "unknown") + " (valid: grid, tube)");
-    }
-    if (cloth.shape == "tube") {
+    if (cloth.shape != "grid" && cloth.shape != "tube" && cloth.shape != "mesh")
+      fail(k + ".shape", "shape \"" + cloth.shape + "\" is unknown (valid: grid, tube, mesh)");
+    if (cloth.shape == "mesh") {
+      check_mesh_cloth(cloth);
+    } else if (cloth.shape == "tube") {
       check_tube(cloth);
     } else {
       for (const char* tube_key : {".radius", ".length"})
@@ -159,6 +160,35 @@ class Validator {
     return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
   }
 
+  // A mesh cloth takes its geometry from the OBJ: no grid or tube keys; every vertex belongs to
+  // a face (a loose vertex would fall alone) and no edge has zero length (a spring of rest
+  // length 0 has no direction when its ends meet).
+  void check_mesh_cloth(const ClothSpec& cloth) const {
+    const std::string& k = cloth.key;
+    for (const char* grid_key :
+         {".size", ".resolution", ".u_axis", ".v_axis", ".radius", ".length"})
+      if (scene_.locations.count(k + grid_key))
+        fail(k + grid_key,
+             "belongs to a grid or tube cloth (a mesh cloth takes its shape from file)");
+    finite3(k + ".rotation", cloth.rotation);
+    positive(k + ".scale", cloth.scale);
+    if (!cloth.mesh || cloth.mesh->triangles.empty())
+      fail(k + ".file", "no OBJ mesh was read for this mesh cloth");
+    const TriangleMesh& mesh = *cloth.mesh;
+    std::vector<bool> used(mesh.positions.size(), false);
+    for (const auto& t : mesh.triangles)
+      for (int c = 0; c < 3; ++c) {
+        used[std::size_t(t[c])] = true;
+        const int a = t[c], b = t[(c + 1) % 3];
+        if ((mesh.positions[std::size_t(a)] - mesh.positions[std::size_t(b)]).norm() == 0.0)
+          fail(k + ".file", "the edge between OBJ vertices " + std::to_string(a + 1) + " and " +
+                                std::to_string(b + 1) + " has zero length");
+      }
+    for (std::size_t v = 0; v < used.size(); ++v)
+      if (!used[v])
+        fail(k + ".file", "OBJ vertex " + std::to_string(v + 1) + " belongs to no face");
+  }
+
   // Pins name vertices inside the grid, once each, and leave at least one vertex free (a fully
   // pinned cloth has nothing to simulate and is almost certainly a typo).
   void check_pins(const ClothSpec& cloth) const {
@@ -167,7 +197,12 @@ class Validator {
     for (std::size_t n = 0; n < cloth.pins.size(); ++n) {
       const auto [i, j] = cloth.pins[n];
       const std::string key = cloth.key + ".pins[" + std::to_string(n) + "]";
-      const std::string pin = "[" + std::to_string(i) + ", " + std::to_string(j) + "]";
+      const std::string pin = cloth.shape == "mesh"
+                                  ? std::to_string(i + 1)
+                                  : "[" + std::to_string(i) + ", " + std::to_string(j) + "]";
+      if (cloth.shape == "mesh" && (i < 0 || i >= nu))
+        fail(key, "pin " + std::to_string(i + 1) + " is not an OBJ vertex number (1.." +
+                      std::to_string(nu) + ")");
       if (i < 0 || i >= nu || j < 0 || j >= nv)
         fail(key, "pin " + pin + " is outside the " + std::to_string(nu) + " x " +
                       std::to_string(nv) + " grid (0 <= i < " + std::to_string(nu) + ", 0 <= j < " +

@@ -27,7 +27,9 @@ int arrow_stride(const Solver& solver, int stride) {
   if (stride > 0) return stride;
   int s = 1;
   for (const ClothRange& c : solver.cloths()) {
-    const int side = std::max(c.nu, c.nv);
+    // A mesh cloth's vertices have no rows: as many arrows as a square grid of its size.
+    const int side =
+        c.mesh ? static_cast<int>(std::ceil(std::sqrt(double(c.nu)))) : std::max(c.nu, c.nv);
     s = std::max(s, (side + kAutoArrowsPerSide - 1) / kAutoArrowsPerSide);
   }
   return s;
@@ -41,6 +43,18 @@ ArrowLayout arrow_layout(const Solver& solver, int stride) {
   double spacing = 0.0;
   long gaps = 0;
   for (const ClothRange& c : solver.cloths()) {
+    if (c.mesh) {
+      // Every stride^2-th vertex (as a grid's stride keeps one vertex in stride^2); spacing from
+      // the mean length of its triangles' edges, times the stride.
+      const int every = layout.stride * layout.stride;
+      for (int v = c.offset; v < c.offset + c.nu; v += every) layout.vertices.push_back(v);
+      for (const auto& t : solver.triangles()) {
+        if (t[0] < c.offset || t[0] >= c.offset + c.nu) continue;
+        for (int k = 0; k < 3; ++k, ++gaps)
+          spacing += layout.stride * glm::length(at(rest, t[k]) - at(rest, t[(k + 1) % 3]));
+      }
+      continue;
+    }
     const std::vector<int> is = sampled(c.nu, layout.stride), js = sampled(c.nv, layout.stride);
     for (int j : js) {
       for (int i : is) layout.vertices.push_back(c.offset + i + j * c.nu);

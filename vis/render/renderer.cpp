@@ -16,6 +16,7 @@
 #include "vis/textures/cloth_tangents.hpp"
 #include "vis/textures/fabric_texture.hpp"
 #include "vis/textures/floor_texture.hpp"
+#include "vis/textures/planar_uv.hpp"
 #include "vis/textures/weave_maps.hpp"
 
 namespace clothlab::vis {
@@ -123,8 +124,17 @@ void Renderer::set_cloth(Solver& solver) {
   // i / nu round a tube, its seam copies at u = 1), then rest positions, then the place in the UV
   // atlas of mode 6's diffusion (cloth k of K in rows k / K .. (k + 1) / K).
   std::vector<float> fixed(7 * rn);
+  solver.copy_rest_positions(fixed.data() + 2 * rn);
+  float longest_u = 1e-3f, longest_v = 1e-3f;
   for (std::size_t k = 0; k < cloths.size(); ++k) {
     const ClothRange& c = cloths[k];
+    if (c.mesh) {
+      const glm::vec2 span =
+          planar_uvs(fixed.data() + 2 * rn, c.offset, c.offset + c.nu, fixed.data());
+      longest_u = std::max(longest_u, span.x);
+      longest_v = std::max(longest_v, span.y);
+      continue;
+    }
     const float u_steps = c.wrap_u ? float(c.nu) : float(c.nu - 1);
     for (int j = 0; j < c.nv; ++j) {
       const float v_coord = c.nv > 1 ? float(j) / float(c.nv - 1) : 0.0f;
@@ -140,20 +150,20 @@ void Renderer::set_cloth(Solver& solver) {
       }
     }
   }
-  solver.copy_rest_positions(fixed.data() + 2 * rn);
   for (std::size_t k = 0; k < seam_copies_.size(); ++k)
     for (int d = 0; d < 3; ++d)
       fixed[2 * rn + 3 * (n + k) + d] =
           fixed[2 * rn + 3 * static_cast<std::size_t>(seam_copies_[k]) + d];
   const float rows = static_cast<float>(std::max<std::size_t>(1, cloths.size()));
-  float longest_u = 1e-3f, longest_v = 1e-3f;
   for (std::size_t k = 0; k < cloths.size(); ++k) {
     const ClothRange& c = cloths[k];
     auto rest = [&](int i, int j) {
       const std::size_t v = 2 * rn + 3 * static_cast<std::size_t>(c.offset + i + j * c.nu);
       return glm::vec3(fixed[v], fixed[v + 1], fixed[v + 2]);
     };
-    if (c.wrap_u) {
+    if (c.mesh) {
+      // planar_uvs above gave its spans
+    } else if (c.wrap_u) {
       // Round the longer of the end rings (a frustum's differ), the seam's chord included.
       for (int j : {0, c.nv - 1}) {
         float ring = 0.0f;
@@ -163,7 +173,7 @@ void Renderer::set_cloth(Solver& solver) {
     } else {
       longest_u = std::max(longest_u, glm::length(rest(c.nu - 1, 0) - rest(0, 0)));
     }
-    longest_v = std::max(longest_v, glm::length(rest(0, c.nv - 1) - rest(0, 0)));
+    if (!c.mesh) longest_v = std::max(longest_v, glm::length(rest(0, c.nv - 1) - rest(0, 0)));
     auto to_atlas = [&](std::size_t at) {
       fixed[5 * rn + 2 * at] = fixed[2 * at];
       fixed[5 * rn + 2 * at + 1] = (fixed[2 * at + 1] + float(k)) / rows;
@@ -221,6 +231,12 @@ void Renderer::set_cloth(Solver& solver) {
   scalar_vbo_ = make_buffer();
   tangent_vbo_ = make_buffer();
   grids_ = solver.cloths();
+  mesh_uvs_.clear();
+  mesh_triangles_.clear();
+  if (std::any_of(cloths.begin(), cloths.end(), [](const ClothRange& c) { return c.mesh; })) {
+    mesh_uvs_.assign(fixed.begin(), fixed.begin() + std::ptrdiff_t(2 * n));
+    mesh_triangles_ = solver_triangles;
+  }
   tangents_.assign(4 * rn, 0.0f);
   tangents_stale_ = true;
   triangle_ebo_ = make_buffer();
@@ -305,6 +321,11 @@ void Renderer::update_tangents() {
   const float* normals = staging_.data() + 3 * render_vertex_count();
   for (const ClothRange& c : grids_) {
     const std::size_t o = static_cast<std::size_t>(c.offset);
+    if (c.mesh) {
+      compute_mesh_tangents(c.offset, c.offset + c.nu, mesh_triangles_, positions, normals,
+                            mesh_uvs_.data(), tangents_.data(), tangent_scratch_);
+      continue;
+    }
     compute_grid_tangents(c.nu, c.nv, positions + 3 * o, normals + 3 * o, tangents_.data() + 4 * o,
                           c.wrap_u);
   }

@@ -112,7 +112,10 @@ class Renderer {
   bool tangents_stale_ = true;
   std::vector<float> tangents_;
   std::vector<ClothRange> grids_;  // the cloths' grids, for the tangents
-  Texture threads_;                // r: metal thread mask, g: weft on top
+  // Mesh cloths' tangents come from their triangles and UVs (empty without a mesh cloth).
+  std::vector<float> mesh_uvs_, tangent_scratch_;
+  std::vector<std::array<int, 3>> mesh_triangles_;
+  Texture threads_;  // r: metal thread mask, g: weft on top
   double thread_fraction_ = -1.0;
   Texture weave_normals_;  // mode 6: the weave's tangent-space normal map
   double weave_bump_ = -1.0;

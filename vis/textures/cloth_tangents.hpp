@@ -2,6 +2,9 @@
 // current positions and normals (rendering.md section 3). Plain arrays, no solver dependency.
 #pragma once
 
+#include <array>
+#include <vector>
+
 namespace clothlab {
 
 // Grid cloth of nu x nv vertices, vertex (i, j) at index i + j * nu with UV
@@ -29,5 +32,15 @@ void compute_grid_tangents(int nu, int nv, const float* positions, const float* 
 // One row j of compute_grid_tangents (for callers that split rows between threads).
 void compute_grid_tangent_row(int nu, int nv, int j, const float* positions, const float* normals,
                               float* tangents, bool wrap_u = false);
+
+// A mesh cloth (sim/cloth/mesh_cloth.hpp): the same frame from its triangles and per-vertex
+// UVs (Lengyel's method: E. Lengyel, "Computing Tangent Space Basis Vectors for an Arbitrary
+// Mesh", 2001): each triangle's dP/du and dP/dv from its edges and UV differences, summed at its
+// vertices, then T and w as above (degenerate cases likewise). `triangles` index the global
+// arrays; only vertices first..last-1 are written; `scratch` holds 6 floats per vertex of
+// that range (resized here when too small).
+void compute_mesh_tangents(int first, int last, const std::vector<std::array<int, 3>>& triangles,
+                           const float* positions, const float* normals, const float* uvs,
+                           float* tangents, std::vector<float>& scratch);
 
 }  // namespace clothlab
