@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <stdexcept>
 
 #include "sim/solver.hpp"
@@ -48,6 +49,15 @@ struct FrameBlock {
 };
 constexpr GLint kDepthViewViewport = 0;  // explicit uniform location in shaders/depth_view.frag
 
+// Anisotropic filtering (8x) on a GPU. On Mesa's llvmpipe (the CPU rasteriser of CI and
+// headless renders) trilinear only: its anisotropic sampler can spend minutes on one frame (the
+// drop_sphere scene at 1280x720: 0.3 s frames, then one of 210 s with the time in the JIT-compiled
+// fragment code, and 0.29 s with anisotropy off), and on a CPU it is the dearest sampling anyway.
+float max_anisotropy() {
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return renderer && std::strstr(renderer, "llvmpipe") ? 1.0f : 8.0f;
+}
+
 Texture upload_texture(const Image& image) {
   Texture t = make_texture(GL_TEXTURE_2D);
   const int levels = 1 + static_cast<int>(std::log2(std::max(image.width, image.height)));
@@ -59,7 +69,7 @@ Texture upload_texture(const Image& image) {
   glTextureParameteri(t.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(t.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
   glTextureParameteri(t.get(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-  glTextureParameterf(t.get(), GL_TEXTURE_MAX_ANISOTROPY, 8.0f);
+  glTextureParameterf(t.get(), GL_TEXTURE_MAX_ANISOTROPY, max_anisotropy());
   return t;
 }
 
@@ -362,7 +372,7 @@ void Renderer::set_thread_fraction(double fraction) {
   glGenerateTextureMipmap(threads_.get());
   glTextureParameteri(threads_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTextureParameteri(threads_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameterf(threads_.get(), GL_TEXTURE_MAX_ANISOTROPY, 8.0f);
+  glTextureParameterf(threads_.get(), GL_TEXTURE_MAX_ANISOTROPY, max_anisotropy());
   glObjectLabel(GL_TEXTURE, threads_.get(), -1, "thread mask and direction");
   thread_fraction_ = fraction;
 }
@@ -391,7 +401,7 @@ void Renderer::upload_normal_map(const Image& map) {
   glGenerateTextureMipmap(weave_normals_.get());
   glTextureParameteri(weave_normals_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTextureParameteri(weave_normals_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameterf(weave_normals_.get(), GL_TEXTURE_MAX_ANISOTROPY, 8.0f);
+  glTextureParameterf(weave_normals_.get(), GL_TEXTURE_MAX_ANISOTROPY, max_anisotropy());
   glObjectLabel(GL_TEXTURE, weave_normals_.get(), -1, "weave normal map");
 }
 
@@ -424,6 +434,7 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
     hi = glm::max(hi, colliders_->hi());
   }
   light_ = fit_light(view, lo, hi, view.floor_height, view.shadow_map_size);
+
   const glm::vec3 centre = 0.5f * (lo + hi);  // the sun of the sky lies from here to the light
 
   FrameBlock frame;

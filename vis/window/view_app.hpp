@@ -110,6 +110,8 @@ class ViewApp {
   PanelState panel_;
   FrameStepper stepper_;
   FrameStats stats_;
+  FrameSample run_totals_;  // summed over the run from the second frame, printed on exit
+  long run_frames_ = 0;
   // Key actions of this frame, handled after ImGui's NewFrame has decided whether it wants the
   // keyboard (a text field being edited).
   std::vector<Action> pending_actions_;
