@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "sim/body/body_motion.hpp"
 #include "sim/solver_impl.hpp"
 #include "sim/stability/step_limit.hpp"
 
@@ -35,6 +36,21 @@ SolverSpec resolve_step(const Model<T>& m, SolverSpec spec) {
   return spec;
 }
 
+// Fast limbs (contact.md section 3): no surface of the dancing body may move more than half its
+// thinnest feature in one substep, or a vertex could be stepped over rather than pushed. The
+// fastest surface speed over the dance (sampled every 5 ms) sets the most a substep may be.
+SolverSpec limit_substep_for_body(const Scene& scene, SolverSpec spec) {
+  if (!scene.mannequin || !scene.mannequin->motion) return spec;
+  const BodyMotion& body = *scene.mannequin->motion;
+  const std::vector<double> keys = body.dance().keyframe_times();
+  const double end = std::min(keys.empty() ? 10.0 : keys.back() + 1.0, 600.0);
+  const double speed = body.max_surface_speed(0.0, end);
+  if (!(speed > 0.0)) return spec;
+  const double h_max = 0.5 * body.thinnest_feature() / speed;
+  if (spec.dt / spec.substeps > h_max) spec.substeps = static_cast<int>(std::ceil(spec.dt / h_max));
+  return spec;
+}
+
 template <class T>
 double initial_energy(const Model<T>& m) {
   std::vector<double> partials;
@@ -47,7 +63,7 @@ template <class T>
 SolverT<T>::SolverT(const Scene& scene, SpringKernel kernel)
     : model_(build_model<T>(scene, kernel)),
       state_(initial_state(model_)),
-      spec_(resolve_step(model_, scene.solver)),
+      spec_(limit_substep_for_body(scene, resolve_step(model_, scene.solver))),
       dt_(spec_.dt),
       substeps_(spec_.substeps),
       threads_(resolve_threads(scene.solver.threads)),

@@ -69,8 +69,8 @@ clothlab_bad_set(unknown_key "--set solver\\.dtt=0\\.1: solver\\.dtt: unknown ke
   --set solver.dtt=0.1)
 clothlab_bad_set(unknown_table "--set physics\\.dt=1: physics: unknown top-level key"
   --set physics.dt=1)
-clothlab_bad_set(not_supported "--set music\\.file=a\\.wav: music: is not supported yet"
-  --set music.file=a.wav)
+clothlab_bad_set(music_missing "--set music\\.file=no_such\\.wav: music\\.file: [^\n]*no_such\\.wav"
+  --set music.file=no_such.wav)
 clothlab_bad_set(unknown_integrator "solver\\.integrator: unknown integrator .rk5."
   --set solver.integrator=rk5)
 clothlab_bad_set(resolution_type "cloth\\.resolution: expected an array"

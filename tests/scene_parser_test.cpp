@@ -231,7 +231,13 @@ TEST(SceneParser, UnknownKeys) {
                "forces.wind.gusts", 10, "unknown key");
   expect_error(kMinimal + "[[colliders]]\ntype = \"sphere\"\nradiu = 1\n", "colliders[0].radiu", 11,
                "unknown key");
-  expect_error(kMinimal + "[music]\nfile = \"a.wav\"\n", "music", 9, "not supported yet");
+  expect_error(kMinimal + "[music]\nfil = \"a.wav\"\n", "music.fil", 10, "unknown key");
+  expect_error(kMinimal + "[music]\ntempo = 20\n", "music.tempo", 10, "between 40 and 240");
+  expect_error(kMinimal + "[mannequin]\nsettle = -1\n", "mannequin.settle", 10, "between 0 and 60");
+  expect_error("[cloth]\npins = [[0, 0]]\npins_follow = \"pelvis\"\n", "cloth.pins_follow", 3,
+               "no [mannequin]");
+  expect_error("[cloth]\npins = [[0, 0]]\npins_follow = \"tail\"\n[mannequin]\n",
+               "cloth.pins_follow", 3, "no mannequin part \"tail\" (parts: pelvis, chest");
   expect_error(kMinimal + "[render]\nshade = 3\n", "render.shade", 10, "unknown key");
   expect_error(kMinimal + "[render.light]\nkind = \"spot\"\n", "render.light.kind", 10,
                "unknown key");
@@ -490,7 +496,7 @@ TEST(SceneOverrides, ErrorsNameTheSetArgument) {
   EXPECT_EQ(error_of(file, {"solver.dtt=0.1"}).loc.file, "--set solver.dtt=0.1");
   expect_error(file, "physics", 0, "unknown top-level key", {"physics.dt=0.1"});
   EXPECT_EQ(error_of(file, {"physics.dt=0.1"}).loc.file, "--set physics.dt=0.1");
-  expect_error(file, "music", 0, "not supported yet", {"music.file=a.wav"});
+  expect_error(file, "music.file", 0, "no_such.wav", {"music.file=no_such.wav"});
   expect_error(file, "solver.integrator", 0, "unknown integrator", {"solver.integrator=rk5"});
   // A value error in the file is still reported at the file when another key is overridden.
   e = error_of(file + "threads = -3\n", {"solver.dt=0.01"});

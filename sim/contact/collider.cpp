@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/body/body_motion.hpp"
+
 namespace clothlab {
 namespace {
 
@@ -77,6 +79,14 @@ Collider::Collider(const ColliderSpec& spec) : spec_(spec) {
 
 ColliderPose Collider::pose(double t) const {
   ColliderPose p;
+  if (spec_.body) {  // a part of the dancing body: its frame is the shape's own
+    const RigidState s = spec_.body->state(spec_.body_part, t);
+    p.rotation = s.rotation.toRotationMatrix();
+    p.centre = s.position;
+    p.velocity = s.velocity;
+    p.angular_velocity = s.angular_velocity;
+    return p;
+  }
   const ColliderMotion& m = spec_.motion;
   if (m.keys.empty()) {
     // Constant velocities: the centre moves along v, the body turns about it at w (world axes).

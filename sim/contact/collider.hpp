@@ -50,7 +50,7 @@ class Collider {
 
   const ColliderSpec& spec() const { return spec_; }
   double thickness() const { return spec_.thickness; }
-  bool moving() const { return spec_.motion.moving(); }
+  bool moving() const { return spec_.moves(); }
 
   // Pose at time t (s): the built pose moved by the motion.
   ColliderPose pose(double t) const;

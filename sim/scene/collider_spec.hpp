@@ -12,6 +12,7 @@
 namespace clothlab {
 
 struct TriangleMesh;
+class BodyMotion;
 
 using Vec3d = std::array<double, 3>;
 
@@ -57,7 +58,13 @@ struct ColliderSpec {
   double kinetic_friction = 0.4;             // Coulomb: sliding loses mu_k dv_n
   double thickness = 0.005;                  // m: the cloth stays this far outside
   ColliderMotion motion;
-  std::string key;  // "colliders[2]", for messages
+  // A primitive of the dancing mannequin (sim/body/body_motion.hpp): its pose at a time is the
+  // body's part `body_part` (sphere, box or capsule sized as that part, in the part's frame;
+  // `motion` and the placement keys above are not used).
+  std::shared_ptr<const BodyMotion> body;
+  int body_part = -1;
+  std::string key;  // "colliders[2]", or "mannequin.pelvis", for messages
+  bool moves() const { return body || motion.moving(); }
 };
 
 extern const std::array<std::pair<ColliderKind, const char*>, 5> kColliderKindNames;

@@ -43,6 +43,7 @@ struct ClothSpec {
   // Index into [[colliders]]: the pins move with that collider (a waistband on a turning body),
   // keeping their place in its frame; absent: pins stay where they are.
   std::optional<int> pins_follow;
+  std::string pins_follow_name;  // as written, when a mannequin part was named (e.g. "pelvis")
   // Tube (a cylinder or frustum: skirt, sleeve): ring j is centred at origin + j * length /
   // (nv - 1) along v_axis, with radius from radius[0] (first ring) to radius[1] (last ring);
   // vertex i of a ring lies at angle 2 pi i / nu from u_axis, turning towards v_axis x u_axis.
@@ -128,6 +129,31 @@ struct TraceSpec {
   int every = 1;  // write every N steps, >= 1
 };
 
+struct MusicTrack;
+
+// [music]: what the mannequin dances to (issue 9). A sound file, or without one the project's own
+// drum track at `tempo`; decoded and analysed by the parser.
+struct MusicSpec {
+  std::string file;       // relative to the scene file; empty: the generated track
+  double tempo = 120.0;   // BPM of the generated track
+  double seconds = 40.0;  // its length
+  std::shared_ptr<const MusicTrack> track;
+};
+
+// [mannequin]: the dancing figure (sim/body/): its primitives become colliders named
+// "mannequin.<part>" after the scene's [[colliders]], so `pins_follow = "pelvis"` carries a
+// waistband with it. It dances to the [music]'s beats, or to a steady 120 BPM without music.
+struct MannequinSpec {
+  Vec3d position{0.0, 0.0, 0.0};  // where it stands (soles at position.y)
+  double facing = 0.0;            // degrees about +y; 0 faces +z
+  double settle = 1.5;            // s in the rest pose before the dance blends in
+  int blend_beats = 4;            // beats of the blend
+  double amplitude = 1.0;         // scales every pose's departure from rest
+  double static_friction = 0.8, kinetic_friction = 0.6;
+  double thickness = 0.006;  // m
+  std::shared_ptr<const BodyMotion> motion;
+};
+
 struct Scene {
   std::string file;  // path the scene was read from ("<string>" for in-memory text)
   std::vector<ClothSpec> cloths;
@@ -138,6 +164,8 @@ struct Scene {
   std::optional<TraceSpec> trace;       // absent: `clothlab trace` uses its documented default
   std::vector<ColliderSpec> colliders;  // [[colliders]]
   RenderSpec render;                    // [render]: how the scene is shown (vis/ only)
+  std::optional<MusicSpec> music;
+  std::optional<MannequinSpec> mannequin;
   // Source location of every value read, by key path ("solver.dt", "cloth[1].pins[2]").
   std::map<std::string, SourceLoc> locations;
 

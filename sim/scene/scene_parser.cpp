@@ -4,6 +4,8 @@
 // value came from; validate.cpp checks ranges. Errors are SceneError, never a crash.
 #include "sim/scene/scene_parser.hpp"
 
+#include "sim/audio/music_track.hpp"
+#include "sim/body/body_motion.hpp"
 #include "sim/mesh/triangle_mesh.hpp"
 #include "sim/scene/overrides.hpp"
 
@@ -68,9 +70,11 @@ std::string list_names(Names names) {
   return text;
 }
 
-constexpr std::string_view kTopKeys[] = {"cloth", "springs", "forces",   "solver",
-                                         "trace", "render",  "colliders"};
-constexpr std::string_view kPlannedTopKeys[] = {"music", "mannequin"};
+constexpr std::string_view kTopKeys[] = {"cloth",  "springs",   "forces", "solver",   "trace",
+                                         "render", "colliders", "music",  "mannequin"};
+constexpr std::string_view kMusicKeys[] = {"file", "tempo", "seconds"};
+constexpr std::string_view kMannequinKeys[] = {"position",  "facing",   "settle",   "blend_beats",
+                                               "amplitude", "friction", "thickness"};
 constexpr std::string_view kClothKeys[] = {
     "shape",   "size",       "resolution", "origin", "u_axis",      "v_axis", "mass",  "pins",
     "springs", "release_at", "radius",     "length", "pins_follow", "file",   "scale", "rotation"};
@@ -115,6 +119,9 @@ class Reader {
     if (const toml::node* node = root.get("trace")) scene_.trace = read_trace(*node);
     if (const toml::node* node = root.get("render")) read_render(*node);
     if (const toml::node* node = root.get("colliders")) read_colliders(*node);
+    if (const toml::node* node = root.get("music")) read_music(*node);
+    if (const toml::node* node = root.get("mannequin")) read_mannequin(*node);
+    resolve_follow_names();
   }
 
  private:
@@ -176,9 +183,6 @@ class Reader {
   void check_top_keys(const toml::table& root) const {
     for (const auto& [name, node] : root) {
       const std::string key(name.str());
-      if (contains(kPlannedTopKeys, key))
-        fail_key(key, name, node,
-                 "is not supported yet (planned for a later version of the scene format)");
       if (!contains(kTopKeys, key))
         fail_key(key, name, node, "unknown top-level key (valid: " + list_names(kTopKeys) + ")");
     }
@@ -309,8 +313,15 @@ class Reader {
       }
     });
     field(t, key, "length", [&](auto& n, auto& k) { cloth.length = number(n, k); });
-    field(t, key, "pins_follow",
-          [&](auto& n, auto& k) { cloth.pins_follow = small_integer(n, k); });
+    field(t, key, "pins_follow", [&](auto& n, auto& k) {
+      // A collider's index, or a mannequin part's name (resolved once the mannequin is read).
+      if (n.is_string()) {
+        cloth.pins_follow_name = text(n, k);
+        follow_nodes_[k] = &n;
+      } else {
+        cloth.pins_follow = small_integer(n, k);
+      }
+    });
     // A cloth's own springs start from the top-level [springs], so they need name only what
     // differs.
     field(t, key, "springs",
@@ -631,23 +642,154 @@ class Reader {
     field(t, key, "a", [&](auto& n, auto& k) { c.a = numbers<3>(n, k); });
     field(t, key, "b", [&](auto& n, auto& k) { c.b = numbers<3>(n, k); });
     field(t, key, "thickness", [&](auto& n, auto& k) { c.thickness = number(n, k); });
-    field(t, key, "friction", [&](auto& n, auto& k) {
-      // A number is both coefficients; a table names them.
-      if (n.is_table()) {
-        const toml::table& f = table(n, k);
-        check_keys(f, k, kFrictionKeys);
-        field(f, k, "static", [&](auto& m, auto& q) { c.static_friction = number(m, q); });
-        field(f, k, "kinetic", [&](auto& m, auto& q) { c.kinetic_friction = number(m, q); });
-      } else {
-        c.static_friction = c.kinetic_friction = number(n, k);
-      }
-    });
+    field(t, key, "friction",
+          [&](auto& n, auto& k) { read_friction(n, k, c.static_friction, c.kinetic_friction); });
     field(t, key, "motion", [&](auto& n, auto& k) { c.motion = read_motion(table(n, k), k); });
     field(t, key, "scale", [&](auto& n, auto& k) { c.scale = number(n, k); });
     field(t, key, "resolution", [&](auto& n, auto& k) { c.sdf_resolution = small_integer(n, k); });
     field(t, key, "file", [&](auto& n, auto& k) { c.file = text(n, k); });
     if (c.kind == ColliderKind::mesh) read_collider_mesh(t, key, c);
     return c;
+  }
+
+  // A number is both coefficients; a table names them.
+  void read_friction(const toml::node& n, const std::string& k, double& static_friction,
+                     double& kinetic_friction) {
+    if (n.is_table()) {
+      const toml::table& f = table(n, k);
+      check_keys(f, k, kFrictionKeys);
+      field(f, k, "static", [&](auto& m, auto& q) { static_friction = number(m, q); });
+      field(f, k, "kinetic", [&](auto& m, auto& q) { kinetic_friction = number(m, q); });
+    } else {
+      static_friction = kinetic_friction = number(n, k);
+    }
+  }
+
+  // [music]: the file is read and analysed now (or the drum track generated), so a missing or
+  // unreadable file is a scene error naming the key.
+  void read_music(const toml::node& node) {
+    const std::string key = "music";
+    note(key, node);
+    const toml::table& t = table(node, key);
+    check_keys(t, key, kMusicKeys);
+    MusicSpec m;
+    field(t, key, "file", [&](auto& n, auto& k) { m.file = text(n, k); });
+    field(t, key, "tempo", [&](auto& n, auto& k) {
+      m.tempo = number(n, k);
+      if (m.tempo < 40.0 || m.tempo > 240.0)
+        fail(k, n, "must be between 40 and 240 BPM (got " + format_number(m.tempo) + ")");
+    });
+    field(t, key, "seconds", [&](auto& n, auto& k) {
+      m.seconds = number(n, k);
+      if (m.seconds < 1.0 || m.seconds > 3600.0)
+        fail(k, n, "must be between 1 and 3600 s (got " + format_number(m.seconds) + ")");
+    });
+    if (m.file.empty()) {
+      m.track = std::make_shared<const MusicTrack>(generated_music(m.tempo, m.seconds));
+    } else {
+      std::filesystem::path path(m.file);
+      if (path.is_relative() && scene_.file != "<string>")
+        path = std::filesystem::path(scene_.file).parent_path() / path;
+      try {
+        m.track = std::make_shared<const MusicTrack>(load_music(path.string()));
+      } catch (const AudioError& e) {
+        fail(key + ".file", *t.get("file"), e.what());
+      }
+      if (m.track->analysis.beats.size() < 2)
+        fail(key + ".file", *t.get("file"), path.string() + ": no beat found in the music");
+    }
+    scene_.music = std::move(m);
+  }
+
+  // [mannequin]: the dance is built now (on the music's beats, or a steady 120 BPM) and each of
+  // the figure's primitives appended to the colliders as "mannequin.<part>".
+  void read_mannequin(const toml::node& node) {
+    const std::string key = "mannequin";
+    note(key, node);
+    const toml::table& t = table(node, key);
+    check_keys(t, key, kMannequinKeys);
+    MannequinSpec m;
+    field(t, key, "position", [&](auto& n, auto& k) { m.position = numbers<3>(n, k); });
+    field(t, key, "facing", [&](auto& n, auto& k) { m.facing = number(n, k); });
+    field(t, key, "settle", [&](auto& n, auto& k) {
+      m.settle = number(n, k);
+      if (m.settle < 0.0 || m.settle > 60.0)
+        fail(k, n, "must be between 0 and 60 s (got " + format_number(m.settle) + ")");
+    });
+    field(t, key, "blend_beats", [&](auto& n, auto& k) {
+      m.blend_beats = small_integer(n, k);
+      if (m.blend_beats < 1 || m.blend_beats > 64)
+        fail(k, n, "must be between 1 and 64 (got " + std::to_string(m.blend_beats) + ")");
+    });
+    field(t, key, "amplitude", [&](auto& n, auto& k) {
+      m.amplitude = number(n, k);
+      if (m.amplitude < 0.0 || m.amplitude > 1.5)
+        fail(k, n, "must be between 0 and 1.5 (got " + format_number(m.amplitude) + ")");
+    });
+    field(t, key, "friction",
+          [&](auto& n, auto& k) { read_friction(n, k, m.static_friction, m.kinetic_friction); });
+    field(t, key, "thickness", [&](auto& n, auto& k) { m.thickness = number(n, k); });
+
+    DanceSpec dance;
+    dance.settle_seconds = m.settle;
+    dance.blend_beats = m.blend_beats;
+    dance.amplitude = m.amplitude;
+    std::vector<double> beats = constant_tempo_beats(120.0, 3600.0), amplitude;
+    if (scene_.music) {
+      beats = scene_.music->track->analysis.beats;
+      amplitude = beat_amplitudes(scene_.music->track->analysis);
+    }
+    try {
+      m.motion = std::make_shared<const BodyMotion>(
+          Dance(make_mannequin(), dance, std::move(beats), std::move(amplitude)),
+          Eigen::Vector3d(m.position[0], m.position[1], m.position[2]), m.facing);
+    } catch (const std::invalid_argument& e) {
+      fail(key, node, e.what());
+    }
+    const auto& parts = m.motion->dance().primitives();
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      const BodyPrimitive& p = parts[i];
+      ColliderSpec c;
+      c.kind = p.shape == BodyShape::sphere ? ColliderKind::sphere
+               : p.shape == BodyShape::box  ? ColliderKind::box
+                                            : ColliderKind::capsule;
+      c.radius = p.shape == BodyShape::box ? 0.1 : p.radius;
+      for (int a = 0; a < 3; ++a)
+        c.half_extents[a] = p.shape == BodyShape::box ? p.half_extents[a] : 0.1;
+      c.a = {0.0, -p.half_length, 0.0};
+      c.b = {0.0, p.half_length, 0.0};
+      c.static_friction = m.static_friction;
+      c.kinetic_friction = m.kinetic_friction;
+      c.thickness = m.thickness;
+      c.body = m.motion;
+      c.body_part = static_cast<int>(i);
+      c.key = key + "." + p.name;
+      scene_.colliders.push_back(std::move(c));
+    }
+    scene_.mannequin = std::move(m);
+  }
+
+  // pins_follow = "pelvis": the mannequin part's collider, once the mannequin has been read.
+  void resolve_follow_names() {
+    for (ClothSpec& cloth : scene_.cloths) {
+      if (cloth.pins_follow_name.empty()) continue;
+      const std::string k = cloth.key + ".pins_follow";
+      const toml::node& n = *follow_nodes_.at(k);
+      if (!scene_.mannequin)
+        fail(k, n,
+             "names a mannequin part (\"" + cloth.pins_follow_name +
+                 "\"), but the scene has no [mannequin]");
+      std::string parts;
+      for (std::size_t c = 0; c < scene_.colliders.size(); ++c) {
+        const ColliderSpec& spec = scene_.colliders[c];
+        if (!spec.body) continue;
+        const std::string part = spec.key.substr(std::string("mannequin.").size());
+        if (part == cloth.pins_follow_name) cloth.pins_follow = static_cast<int>(c);
+        parts += (parts.empty() ? "" : ", ") + part;
+      }
+      if (!cloth.pins_follow)
+        fail(k, n, "no mannequin part \"" + cloth.pins_follow_name + "\" (parts: " + parts + ")");
+    }
   }
 
   void read_collider_mesh(const toml::table& t, const std::string& key, ColliderSpec& c) {
@@ -702,6 +844,7 @@ class Reader {
 
   const OverrideOrigins& origins_;
   Scene& scene_;
+  std::map<std::string, const toml::node*> follow_nodes_;  // pins_follow names, for messages
 };
 
 }  // namespace

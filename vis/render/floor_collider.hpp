@@ -17,7 +17,7 @@ namespace clothlab::vis {
 inline std::optional<std::size_t> floor_collider(const std::vector<ColliderSpec>& colliders) {
   for (std::size_t i = 0; i < colliders.size(); ++i) {
     const ColliderSpec& c = colliders[i];
-    if (c.kind != ColliderKind::plane || c.motion.moving()) continue;
+    if (c.kind != ColliderKind::plane || c.moves()) continue;
     const Vec3d& n = c.normal;
     const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     if (len > 0.0 && n[1] / len > 1.0 - 1e-12) return i;
