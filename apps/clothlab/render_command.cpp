@@ -10,6 +10,7 @@
 #include "apps/clothlab/commands.hpp"
 #include "apps/clothlab/progress_bar.hpp"
 #include "apps/clothlab/video_pipe.hpp"
+#include "sim/audio/music_track.hpp"
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
 #include "vis/gl/gl_error.hpp"
@@ -129,9 +130,15 @@ int run_render(const RenderArgs& args) {
     vis::ViewSettings view = vis::scene_view(scene, *solver);
     if (args.mode != 0) view.mode = static_cast<vis::DisplayMode>(args.mode);
     apply_view_options(args, view);
+    // The scene's music goes into the video from frame 0, cut to the frames' length.
+    const MusicTrack* music = scene.music && scene.music->track && !args.video.empty()
+                                  ? scene.music->track.get()
+                                  : nullptr;
     std::unique_ptr<VideoPipe> video;
     if (!args.video.empty())
-      video = std::make_unique<VideoPipe>(args.video, args.width, args.height, args.fps);
+      video = std::make_unique<VideoPipe>(
+          args.video, args.width, args.height, args.fps,
+          VideoMusic{music ? &music->clip : nullptr, args.frames / args.fps});
 
     ProgressBar progress(args.frames, !args.quiet);
     double simulate = 0.0, draw = 0.0, output = 0.0;
@@ -164,11 +171,12 @@ int run_render(const RenderArgs& args) {
     const double frames = args.frames;
     std::printf(
         "render: %d frames of %dx%d (mode %d) on %s: %.2f ms/frame simulation (%.1f steps of "
-        "%g s), %.2f ms/frame rendering, %.2f ms/frame writing; %s%s%s\n",
+        "%g s), %.2f ms/frame rendering, %.2f ms/frame writing; %s%s%s%s%s\n",
         args.frames, args.width, args.height, static_cast<int>(view.mode),
         renderer.gl_renderer().c_str(), 1e3 * simulate / frames,
         frames > 1 ? double(steps) / (frames - 1) : 0.0, solver->dt(), 1e3 * draw / frames,
-        1e3 * output / frames, args.out.c_str(), video ? " and " : "", args.video.c_str());
+        1e3 * output / frames, args.out.c_str(), video ? " and " : "", args.video.c_str(),
+        music ? " with music: " : "", music ? music->source.c_str() : "");
     print_views(renderer.diagnostics(), view);
     return 0;
   } catch (const vis::GlUnavailable& e) {

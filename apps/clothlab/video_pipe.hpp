@@ -1,4 +1,5 @@
-// Frames into an MP4 through Debian's ffmpeg (H.264, yuv420p): raw RGBA frames go down a pipe.
+// Frames into an MP4 through Debian's ffmpeg (H.264, yuv420p): raw RGBA frames go down a pipe,
+// with the scene's music, where it has one, muxed in as AAC.
 // The video is written to a temporary file and renamed when ffmpeg succeeds: complete or absent.
 #pragma once
 
@@ -7,12 +8,23 @@
 #include <string>
 #include <vector>
 
+#include "sim/audio/audio_clip.hpp"
+
 namespace clothlab::app {
+
+// The sound under the frames: the clip's sample at time t plays with the frame shown at t (frame
+// n at n / fps), cut to `seconds` or padded with silence where the clip is shorter.
+struct VideoMusic {
+  const AudioClip* clip = nullptr;  // none: a video without an audio stream
+  double seconds = 0.0;             // the video's length, frames / fps
+};
 
 class VideoPipe {
  public:
-  // Throws std::runtime_error when ffmpeg cannot be started.
-  VideoPipe(const std::string& path, int width, int height, double fps);
+  // Throws std::runtime_error when ffmpeg cannot be started or the music cannot be written
+  // (it goes to ffmpeg as a temporary WAV beside `path`, removed when the pipe closes).
+  VideoPipe(const std::string& path, int width, int height, double fps,
+            const VideoMusic& music = {});
   ~VideoPipe();
   VideoPipe(const VideoPipe&) = delete;
   VideoPipe& operator=(const VideoPipe&) = delete;
@@ -22,7 +34,14 @@ class VideoPipe {
   void finish();
 
  private:
+  // Removes its file when destroyed, so the WAV goes even when the constructor throws later.
+  struct TempFile {
+    std::string path;
+    ~TempFile();
+  };
+
   std::string path_, temp_;
+  TempFile music_wav_;
   std::FILE* pipe_ = nullptr;
   std::size_t frame_bytes_;
 };

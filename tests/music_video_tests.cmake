@@ -1,0 +1,34 @@
+# `clothlab render --video` with a scene's [music]: the MP4 carries the music as AAC from frame 0,
+# cut to the video's length; a scene without music gives a video stream alone. Each render is a
+# fixture whose file check_video.cmake then probes with ffprobe. Included from
+# tests/CMakeLists.txt after cli_tests.cmake (clothlab_cli_test).
+find_program(FFMPEG ffmpeg)
+find_program(FFPROBE ffprobe)
+if(NOT FFMPEG OR NOT FFPROBE)
+  message(STATUS "ffmpeg or ffprobe not found: the music video tests are skipped")
+  return()
+endif()
+
+set(CLOTHLAB_VIDEO_OUT ${CMAKE_CURRENT_BINARY_DIR}/music_video)
+file(MAKE_DIRECTORY ${CLOTHLAB_VIDEO_OUT})
+
+# clothlab_video_test(NAME SCENE AUDIO REGEX): renders 30 frames of SCENE at 30 fps into
+# NAME_test.mp4 (summary matching REGEX), then checks 1 s of video and, with AUDIO=ON, as much
+# audio.
+function(clothlab_video_test name scene audio regex)
+  set(video ${CMAKE_CURRENT_BINARY_DIR}/${name}_test.mp4)
+  clothlab_cli_test(render.video_${name} 0 "${regex}"
+    render ${scene} --frames 30 --fps 30 --size 160x120 --quiet
+    --out ${CLOTHLAB_VIDEO_OUT}/${name} --video ${video})
+  add_test(NAME cli.render.video_${name}_streams
+    COMMAND ${CMAKE_COMMAND} -DFFPROBE=${FFPROBE} -DFILE=${video} -DDURATION=1 -DFPS=30
+      -DAUDIO=${audio} -P ${CMAKE_CURRENT_LIST_DIR}/check_video.cmake)
+  set_tests_properties(cli.render.video_${name} PROPERTIES FIXTURES_SETUP video_${name}
+    LABELS video)
+  set_tests_properties(cli.render.video_${name}_streams PROPERTIES TIMEOUT 30
+    FIXTURES_REQUIRED video_${name} LABELS video)
+endfunction()
+
+clothlab_video_test(dance ${PROJECT_SOURCE_DIR}/scenes/dance.toml ON
+  "dance_test\\.mp4 with music: generated drum track")
+clothlab_video_test(silent ${CLOTHLAB_DEFAULT_SCENE} OFF "and [^ ]*silent_test\\.mp4")
