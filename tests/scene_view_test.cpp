@@ -1,9 +1,10 @@
 // What a scene file says about the view (vis/render/view_settings.cpp, scene_view): the ground
 // plane collider is the floor, the view frames the colliders, and [render.camera] overrides the
-// framing key by key.
+// framing key by key. Mesh colliders are framed by their OBJ's box.
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <string>
 
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
@@ -33,6 +34,19 @@ TEST(SceneView, FloorAndFramingComeFromTheColliders) {
   EXPECT_FLOAT_EQ(v.floor_height, 0.3f);
   EXPECT_GT(v.camera.target.x, plain.camera.target.x + 0.5f) << "the sphere at x = 3 is framed";
   EXPECT_GT(v.camera.distance, plain.camera.distance);
+}
+
+// A mesh collider is framed by its OBJ's box, as an analytic one is (the shipped chair placed
+// 3 m off along x draws the view's target that way).
+TEST(SceneView, MeshCollidersAreFramedToo) {
+  const std::string mesh =
+      std::string("[cloth]\nresolution = [8, 8]\n\n[[colliders]]\ntype = \"mesh\"\nfile = \"") +
+      CLOTHLAB_SOURCE_DIR + "/assets/meshes/chair.obj\"\ncenter = [3, 0, 0]\n";
+  const Scene scene = parse_scene_string(mesh, "t.toml");
+  const std::unique_ptr<Solver> solver = make_solver(scene);
+  const vis::ViewSettings plain = vis::default_view(*solver);
+  const vis::ViewSettings v = vis::scene_view(scene, *solver);
+  EXPECT_GT(v.camera.target.x, plain.camera.target.x + 0.5f) << "the chair at x = 3 is framed";
 }
 
 TEST(SceneView, SceneCameraOverridesTheFraming) {

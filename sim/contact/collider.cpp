@@ -43,12 +43,12 @@ Eigen::Quaterniond rotation_from_degrees(const Vec3d& degrees) {
 }
 
 Collider pose_only_collider(const ColliderSpec& spec) {
-  ColliderSpec posed = spec;
-  posed.mesh.reset();
-  return Collider(posed);
+  Collider c(spec, false);
+  c.spec_.mesh.reset();
+  return c;
 }
 
-Collider::Collider(const ColliderSpec& spec) : spec_(spec) {
+Collider::Collider(const ColliderSpec& spec, bool build_grid) : spec_(spec) {
   switch (spec.kind) {
     case ColliderKind::plane:
       centre0_ = vec(spec.point);
@@ -65,7 +65,15 @@ Collider::Collider(const ColliderSpec& spec) : spec_(spec) {
       // The OBJ's own coordinates are the local frame, placed at `center` with `rotation`.
       centre0_ = vec(spec.center);
       rotation0_ = rotation_from_degrees(spec.rotation);
-      if (spec.mesh) sdf_ = std::make_shared<const SdfGrid>(*spec.mesh, spec.sdf_resolution);
+      if (spec.mesh && build_grid)
+        sdf_ = std::make_shared<const SdfGrid>(*spec.mesh, spec.sdf_resolution);
+      if (spec.mesh && !spec.mesh->positions.empty()) {
+        mesh_lo_ = mesh_hi_ = spec.mesh->positions.front();
+        for (const Eigen::Vector3d& p : spec.mesh->positions) {
+          mesh_lo_ = mesh_lo_.cwiseMin(p);
+          mesh_hi_ = mesh_hi_.cwiseMax(p);
+        }
+      }
       break;
     case ColliderKind::capsule: {
       const Eigen::Vector3d a = vec(spec.a), b = vec(spec.b);
@@ -204,11 +212,13 @@ Bounds Collider::bounds(const ColliderPose& pose, double margin) const {
       extent = (pose.rotation.col(1) * half_length_).cwiseAbs().array() + spec_.radius;
       break;
     case ColliderKind::mesh: {
-      if (!sdf_)
+      if (!sdf_ && mesh_lo_ == mesh_hi_)
         return Bounds{Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Constant(-INFINITY)};
-      // The grid's box (the mesh plus its margin), turned: its corners' extent about the centre.
-      const Eigen::Vector3d mid = 0.5 * (sdf_->lo() + sdf_->hi()),
-                            half = 0.5 * (sdf_->hi() - sdf_->lo());
+      // The grid's box (the mesh plus its margin; for a collider kept for its poses alone, the
+      // mesh's box), turned: its corners' extent about the centre.
+      const Eigen::Vector3d box_lo = sdf_ ? sdf_->lo() : mesh_lo_,
+                            box_hi = sdf_ ? sdf_->hi() : mesh_hi_;
+      const Eigen::Vector3d mid = 0.5 * (box_lo + box_hi), half = 0.5 * (box_hi - box_lo);
       extent = pose.rotation.cwiseAbs() * half;
       b.lo = pose.to_world(mid) - extent - Eigen::Vector3d::Constant(margin);
       b.hi = pose.to_world(mid) + extent + Eigen::Vector3d::Constant(margin);

@@ -46,7 +46,7 @@ struct Bounds {
 
 class Collider {
  public:
-  explicit Collider(const ColliderSpec& spec);
+  explicit Collider(const ColliderSpec& spec) : Collider(spec, true) {}
 
   const ColliderSpec& spec() const { return spec_; }
   double thickness() const { return spec_.thickness; }
@@ -64,6 +64,10 @@ class Collider {
   bool reaches(const Bounds& box, const ColliderPose& pose, double margin) const;
 
  private:
+  friend Collider pose_only_collider(const ColliderSpec& spec);
+  // build_grid = false: a mesh collider keeps only its box (pose_only_collider).
+  Collider(const ColliderSpec& spec, bool build_grid);
+
   ColliderSpec spec_;
   // The built frame: plane: point and the rotation taking +y to the normal; sphere and box:
   // centre and rotation; capsule: the midpoint of a-b and the rotation taking +y to b - a.
@@ -71,6 +75,7 @@ class Collider {
   Eigen::Vector3d centre0_ = Eigen::Vector3d::Zero();
   double half_length_ = 0.0;            // capsule: half of |b - a|
   std::shared_ptr<const SdfGrid> sdf_;  // mesh: its signed distance, shared by copies
+  Eigen::Vector3d mesh_lo_ = Eigen::Vector3d::Zero(), mesh_hi_ = Eigen::Vector3d::Zero();  // mesh
 };
 
 // A collider for its poses alone (drawing, framing, moving pins): a mesh collider's distance grid
