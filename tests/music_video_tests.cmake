@@ -32,3 +32,18 @@ endfunction()
 clothlab_video_test(dance ${PROJECT_SOURCE_DIR}/scenes/dance.toml ON
   "dance_test\\.mp4 with music: generated drum track")
 clothlab_video_test(silent ${CLOTHLAB_DEFAULT_SCENE} OFF "and [^ ]*silent_test\\.mp4")
+
+# --music-out: the scene's generated 40 s drum track as 16-bit mono WAV at 44.1 kHz (44-byte
+# header + 40 * 44100 * 2 bytes), and a scene without music is refused.
+set(CLOTHLAB_MUSIC_WAV ${CLOTHLAB_VIDEO_OUT}/dance_music.wav)
+clothlab_cli_test(render.music_out 0 "render: 1 frames"
+  render ${PROJECT_SOURCE_DIR}/scenes/dance.toml --frames 1 --size 64x48 --quiet
+  --out ${CLOTHLAB_VIDEO_OUT}/music_out --music-out ${CLOTHLAB_MUSIC_WAV})
+add_test(NAME cli.render.music_out_size
+  COMMAND ${CMAKE_COMMAND} -DFILE=${CLOTHLAB_MUSIC_WAV} -DBYTES=3528044
+    -P ${CMAKE_CURRENT_LIST_DIR}/check_size.cmake)
+set_tests_properties(cli.render.music_out PROPERTIES FIXTURES_SETUP music_out LABELS video)
+set_tests_properties(cli.render.music_out_size PROPERTIES FIXTURES_REQUIRED music_out LABELS video)
+clothlab_cli_test(render.music_out_without_music 1 "--music-out: the scene has no \\[music\\]"
+  render ${CLOTHLAB_DEFAULT_SCENE} --frames 1 --size 64x48 --quiet
+  --out ${CLOTHLAB_VIDEO_OUT}/no_music --music-out ${CLOTHLAB_VIDEO_OUT}/none.wav)

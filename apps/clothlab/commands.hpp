@@ -29,10 +29,11 @@ struct RenderArgs {
   int frames = 60;
   int mode = 0;  // display mode (keys 1-3, 7); 0: the scene's render.mode
   int width = 1280, height = 720;
-  double fps = 60.0;   // simulated time per frame = 1 / fps
-  std::string out;     // directory for frame_00000.png, ...
-  std::string video;   // optional MP4 through ffmpeg
-  bool quiet = false;  // no progress bar
+  double fps = 60.0;      // simulated time per frame = 1 / fps
+  std::string out;        // directory for frame_00000.png, ...
+  std::string video;      // optional MP4 through ffmpeg
+  std::string music_out;  // optional: the scene's music as a WAV file
+  bool quiet = false;     // no progress bar
   // --probe PX,PY: after the last frame, one JSON line with `field` under that pixel (row 0 at
   // the top); the force field is computed only then.
   std::optional<std::array<int, 2>> probe;

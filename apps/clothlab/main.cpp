@@ -90,6 +90,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1.0, 10000.0));
   render_cmd->add_option("--out", render.out, "directory for the numbered PNGs")->required();
   render_cmd->add_option("--video", render.video, "also write an MP4 (Debian's ffmpeg)");
+  render_cmd->add_option("--music-out", render.music_out,
+                         "also write the scene's [music] (e.g. its generated drum track) as WAV");
   render_cmd->add_flag("--quiet", render.quiet, "no progress bar");
   std::string probe;
   auto* probe_opt = render_cmd->add_option(

@@ -130,6 +130,11 @@ int run_render(const RenderArgs& args) {
     vis::ViewSettings view = vis::scene_view(scene, *solver);
     if (args.mode != 0) view.mode = static_cast<vis::DisplayMode>(args.mode);
     apply_view_options(args, view);
+    if (!args.music_out.empty()) {
+      if (!scene.music || !scene.music->track)
+        throw std::runtime_error("--music-out: the scene has no [music]");
+      write_wav(args.music_out, scene.music->track->clip);
+    }
     // The scene's music goes into the video from frame 0, cut to the frames' length.
     const MusicTrack* music = scene.music && scene.music->track && !args.video.empty()
                                   ? scene.music->track.get()
