@@ -100,6 +100,16 @@ class ColliderRenderTest : public ::testing::Test {
     }
     return shot;
   }
+  // A white directional light travelling along the view direction, no ambient: a surface facing
+  // the camera is lit head-on (brighter than any floor tile, which the light grazes).
+  static vis::ViewSettings head_on(vis::ViewSettings v) {
+    v.light_type = LightType::directional;
+    v.light_direction = glm::normalize(v.camera.target - v.camera.eye());
+    v.light_intensity = 1.0f;
+    v.light_color = {1.0f, 1.0f, 1.0f};
+    v.ambient = 0.0f;
+    return v;
+  }
   static glm::vec2 pixel(const vis::ViewSettings& v, glm::vec3 p) {
     return testing::screen_position(v.camera, kW, kH, p);
   }
@@ -121,12 +131,7 @@ TEST_F(ColliderRenderTest, SphereAndRotatedBoxAppearWhereTheyAre) {
   box.rotation = {0.0, 90.0, 0.0};  // its long side now along z
   const Scene scene = side_cloth({sphere({-0.5, 0.4, 0.0}, 0.3), box});
   auto solver = make_solver(scene);
-  vis::ViewSettings v = view(*solver);
-  v.light_type = LightType::directional;
-  v.light_direction = glm::normalize(v.camera.target - v.camera.eye());
-  v.light_intensity = 1.0f;
-  v.light_color = {1.0f, 1.0f, 1.0f};
-  v.ambient = 0.0f;
+  const vis::ViewSettings v = head_on(view(*solver));
   const Shot with = shoot(*solver, scene.colliders, v), without = shoot(*solver, {}, v);
 
   const glm::vec2 centre = pixel(v, {-0.5f, 0.4f, 0.0f});
@@ -268,12 +273,7 @@ TEST_F(ColliderRenderTest, ObjSceneryIsDrawnTurnedAndCastsShadows) {
 
   const Scene scene = side_cloth();
   auto solver = make_solver(scene);
-  vis::ViewSettings v = view(*solver);
-  v.light_type = LightType::directional;
-  v.light_direction = glm::normalize(v.camera.target - v.camera.eye());
-  v.light_intensity = 1.0f;
-  v.light_color = {1.0f, 1.0f, 1.0f};
-  v.ambient = 0.0f;
+  vis::ViewSettings v = head_on(view(*solver));
   const Shot with = shoot(*solver, {}, v, spec), without = shoot(*solver, {}, v);
   // As the box collider: the front face (z = 0.45) lit head-on, the side face (x = 0.5) edge-on
   // and black, the unrotated box's end showing floor.

@@ -602,11 +602,8 @@ class Reader {
                         double scale) {
     if (!(scale > 0.0))
       fail(key + ".scale", *t.get("scale"), "must be > 0 (got " + format_number(scale) + ")");
-    std::filesystem::path path(file);
-    if (path.is_relative() && scene_.file != "<string>")
-      path = std::filesystem::path(scene_.file).parent_path() / path;
     try {
-      return load_obj(path.string(), scale);
+      return load_obj(scene_relative(file), scale);
     } catch (const ObjError& e) {
       fail(key + ".file", *t.get("file"), e.what());
     }
@@ -652,6 +649,25 @@ class Reader {
     return c;
   }
 
+  // A number that must lie in [lo, hi]; `unit` follows the bounds in the message (" s", " BPM").
+  double number_within(const toml::node& n, const std::string& k, double lo, double hi,
+                       const std::string& unit = "") const {
+    const double value = number(n, k);
+    if (value < lo || value > hi)
+      fail(k, n,
+           "must be between " + format_number(lo) + " and " + format_number(hi) + unit + " (got " +
+               format_number(value) + ")");
+    return value;
+  }
+
+  // A file named in the scene: relative paths are relative to the scene file's folder.
+  std::string scene_relative(const std::string& file) const {
+    std::filesystem::path path(file);
+    if (path.is_relative() && scene_.file != "<string>")
+      path = std::filesystem::path(scene_.file).parent_path() / path;
+    return path.string();
+  }
+
   // A number is both coefficients; a table names them.
   void read_friction(const toml::node& n, const std::string& k, double& static_friction,
                      double& kinetic_friction) {
@@ -674,29 +690,21 @@ class Reader {
     check_keys(t, key, kMusicKeys);
     MusicSpec m;
     field(t, key, "file", [&](auto& n, auto& k) { m.file = text(n, k); });
-    field(t, key, "tempo", [&](auto& n, auto& k) {
-      m.tempo = number(n, k);
-      if (m.tempo < 40.0 || m.tempo > 240.0)
-        fail(k, n, "must be between 40 and 240 BPM (got " + format_number(m.tempo) + ")");
-    });
-    field(t, key, "seconds", [&](auto& n, auto& k) {
-      m.seconds = number(n, k);
-      if (m.seconds < 1.0 || m.seconds > 3600.0)
-        fail(k, n, "must be between 1 and 3600 s (got " + format_number(m.seconds) + ")");
-    });
+    field(t, key, "tempo",
+          [&](auto& n, auto& k) { m.tempo = number_within(n, k, 40.0, 240.0, " BPM"); });
+    field(t, key, "seconds",
+          [&](auto& n, auto& k) { m.seconds = number_within(n, k, 1.0, 3600.0, " s"); });
     if (m.file.empty()) {
       m.track = std::make_shared<const MusicTrack>(generated_music(m.tempo, m.seconds));
     } else {
-      std::filesystem::path path(m.file);
-      if (path.is_relative() && scene_.file != "<string>")
-        path = std::filesystem::path(scene_.file).parent_path() / path;
+      const std::string path = scene_relative(m.file);
       try {
-        m.track = std::make_shared<const MusicTrack>(load_music(path.string()));
+        m.track = std::make_shared<const MusicTrack>(load_music(path));
       } catch (const AudioError& e) {
         fail(key + ".file", *t.get("file"), e.what());
       }
       if (m.track->analysis.beats.size() < 2)
-        fail(key + ".file", *t.get("file"), path.string() + ": no beat found in the music");
+        fail(key + ".file", *t.get("file"), path + ": no beat found in the music");
     }
     scene_.music = std::move(m);
   }
@@ -711,21 +719,15 @@ class Reader {
     MannequinSpec m;
     field(t, key, "position", [&](auto& n, auto& k) { m.position = numbers<3>(n, k); });
     field(t, key, "facing", [&](auto& n, auto& k) { m.facing = number(n, k); });
-    field(t, key, "settle", [&](auto& n, auto& k) {
-      m.settle = number(n, k);
-      if (m.settle < 0.0 || m.settle > 60.0)
-        fail(k, n, "must be between 0 and 60 s (got " + format_number(m.settle) + ")");
-    });
+    field(t, key, "settle",
+          [&](auto& n, auto& k) { m.settle = number_within(n, k, 0.0, 60.0, " s"); });
     field(t, key, "blend_beats", [&](auto& n, auto& k) {
       m.blend_beats = small_integer(n, k);
       if (m.blend_beats < 1 || m.blend_beats > 64)
         fail(k, n, "must be between 1 and 64 (got " + std::to_string(m.blend_beats) + ")");
     });
-    field(t, key, "amplitude", [&](auto& n, auto& k) {
-      m.amplitude = number(n, k);
-      if (m.amplitude < 0.0 || m.amplitude > 1.5)
-        fail(k, n, "must be between 0 and 1.5 (got " + format_number(m.amplitude) + ")");
-    });
+    field(t, key, "amplitude",
+          [&](auto& n, auto& k) { m.amplitude = number_within(n, k, 0.0, 1.5); });
     field(t, key, "friction",
           [&](auto& n, auto& k) { read_friction(n, k, m.static_friction, m.kinetic_friction); });
     field(t, key, "thickness", [&](auto& n, auto& k) { m.thickness = number(n, k); });
