@@ -14,8 +14,7 @@ namespace {
 std::string al_error_text(const char* call, ALenum error) {
   char code[16];
   std::snprintf(code, sizeof code, "0x%04x", static_cast<unsigned>(error));
-  return std::string("audio: OpenAL error ") + code + " in " + call +
-         "; running on the simulation clock";
+  return std::string("audio: OpenAL error ") + code + " in " + call;
 }
 
 // Full scale maps to +-32767, as libsndfile writes 16-bit PCM; clipped, not wrapped.
@@ -30,27 +29,23 @@ std::vector<std::int16_t> to_pcm16(const std::vector<float>& samples) {
 
 std::optional<AudioPlayback> AudioPlayback::open(const AudioClip& clip, std::string& message) {
   if (clip.samples.empty() || clip.sample_rate <= 0) {
-    message = "audio: the clip is empty; running on the simulation clock";
+    message = "audio: the clip is empty";
     return std::nullopt;
   }
   const std::size_t bytes = clip.samples.size() * sizeof(std::int16_t);
   if (bytes > static_cast<std::size_t>(std::numeric_limits<ALsizei>::max())) {
-    message = "audio: the clip is too long for one OpenAL buffer; running on the simulation clock";
+    message = "audio: the clip is too long for one OpenAL buffer";
     return std::nullopt;
   }
   AudioPlayback p;  // released by its destructor on every early return
   p.device_ = alcOpenDevice(nullptr);
   if (!p.device_) {
-    message =
-        "audio: no output device (OpenAL could not open the default device); running on "
-        "the simulation clock";
+    message = "audio: no output device (OpenAL could not open the default device)";
     return std::nullopt;
   }
   p.context_ = alcCreateContext(p.device_, nullptr);
   if (!p.context_ || alcMakeContextCurrent(p.context_) != ALC_TRUE) {
-    message =
-        "audio: OpenAL could not create a context on the default device; running on the "
-        "simulation clock";
+    message = "audio: OpenAL could not create a context on the default device";
     return std::nullopt;
   }
   alGetError();  // clear any stale error before our own calls

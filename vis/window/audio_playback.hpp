@@ -17,9 +17,9 @@ namespace clothlab::vis {
 class AudioPlayback {
  public:
   // Opens the default device, makes a context current and uploads the clip as 16-bit mono.
-  // On any failure releases what was made, writes a one-line reason to `message` (for the caller
-  // to print) and returns nothing. Makes its context the process's current OpenAL context (an
-  // OpenAL rule), so keep one playback at a time.
+  // On any failure releases what was made, writes a one-line reason to `message` (what failed;
+  // the caller prints it with what it does instead) and returns nothing. Makes its context the
+  // process's current OpenAL context (an OpenAL rule), so keep one playback at a time.
   static std::optional<AudioPlayback> open(const AudioClip& clip, std::string& message);
 
   AudioPlayback(AudioPlayback&& other) noexcept;

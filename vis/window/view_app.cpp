@@ -73,6 +73,8 @@ ViewHooks ViewHooks::from_environment() {
       hooks.open_scene = text.substr(colon + 1);
     }
   }
+  if (const char* off = std::getenv("CLOTHLAB_VIEW_NO_AUDIO"))
+    hooks.no_audio = std::string(off) == "1";
   if (const char* drag = std::getenv("CLOTHLAB_VIEW_DRAG")) {
     const std::vector<std::string> v = split_commas(drag);
     if (v.size() == 6) {
@@ -87,6 +89,7 @@ ViewHooks ViewHooks::from_environment() {
 ViewApp::ViewApp(Scene scene, ViewHooks hooks)
     : session_(std::move(scene)),
       hooks_(std::move(hooks)),
+      music_(hooks_.no_audio),
       scene_name_(std::filesystem::path(session_.scene().file).filename().string()),
       window_("ClothLab — " + scene_name_, kInitialWidth, kInitialHeight),
       renderer_(std::make_unique<Renderer>()),
@@ -96,6 +99,7 @@ ViewApp::ViewApp(Scene scene, ViewHooks hooks)
   imgui_ = std::make_unique<ImGuiLayer>(window_.handle());
   // A push of 0.5 m/s on average over the whole cloth: visible, never violent.
   panel_.push_strength = 0.5 * total_mass(session_.scene());
+  music_.load(session_.scene());
   last_frame_time_ = glfwGetTime();
 }
 
@@ -210,6 +214,9 @@ void ViewApp::frame() {
   if (view_.mode != DisplayMode::springs) last_shaded_ = view_.mode;
   draw_help_overlay(panel_.show_help);
   draw_status_overlay(session_, stats_);
+  if (session_.scene().music)
+    draw_music_panel(*session_.scene().music, session_.solver().time(), music_.status(),
+                     music_plot_);
 
   int width = 0, height = 0;
   window_.framebuffer_size(width, height);
@@ -228,19 +235,23 @@ void ViewApp::frame() {
   update_title();
 }
 
-// Advances by the wall time of the last frame and measures the solver's share of it.
+// Advances by the wall time of the last frame (up to the music's playback position while it
+// plays) and measures the solver's share of it.
 void ViewApp::simulate(double wall_seconds) {
   FrameSample sample;
   sample.frame_seconds = wall_seconds;
   const double before = session_.solver().time();
   const bool running = !session_.paused && !session_.divergence();
+  const double cap_seconds =
+      static_cast<double>(stepper_.max_steps_per_frame()) * session_.solver().dt();
+  const double request = music_.frame_advance(session_, wall_seconds, cap_seconds);
   const auto t0 = std::chrono::steady_clock::now();
-  const FrameAdvance r = session_.advance(stepper_, wall_seconds);
+  const FrameAdvance r = session_.advance(stepper_, request);
   sample.step_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   sample.steps = r.steps;
   sample.simulated = session_.solver().time() - before;
-  sample.requested = running ? wall_seconds : 0.0;
+  sample.requested = running ? request : 0.0;
   sample.capped = r.capped;
   stats_.add(sample);
   if (frame_index_ > 1) {  // the first frame's wall time includes start-up
@@ -380,6 +391,7 @@ void ViewApp::open_scene(const std::string& path) {
   scene_name_ = std::filesystem::path(path).filename().string();
   panel_.push_strength = 0.5 * total_mass(session_.scene());
   panel_.probe.reset();
+  music_.load(session_.scene());
   std::printf("clothlab view: opened %s (%zu vertices, %zu colliders)\n", scene_name_.c_str(),
               session_.solver().vertex_count(), session_.scene().colliders.size());
   update_title();

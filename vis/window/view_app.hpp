@@ -1,7 +1,7 @@
 // `clothlab view`: the window's frame loop. Each frame: poll input, advance the simulation by
 // the wall-clock time since the previous frame (FrameStepper, so the motion does not depend on
-// the frame rate), draw the cloth and the panel, and show the time per step and per frame in the
-// title.
+// the frame rate) or, while a scene's music plays, up to the playback position (MusicSync), draw
+// the cloth and the panel, and show the time per step and per frame in the title.
 #pragma once
 
 #include <array>
@@ -18,6 +18,8 @@
 #include "vis/window/frame_stats.hpp"
 #include "vis/window/glfw_window.hpp"
 #include "vis/window/input.hpp"
+#include "vis/window/music_panel.hpp"
+#include "vis/window/music_sync.hpp"
 #include "vis/window/sim_session.hpp"
 
 namespace clothlab::vis {
@@ -44,7 +46,10 @@ class Renderer;
 //   CLOTHLAB_VIEW_DRAG="X0,Y0,X1,Y1,F0,F1"  a Ctrl + left drag: press at (X0, Y0) on frame F0,
 //                                      the cursor moving to (X1, Y1) by the frame halfway to
 //                                      F1 and held there, release on frame F1 (prints a line
-//                                      "clothlab view: grab: released vertex ...").
+//                                      "clothlab view: grab: released vertex ...");
+//   CLOTHLAB_VIEW_NO_AUDIO=1           never open an audio device: a scene with music runs on
+//                                      the simulation clock, as where no device opens (prints
+//                                      "clothlab view: audio off ...; running silently ...").
 struct ViewHooks {
   long exit_after_frames = 0;  // 0: run until the user quits
   std::string screenshot;
@@ -55,6 +60,7 @@ struct ViewHooks {
   std::optional<std::array<double, 6>> drag;
   long open_frame = 0;  // CLOTHLAB_VIEW_OPEN="FRAME:PATH": the scene picker, on that frame
   std::string open_scene;
+  bool no_audio = false;  // CLOTHLAB_VIEW_NO_AUDIO=1
 
   static ViewHooks from_environment();
 };
@@ -91,6 +97,8 @@ class ViewApp {
 
   SimSession session_;
   ViewHooks hooks_;
+  MusicSync music_;  // the scene's music, and the audio clock while it plays
+  MusicPlot music_plot_;
   std::string scene_name_;
   GlfwWindow window_;
   std::unique_ptr<Renderer> renderer_;
