@@ -1,7 +1,7 @@
 # Generates a C++ source holding every shader in SHADER_DIR as a string, so the program finds its
 # shaders wherever it is installed. Run as: cmake -DSHADER_DIR=... -DOUTPUT=... -P embed_shaders.cmake
 file(GLOB shader_files RELATIVE ${SHADER_DIR} ${SHADER_DIR}/*.vert ${SHADER_DIR}/*.frag
-     ${SHADER_DIR}/*.geom ${SHADER_DIR}/*.glsl)
+     ${SHADER_DIR}/*.geom ${SHADER_DIR}/*.comp ${SHADER_DIR}/*.glsl)
 list(SORT shader_files)
 set(body "")
 foreach(name ${shader_files})

@@ -73,7 +73,8 @@ GLenum stage_of(const std::string& file) {
   if (file.ends_with(".geom")) return GL_GEOMETRY_SHADER;
   if (file.ends_with(".frag")) return GL_FRAGMENT_SHADER;
   if (file.ends_with(".comp")) return GL_COMPUTE_SHADER;
-  throw ShaderError("shaders/" + file + ": unknown shader stage (expected .vert, .geom, .frag)");
+  throw ShaderError("shaders/" + file +
+                    ": unknown shader stage (expected .vert, .geom, .frag, .comp)");
 }
 
 }  // namespace

@@ -1,0 +1,101 @@
+#version 450 core
+// One stage of a cloth step on the GPU (vis/gpu/gpu_cloth.cpp), one invocation per vertex: the
+// CPU's force rule (sim/forces/force_field.cpp add_body_forces, sim/forces/spring_forces.hpp) and
+// integrators (sim/integrators/symplectic_euler.cpp, verlet.cpp), written out term by term in the
+// CPU's order and `precise`, so no multiply-add is fused and the results can match bit for bit.
+//   stage 0: symplectic Euler, v' = v + h f(x, v)/m, x' = x + h v'   (x_in, v_in -> x_out, v_out)
+//   stage 1: force only, f = F(x_in, v_in)                           (Verlet's first evaluation)
+//   stage 2: Verlet kick and drift with the stored f                 (-> x_out, v_out, v_pred)
+//   stage 3: Verlet end force F(x_out, v_pred) and the second kick   (-> force, v_out)
+// Neighbours are gathered through buffer textures (texelFetch), the same buffers the SSBOs hold.
+layout(local_size_x = 64) in;
+
+// Model: the padded slot-major neighbour table (slot s of vertex i at s * n + i) and its springs.
+layout(binding = 0) uniform isamplerBuffer neighbour;
+layout(binding = 1) uniform samplerBuffer stiffness;    // N/m, 0 on padding
+layout(binding = 2) uniform samplerBuffer rest_length;  // m
+layout(binding = 3) uniform samplerBuffer damping;      // N s/m
+// The state read by the force gather: positions and velocities (xyz, w unused).
+layout(binding = 4) uniform samplerBuffer gather_x;
+layout(binding = 5) uniform samplerBuffer gather_v;
+
+layout(std430, binding = 0) readonly buffer XIn { vec4 x_in[]; };
+layout(std430, binding = 1) readonly buffer VIn { vec4 v_in[]; };
+layout(std430, binding = 2) buffer XOut { vec4 x_out[]; };
+layout(std430, binding = 3) buffer VOut { vec4 v_out[]; };
+layout(std430, binding = 4) buffer Force { vec4 force[]; };  // N, Verlet's stored force
+layout(std430, binding = 5) buffer VPred { vec4 v_pred[]; };  // Verlet's predicted velocity
+layout(std430, binding = 6) readonly buffer Mass { float mass[]; };          // kg
+layout(std430, binding = 7) readonly buffer InvMass { float inv_mass[]; };  // 1/kg, 0 pinned
+
+uniform uint n;
+uniform int slots;
+uniform int stage;
+uniform bool damped;
+uniform float h;       // s
+uniform float half_h;  // 0.5 h, rounded as the CPU rounds it
+uniform vec3 gravity;  // m/s^2
+uniform float drag;    // N s/m
+
+// F(x, v) on vertex i from the gather textures: gravity and drag, then each slot's spring in
+// slot order. Hooke k (|d| - L) d/|d| plus along-spring damping c ((v_j - v_i) . d) d / |d|^2.
+vec3 total_force(uint i) {
+  const vec3 xi = texelFetch(gather_x, int(i)).xyz;
+  const vec3 vi = texelFetch(gather_v, int(i)).xyz;
+  const float mi = mass[i];
+  precise float fx = mi * gravity.x - drag * vi.x;
+  precise float fy = mi * gravity.y - drag * vi.y;
+  precise float fz = mi * gravity.z - drag * vi.z;
+  for (int s = 0; s < slots; ++s) {
+    const int e = s * int(n) + int(i);
+    const int j = texelFetch(neighbour, e).r;
+    const vec3 xj = texelFetch(gather_x, j).xyz;
+    precise float dx = xj.x - xi.x;
+    precise float dy = xj.y - xi.y;
+    precise float dz = xj.z - xi.z;
+    precise float len = sqrt(dx * dx + dy * dy + dz * dz);
+    // Padding (j == i) has len = 0 and k = 0: the select keeps it at zero force.
+    precise float inv_len = len > 0.0 ? 1.0 / len : 0.0;
+    precise float scale = texelFetch(stiffness, e).r * (len - texelFetch(rest_length, e).r) * inv_len;
+    if (damped) {
+      const vec3 vj = texelFetch(gather_v, j).xyz;
+      precise float rvx = vj.x - vi.x;
+      precise float rvy = vj.y - vi.y;
+      precise float rvz = vj.z - vi.z;
+      scale += texelFetch(damping, e).r * (rvx * dx + rvy * dy + rvz * dz) * inv_len * inv_len;
+    }
+    fx += scale * dx;
+    fy += scale * dy;
+    fz += scale * dz;
+  }
+  return vec3(fx, fy, fz);
+}
+
+void main() {
+  const uint i = gl_GlobalInvocationID.x;
+  if (i >= n) return;
+  const float im = inv_mass[i];
+  if (stage == 0) {
+    const vec3 f = total_force(i);
+    precise vec3 a = f * im;
+    precise vec3 v = v_in[i].xyz + h * a;
+    precise vec3 x = x_in[i].xyz + h * v;
+    v_out[i] = vec4(v, 0.0);
+    x_out[i] = vec4(x, 0.0);
+  } else if (stage == 1) {
+    force[i] = vec4(total_force(i), 0.0);
+  } else if (stage == 2) {
+    precise vec3 kick = half_h * force[i].xyz * im;
+    precise vec3 v = v_in[i].xyz + kick;
+    precise vec3 x = x_in[i].xyz + h * v;
+    precise vec3 vp = v + kick;
+    v_out[i] = vec4(v, 0.0);
+    x_out[i] = vec4(x, 0.0);
+    v_pred[i] = vec4(vp, 0.0);
+  } else {
+    const vec3 f = total_force(i);
+    force[i] = vec4(f, 0.0);
+    precise vec3 v = v_out[i].xyz + half_h * f * im;
+    v_out[i] = vec4(v, 0.0);
+  }
+}

@@ -1,0 +1,235 @@
+#include "vis/gpu/gpu_cloth.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+#include "vis/gl/gl_error.hpp"
+#include "vis/gl/program.hpp"
+
+namespace clothlab::vis {
+namespace {
+
+constexpr unsigned kLocalSize = 64;  // local_size_x of every cloth compute shader
+
+// Stages of shaders/cloth_step.comp.
+constexpr int kSymplecticEuler = 0, kForceOnly = 1, kVerletDrift = 2, kVerletKick = 3;
+
+// Compute shaders are core from GL 4.3; the context asks for 4.5, but a shared or foreign
+// context might not be one.
+void require_compute(std::size_t largest_table) {
+  GLint major = 0, minor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  if (major * 10 + minor < 43 || !glDispatchCompute)
+    throw GlUnavailable("the GPU cloth step needs OpenGL 4.3 compute shaders; this context is " +
+                        std::to_string(major) + "." + std::to_string(minor));
+  GLint invocations = 0, texels = 0;
+  glGetIntegerv(GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS, &invocations);
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &texels);
+  if (invocations < static_cast<GLint>(kLocalSize))
+    throw GlUnavailable(
+        "the GPU cloth step needs work groups of 64 invocations; this driver allows " +
+        std::to_string(invocations));
+  if (largest_table > static_cast<std::size_t>(texels))
+    throw GlUnavailable("the cloth's neighbour table has " + std::to_string(largest_table) +
+                        " entries; this driver's buffer textures hold at most " +
+                        std::to_string(texels));
+}
+
+std::vector<float> to_vec4(const Vec3Array<float>& a) {
+  std::vector<float> out(4 * a.size(), 0.0f);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    out[4 * i] = a.x[i];
+    out[4 * i + 1] = a.y[i];
+    out[4 * i + 2] = a.z[i];
+  }
+  return out;
+}
+
+Buffer make_storage(const void* data, std::size_t bytes) {
+  Buffer b = make_buffer();
+  // Zero-sized storage is an error in GL; keep one word so every binding is valid.
+  glNamedBufferStorage(b.get(), static_cast<GLsizeiptr>(bytes > 0 ? bytes : 4),
+                       bytes > 0 ? data : nullptr, GL_DYNAMIC_STORAGE_BIT);
+  return b;
+}
+
+GLint location(const Program& p, const char* name) {
+  return glGetUniformLocation(p.get(), name);
+}
+
+}  // namespace
+
+GpuCloth::TexturedBuffer GpuCloth::make_textured(const void* data, std::size_t bytes,
+                                                 GLenum format) {
+  TexturedBuffer t{make_storage(data, bytes), make_texture(GL_TEXTURE_BUFFER)};
+  glTextureBuffer(t.texture.get(), format, t.buffer.get());
+  return t;
+}
+
+GpuCloth::GpuCloth(const Model<float>& model, const Vec3Array<float>& positions,
+                   const Vec3Array<float>& velocities)
+    : n_(model.n),
+      slots_(model.slots),
+      incident_slots_(model.incident_slots),
+      triangle_count_(model.triangles.size()),
+      damped_(model.has_damping),
+      gravity_(model.gravity),
+      drag_(model.drag) {
+  if (model.kernel != SpringKernel::neighbour_list)
+    throw std::invalid_argument("GpuCloth needs a model built with SpringKernel::neighbour_list");
+  if (positions.size() != n_ || velocities.size() != n_)
+    throw std::invalid_argument("GpuCloth: the state's size differs from the model's vertex count");
+  const std::size_t table = n_ * static_cast<std::size_t>(slots_);
+  require_compute(
+      std::max({table, n_ * static_cast<std::size_t>(incident_slots_), triangle_count_ + 1}));
+
+  neighbour_ = make_textured(model.neighbour.data(), table * sizeof(std::int32_t), GL_R32I);
+  stiffness_ = make_textured(model.stiffness.data(), table * sizeof(float), GL_R32F);
+  rest_length_ = make_textured(model.rest_length.data(), table * sizeof(float), GL_R32F);
+  damping_ = make_textured(model.damping.data(), table * sizeof(float), GL_R32F);
+  mass_ = make_storage(model.mass.data(), n_ * sizeof(float));
+  inv_mass_ = make_storage(model.inv_mass.data(), n_ * sizeof(float));
+  const std::vector<float> zero(4 * n_, 0.0f);
+  for (int k = 0; k < 2; ++k) {
+    x_[k] = make_textured(zero.data(), zero.size() * sizeof(float), GL_RGBA32F);
+    v_[k] = make_textured(zero.data(), zero.size() * sizeof(float), GL_RGBA32F);
+  }
+  v_pred_ = make_textured(zero.data(), zero.size() * sizeof(float), GL_RGBA32F);
+  force_ = make_storage(zero.data(), zero.size() * sizeof(float));
+  set_state(positions, velocities);
+
+  std::vector<std::int32_t> corners;
+  corners.reserve(3 * triangle_count_);
+  for (const auto& t : model.triangles) corners.insert(corners.end(), t.begin(), t.end());
+  triangles_ = make_storage(corners.data(), corners.size() * sizeof(std::int32_t));
+  const std::vector<float> faces(4 * (triangle_count_ + 1), 0.0f);  // the dummy stays zero
+  faces_ = make_textured(faces.data(), faces.size() * sizeof(float), GL_RGBA32F);
+  incident_ = make_textured(model.incident_triangle.data(),
+                            model.incident_triangle.size() * sizeof(std::int32_t), GL_R32I);
+  normals_ = make_storage(zero.data(), zero.size() * sizeof(float));
+
+  step_program_ = build_program({"cloth_step.comp"});
+  faces_program_ = build_program({"cloth_faces.comp"});
+  normals_program_ = build_program({"cloth_normals.comp"});
+  const GLuint p = step_program_.get();
+  stage_location_ = location(step_program_, "stage");
+  glProgramUniform1ui(p, location(step_program_, "n"), static_cast<GLuint>(n_));
+  glProgramUniform1i(p, location(step_program_, "slots"), slots_);
+  glProgramUniform1i(p, location(step_program_, "damped"), damped_ ? 1 : 0);
+  glProgramUniform3f(p, location(step_program_, "gravity"), gravity_[0], gravity_[1], gravity_[2]);
+  glProgramUniform1f(p, location(step_program_, "drag"), drag_);
+  glProgramUniform1ui(faces_program_.get(), location(faces_program_, "triangles"),
+                      static_cast<GLuint>(triangle_count_));
+  glProgramUniform1ui(normals_program_.get(), location(normals_program_, "n"),
+                      static_cast<GLuint>(n_));
+  glProgramUniform1i(normals_program_.get(), location(normals_program_, "slots"), incident_slots_);
+}
+
+void GpuCloth::set_state(const Vec3Array<float>& positions, const Vec3Array<float>& velocities) {
+  const std::vector<float> x = to_vec4(positions), v = to_vec4(velocities);
+  current_ = 0;
+  glNamedBufferSubData(x_[0].buffer.get(), 0, static_cast<GLsizeiptr>(x.size() * sizeof(float)),
+                       x.data());
+  glNamedBufferSubData(v_[0].buffer.get(), 0, static_cast<GLsizeiptr>(v.size() * sizeof(float)),
+                       v.data());
+  force_valid_ = false;
+}
+
+void GpuCloth::dispatch(unsigned items) const {
+  glDispatchCompute((items + kLocalSize - 1) / kLocalSize, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                  GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+// One dispatch of cloth_step.comp's `stage` reading the state in x_[src], v_[src] and writing
+// x_[1 - src], v_[1 - src]; Verlet's end kick gathers at (x_[1 - src], v_pred_) instead.
+void GpuCloth::force_pass(int stage, int src) {
+  const int dst = 1 - src;
+  const bool end_kick = stage == kVerletKick;
+  glBindTextureUnit(4, (end_kick ? x_[dst] : x_[src]).texture.get());
+  glBindTextureUnit(5, (end_kick ? v_pred_ : v_[src]).texture.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, x_[src].buffer.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, v_[src].buffer.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, x_[dst].buffer.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, v_[dst].buffer.get());
+  glProgramUniform1i(step_program_.get(), stage_location_, stage);
+  dispatch(static_cast<unsigned>(n_));
+}
+
+void GpuCloth::step(int count, float h, IntegratorKind kind) {
+  if (kind != IntegratorKind::symplectic_euler && kind != IntegratorKind::verlet)
+    throw std::invalid_argument("GpuCloth steps symplectic_euler and verlet only");
+  if (count <= 0 || n_ == 0) return;
+  const GLuint p = step_program_.get();
+  glUseProgram(p);
+  glProgramUniform1f(p, location(step_program_, "h"), h);
+  glProgramUniform1f(p, location(step_program_, "half_h"), 0.5f * h);  // as the CPU rounds it
+  glBindTextureUnit(0, neighbour_.texture.get());
+  glBindTextureUnit(1, stiffness_.texture.get());
+  glBindTextureUnit(2, rest_length_.texture.get());
+  glBindTextureUnit(3, damping_.texture.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, force_.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, v_pred_.buffer.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, mass_.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, inv_mass_.get());
+  if (kind == IntegratorKind::symplectic_euler) {
+    for (int k = 0; k < count; ++k) {
+      force_pass(kSymplecticEuler, current_);
+      current_ = 1 - current_;
+    }
+    force_valid_ = false;  // a later Verlet step evaluates its start force afresh
+  } else {
+    if (!force_valid_) force_pass(kForceOnly, current_);
+    for (int k = 0; k < count; ++k) {
+      force_pass(kVerletDrift, current_);
+      force_pass(kVerletKick, current_);
+      current_ = 1 - current_;
+    }
+    force_valid_ = true;
+  }
+  glUseProgram(0);
+}
+
+void GpuCloth::compute_normals() {
+  if (n_ == 0) return;
+  glUseProgram(faces_program_.get());
+  glBindTextureUnit(0, x_[current_].texture.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, triangles_.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, faces_.buffer.get());
+  if (triangle_count_ > 0) dispatch(static_cast<unsigned>(triangle_count_));
+  glUseProgram(normals_program_.get());
+  glBindTextureUnit(0, incident_.texture.get());
+  glBindTextureUnit(1, faces_.texture.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, normals_.get());
+  dispatch(static_cast<unsigned>(n_));
+  glUseProgram(0);
+}
+
+void GpuCloth::read_vec4(const Buffer& b, float* xyz) const {
+  std::vector<float> v(4 * n_);
+  glGetNamedBufferSubData(b.get(), 0, static_cast<GLsizeiptr>(v.size() * sizeof(float)), v.data());
+  for (std::size_t i = 0; i < n_; ++i) {
+    xyz[3 * i] = v[4 * i];
+    xyz[3 * i + 1] = v[4 * i + 1];
+    xyz[3 * i + 2] = v[4 * i + 2];
+  }
+}
+
+void GpuCloth::read_positions(float* xyz) const {
+  read_vec4(x_[current_].buffer, xyz);
+}
+void GpuCloth::read_velocities(float* xyz) const {
+  read_vec4(v_[current_].buffer, xyz);
+}
+void GpuCloth::read_normals(float* xyz) const {
+  read_vec4(normals_, xyz);
+}
+
+void GpuCloth::finish() const {
+  glFinish();
+}
+
+}  // namespace clothlab::vis
