@@ -9,7 +9,7 @@ set(CLOTHLAB_DEFAULT_SCENE ${PROJECT_SOURCE_DIR}/scenes/default.toml)
 # matching REGEX. ARGS must not contain '|' (expect_exit.cmake's separator).
 function(clothlab_cli_test name rc regex)
   set(environment "${CLOTHLAB_TEST_ENVIRONMENT}")
-  if(name MATCHES "^(render|view)\\.")
+  if(name MATCHES "^(render|view)\\." OR name MATCHES "^bench\\.backends")  # an OpenGL context
     set(environment "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
   endif()
   string(JOIN "|" args ${ARGN})
@@ -136,6 +136,9 @@ clothlab_cli_test(set.bad_dt_word 2 "solver.dt: expected a number of seconds or 
 # `clothlab bench`: a reduced suite writes its tables; a bad suite name is bad input.
 clothlab_cli_test(bench.stability_quick 0 "Largest stable dt.*wrote .*stability\\.csv.*wrote .*stability_stress\\.csv"
   bench --suite stability --quick --out ${CLOTHLAB_TRACE_OUT}/bench/stability.csv)
+# The GPU backend against the CPU solver (an OpenGL context: EGL on llvmpipe in CI).
+clothlab_cli_test(bench.backends_quick 0 "CPU and GPU backends.*gpu .*32x32.*wrote .*backends\\.csv"
+  bench --suite backends --quick --out ${CLOTHLAB_TRACE_OUT}/bench/backends.csv)
 clothlab_cli_test(bench.bad_suite 2 "--suite: speed not in"
   bench --suite speed)
 # The views suite renders headless (EGL, so the GL tests' environment): a reduced run prints the

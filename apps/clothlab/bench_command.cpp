@@ -16,6 +16,7 @@ std::vector<bench::Table> run_suite(const std::string& name, const bench::SuiteO
   if (name == "scaling") return bench::scaling_suite(o);
   if (name == "views") return bench::views_suite(o);
   if (name == "rendering") return bench::rendering_suite(o);
+  if (name == "backends") return bench::backends_suite(o);
   return bench::features_suite(o);
 }
 

@@ -144,9 +144,9 @@ int main(int argc, char** argv) {
       "run time against error, stability, scaling, feature, view and render costs (tables + CSV)");
   bench_cmd
       ->add_option("--suite", bench.suite,
-                   "accuracy, stability, scaling, features, views, rendering or all")
-      ->check(CLI::IsMember(
-          {"accuracy", "stability", "scaling", "features", "views", "rendering", "all"}));
+                   "accuracy, stability, scaling, features, views, rendering, backends or all")
+      ->check(CLI::IsMember({"accuracy", "stability", "scaling", "features", "views", "rendering",
+                             "backends", "all"}));
   bench_cmd->add_option("--out", bench.out,
                         "CSV file (one suite) or directory (all); default out/bench/SUITE.csv");
   bench_cmd->add_flag("--quick", bench.quick, "reduced sweeps (seconds instead of minutes)");

@@ -24,8 +24,10 @@ std::vector<Table> features_suite(const SuiteOptions& options);
 // Needs EGL / OpenGL 4.5 (throws vis::GlUnavailable without): headless rendering.
 std::vector<Table> views_suite(const SuiteOptions& options);
 std::vector<Table> rendering_suite(const SuiteOptions& options);
+// Needs EGL / OpenGL 4.3 compute: the CPU solver against the GPU compute backend.
+std::vector<Table> backends_suite(const SuiteOptions& options);
 
-inline constexpr const char* kSuiteNames[] = {"accuracy", "stability", "scaling",
-                                              "features", "views",     "rendering"};
+inline constexpr const char* kSuiteNames[] = {"accuracy", "stability", "scaling", "features",
+                                              "views",    "rendering", "backends"};
 
 }  // namespace clothlab::bench
