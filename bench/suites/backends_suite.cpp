@@ -35,27 +35,6 @@ Scene sheets(int res, int copies, int threads) {
   return s;
 }
 
-// Median seconds per GPU step over batches of about 20 ms (after a warm-up that compiles and
-// binds everything).
-double gpu_seconds_per_step(vis::GpuCloth& gpu, float h, double total_seconds) {
-  auto run = [&](int steps) {
-    gpu.step(steps, h, IntegratorKind::symplectic_euler);
-    gpu.finish();
-  };
-  run(3);
-  Stopwatch probe;
-  run(1);
-  const int batch = std::max(1, static_cast<int>(0.02 / std::max(probe.seconds(), 1e-7)));
-  std::vector<double> samples;
-  Stopwatch all;
-  while (samples.size() < 5 || all.seconds() < total_seconds) {
-    Stopwatch clock;
-    run(batch);
-    samples.push_back(clock.seconds() / double(batch));
-  }
-  return median(samples);
-}
-
 }  // namespace
 
 std::vector<Table> backends_suite(const SuiteOptions& o) {
@@ -81,8 +60,13 @@ std::vector<Table> backends_suite(const SuiteOptions& o) {
     // solver built with that kernel (one step of dt, no substeps, in the benchmark sheet).
     SolverT<float> ref(sheets(res, copies, 1), SpringKernel::neighbour_list);
     vis::GpuCloth gpu(ref.model(), ref.state().pos, ref.state().vel);
-    const double s =
-        gpu_seconds_per_step(gpu, static_cast<float>(ref.dt() / ref.substeps()), seconds);
+    const auto h = static_cast<float>(ref.dt() / ref.substeps());
+    const double s = median_seconds_per_step(
+        [&](long steps) {
+          gpu.step(static_cast<int>(steps), h, IntegratorKind::symplectic_euler);
+          gpu.finish();  // the work done, not the work queued
+        },
+        seconds);
     t.add({"gpu", "-", std::to_string(res) + "x" + std::to_string(res), std::to_string(copies),
            std::to_string(ref.vertex_count()), std::to_string(ref.spring_count()),
            fixed(1e3 * s, 3), fixed(1e9 * s / double(ref.spring_count()), 2)});

@@ -11,18 +11,13 @@
 
 namespace clothlab::bench {
 
-// `work` runs after every step when given (e.g. the field export being measured).
-template <class Work>
-double seconds_per_step(Solver& solver, double total_seconds, Work&& work) {
-  auto run = [&](long steps) {
-    for (long k = 0; k < steps; ++k) {
-      solver.step(1);
-      work(solver);
-    }
-  };
-  run(3);  // warm-up: caches, OpenMP pool, the integrator's first step
+// Median seconds per step of `run(steps)` (which runs that many steps, and waits for them where
+// they are queued, as on a GPU) over batches of about 20 ms, after a warm-up of 3 steps.
+template <class Run>
+double median_seconds_per_step(Run&& run, double total_seconds) {
+  run(3L);  // warm-up: caches, OpenMP pool or shader compilation, the integrator's first step
   Stopwatch probe;
-  run(1);
+  run(1L);
   const double one = std::max(probe.seconds(), 1e-7);
   const long batch = std::max(1L, std::lround(0.02 / one));
   std::vector<double> samples;
@@ -33,6 +28,19 @@ double seconds_per_step(Solver& solver, double total_seconds, Work&& work) {
     samples.push_back(clock.seconds() / double(batch));
   }
   return median(samples);
+}
+
+// `work` runs after every step when given (e.g. the field export being measured).
+template <class Work>
+double seconds_per_step(Solver& solver, double total_seconds, Work&& work) {
+  return median_seconds_per_step(
+      [&](long steps) {
+        for (long k = 0; k < steps; ++k) {
+          solver.step(1);
+          work(solver);
+        }
+      },
+      total_seconds);
 }
 
 inline double seconds_per_step(Solver& solver, double total_seconds) {

@@ -299,9 +299,8 @@ class Reader {
     field(t, key, "u_axis", [&](auto& n, auto& k) { cloth.u_axis = numbers<3>(n, k); });
     field(t, key, "v_axis", [&](auto& n, auto& k) { cloth.v_axis = numbers<3>(n, k); });
     field(t, key, "mass", [&](auto& n, auto& k) { cloth.mass = number(n, k); });
-    field(t, key, "pins", [&](auto& n, auto& k) {
-      cloth.pins = cloth.shape == "mesh" ? read_vertex_pins(n, k) : read_pins(n, k);
-    });
+    field(t, key, "pins",
+          [&](auto& n, auto& k) { cloth.pins = read_pins(n, k, cloth.shape == "mesh"); });
     field(t, key, "release_at", [&](auto& n, auto& k) { cloth.release_at = number(n, k); });
     field(t, key, "radius", [&](auto& n, auto& k) {
       // One radius (a cylinder) or [first ring, last ring] (a frustum).
@@ -343,26 +342,22 @@ class Reader {
     cloth.resolution = {static_cast<int>(cloth.mesh->positions.size()), 1};
   }
 
-  // A mesh cloth's pins: OBJ vertex numbers (1 = the file's first v line, as its f lines count).
-  std::vector<std::array<int, 2>> read_vertex_pins(const toml::node& node, const std::string& key) {
-    const toml::array& a = array(node, key, std::nullopt, " of OBJ vertex numbers");
+  // [i, j] pairs on a grid or tube; on a mesh cloth OBJ vertex numbers (1 = the file's first v
+  // line, as its f lines count), kept as (number - 1, 0).
+  std::vector<std::array<int, 2>> read_pins(const toml::node& node, const std::string& key,
+                                            bool mesh) {
+    const toml::array& a =
+        array(node, key, std::nullopt, mesh ? " of OBJ vertex numbers" : " of [i, j] pairs");
     std::vector<std::array<int, 2>> pins;
     for (std::size_t n = 0; n < a.size(); ++n) {
       const std::string k = key + "[" + std::to_string(n) + "]";
       note(k, *a.get(n));
-      pins.push_back({small_integer(*a.get(n), k) - 1, 0});
-    }
-    return pins;
-  }
-
-  std::vector<std::array<int, 2>> read_pins(const toml::node& node, const std::string& key) {
-    const toml::array& a = array(node, key, std::nullopt, " of [i, j] pairs");
-    std::vector<std::array<int, 2>> pins;
-    for (std::size_t n = 0; n < a.size(); ++n) {
-      const std::string k = key + "[" + std::to_string(n) + "]";
-      note(k, *a.get(n));
-      const std::vector<int> ij = index_tuple(*a.get(n), k, 2, 2, "an [i, j] pair of integers");
-      pins.push_back({ij[0], ij[1]});
+      if (mesh) {
+        pins.push_back({small_integer(*a.get(n), k) - 1, 0});
+      } else {
+        const std::vector<int> ij = index_tuple(*a.get(n), k, 2, 2, "an [i, j] pair of integers");
+        pins.push_back({ij[0], ij[1]});
+      }
     }
     return pins;
   }
