@@ -444,9 +444,7 @@ class Reader {
 
   TraceSpec read_trace(const toml::node& node) {
     const std::string key = "trace";
-    note(key, node);
-    const toml::table& t = table(node, key);
-    check_keys(t, key, kTraceKeys);
+    const toml::table& t = section(node, key, kTraceKeys);
     TraceSpec trace;
     field(t, key, "vertices",
           [&](auto& n, auto& k) { trace.vertices = read_trace_vertices(n, k); });
@@ -644,6 +642,14 @@ class Reader {
     return c;
   }
 
+  // A top-level table: its place noted for messages and its keys checked.
+  const toml::table& section(const toml::node& node, const std::string& key, Names keys) {
+    note(key, node);
+    const toml::table& t = table(node, key);
+    check_keys(t, key, keys);
+    return t;
+  }
+
   // A number that must lie in [lo, hi]; `unit` follows the bounds in the message (" s", " BPM").
   double number_within(const toml::node& n, const std::string& k, double lo, double hi,
                        const std::string& unit = "") const {
@@ -680,9 +686,7 @@ class Reader {
   // unreadable file is a scene error naming the key.
   void read_music(const toml::node& node) {
     const std::string key = "music";
-    note(key, node);
-    const toml::table& t = table(node, key);
-    check_keys(t, key, kMusicKeys);
+    const toml::table& t = section(node, key, kMusicKeys);
     MusicSpec m;
     field(t, key, "file", [&](auto& n, auto& k) { m.file = text(n, k); });
     field(t, key, "tempo",
@@ -708,9 +712,7 @@ class Reader {
   // the figure's primitives appended to the colliders as "mannequin.<part>".
   void read_mannequin(const toml::node& node) {
     const std::string key = "mannequin";
-    note(key, node);
-    const toml::table& t = table(node, key);
-    check_keys(t, key, kMannequinKeys);
+    const toml::table& t = section(node, key, kMannequinKeys);
     MannequinSpec m;
     field(t, key, "position", [&](auto& n, auto& k) { m.position = numbers<3>(n, k); });
     field(t, key, "facing", [&](auto& n, auto& k) { m.facing = number(n, k); });
