@@ -8,7 +8,11 @@
 //   stage 2: Verlet kick and drift with the stored f                 (-> x_out, v_out, v_pred)
 //   stage 3: Verlet end force F(x_out, v_pred) and the second kick   (-> force, v_out)
 // Neighbours are gathered through buffer textures (texelFetch), the same buffers the SSBOs hold.
+// With wind, each force evaluation reads the surface (unit normal, vertex area) that
+// cloth_faces.comp and cloth_normals.comp made from the same positions just before.
 layout(local_size_x = 64) in;
+
+#include "wind_gust.glsl"
 
 // Model: the padded slot-major neighbour table (slot s of vertex i at s * n + i) and its springs.
 layout(binding = 0) uniform isamplerBuffer neighbour;
@@ -27,6 +31,7 @@ layout(std430, binding = 4) buffer Force { vec4 force[]; };  // N, Verlet's stor
 layout(std430, binding = 5) buffer VPred { vec4 v_pred[]; };  // Verlet's predicted velocity
 layout(std430, binding = 6) readonly buffer Mass { float mass[]; };          // kg
 layout(std430, binding = 7) readonly buffer InvMass { float inv_mass[]; };  // 1/kg, 0 pinned
+layout(std430, binding = 8) readonly buffer Surface { vec4 surface[]; };  // (unit n, area m^2)
 
 uniform uint n;
 uniform int slots;
@@ -36,6 +41,26 @@ uniform float h;       // s
 uniform float half_h;  // 0.5 h, rounded as the CPU rounds it
 uniform vec3 gravity;  // m/s^2
 uniform float drag;    // N s/m
+// Wind (sim/forces/wind.hpp): F = coefficient A ((k W - v) . n) n with the gust factor
+// k = 1 + gust g((t - x . lag) / period), lag = W / |W|^2.
+uniform bool windy;
+uniform bool gusty;
+uniform vec3 wind;               // m/s, mean wind W
+uniform float wind_coefficient;  // kg/(m^2 s)
+uniform double t;                // s, the time of this force evaluation
+uniform dvec3 wind_lag;          // s/m
+uniform double gust;
+uniform double gust_period;  // s
+uniform uvec2 gust_seeds[2];
+
+float gust_factor(vec3 x) {
+  if (!gusty) return 1.0;
+  precise double along = double(x.x) * wind_lag.x + double(x.y) * wind_lag.y +
+                         double(x.z) * wind_lag.z;
+  precise double s = (t - along) / gust_period;
+  precise double k = 1.0LF + gust * gust_noise(gust_seeds, s);
+  return float(k);
+}
 
 // F(x, v) on vertex i from the gather textures: gravity and drag, then each slot's spring in
 // slot order. Hooke k (|d| - L) d/|d| plus along-spring damping c ((v_j - v_i) . d) d / |d|^2.
@@ -67,6 +92,16 @@ vec3 total_force(uint i) {
     fx += scale * dx;
     fy += scale * dy;
     fz += scale * dz;
+  }
+  if (windy) {
+    const vec4 sn = surface[i];
+    const float k = gust_factor(xi);
+    precise float normal_speed = (wind.x * k - vi.x) * sn.x + (wind.y * k - vi.y) * sn.y +
+                                 (wind.z * k - vi.z) * sn.z;
+    precise float scale = wind_coefficient * sn.w * normal_speed;
+    fx += scale * sn.x;
+    fy += scale * sn.y;
+    fz += scale * sn.z;
   }
   return vec3(fx, fy, fz);
 }

@@ -1,5 +1,7 @@
 // SolverT<T>: the Solver for one scalar type. Exposed (rather than hidden in solver.cpp) so tests
-// and benchmarks can reach the state arrays directly.
+// and benchmarks can reach the state arrays directly, and so the GPU backend
+// (vis/gpu/gpu_solver.hpp) can keep this solver's model, pins, contacts and checks while its own
+// step() runs the integrator on the GPU.
 #pragma once
 
 #include <vector>
@@ -12,7 +14,7 @@
 namespace clothlab {
 
 template <class T>
-class SolverT final : public Solver {
+class SolverT : public Solver {
  public:
   // kernel: the spring kernel (tests and benchmarks compare both; the default is the fast one).
   explicit SolverT(const Scene& scene, SpringKernel kernel = SpringKernel::row_sweep);
@@ -71,7 +73,7 @@ class SolverT final : public Solver {
   State<T>& state() { return state_; }
   void state_changed();
 
- private:
+ protected:
   static void copy(const Vec3Array<T>& a, float* xyz) {
     for (std::size_t i = 0; i < a.size(); ++i) {
       xyz[3 * i] = static_cast<float>(a.x[i]);

@@ -41,7 +41,7 @@ clothlab_bad_scene(pin_outside 4 "cloth\\.pins.1." "pin .8, 0. is outside the 8 
 clothlab_bad_scene(duplicate_pin 4 "cloth\\.pins.2." "pin .0, 0. is listed twice")
 clothlab_bad_scene(all_pinned 4 "cloth\\.pins" "every vertex is pinned")
 clothlab_bad_scene(unknown_integrator 6 "solver\\.integrator" "unknown integrator .leapfrog.")
-clothlab_bad_scene(gpu_backend 6 "solver\\.backend" ".*not supported yet")
+clothlab_bad_scene(unknown_backend 6 "solver\\.backend" ".*unknown backend \"cuda\" \\(valid: cpu, gpu\\)")
 clothlab_bad_scene(collider_radius 8 "colliders.0.\\.radius" "must be > 0")
 clothlab_bad_scene(collider_friction 8 "colliders.0.\\.friction\\.static" "must be >= 0")
 clothlab_bad_scene(collider_obj_missing 6 "colliders.0.\\.file" "[^\n]*no_such_chair\\.obj: no such OBJ file")

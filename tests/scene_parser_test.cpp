@@ -198,8 +198,9 @@ TEST(SceneParser, OutOfRange) {
   expect_error("[cloth]\nshape = \"cone\"\n", "cloth.shape", 2,
                "unknown (valid: grid, tube, mesh)");
   expect_error(kMinimal + "precision = \"half\"\n", "solver.precision", 9, "float, double");
-  expect_error(kMinimal + "backend = \"gpu\"\n", "solver.backend", 9, "not supported yet");
-  EXPECT_NO_THROW(parse_scene_string(kMinimal + "backend = \"cpu\"\n", "t"));
+  expect_error(kMinimal + "backend = \"opencl\"\n", "solver.backend", 9, "valid: cpu, gpu");
+  EXPECT_EQ(parse_scene_string(kMinimal + "backend = \"cpu\"\n", "t").solver.backend, Backend::cpu);
+  EXPECT_EQ(parse_scene_string(kMinimal + "backend = \"gpu\"\n", "t").solver.backend, Backend::gpu);
 }
 
 TEST(SceneParser, TimeStep) {

@@ -14,6 +14,7 @@
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
 #include "vis/gl/gl_error.hpp"
+#include "vis/gpu/gpu_solver.hpp"
 #include "vis/render/headless_renderer.hpp"
 #include "vis/render/scalar_field.hpp"
 #include "vis/textures/image.hpp"
@@ -122,9 +123,12 @@ int run_render(const RenderArgs& args) {
                  args.out.c_str());
     return 2;
   }
-  const auto solver = make_solver(scene);
   try {
     vis::HeadlessRenderer renderer(args.width, args.height);
+    // After the context: solver.backend = "gpu" steps the cloth in it.
+    std::string backend_note;
+    const auto solver = vis::make_backend_solver(scene, backend_note);
+    if (!backend_note.empty()) std::printf("clothlab render: %s\n", backend_note.c_str());
     renderer.set_cloth(*solver);
     renderer.set_scene(scene.render, *solver, scene.colliders);
     vis::ViewSettings view = vis::scene_view(scene, *solver);
@@ -176,10 +180,11 @@ int run_render(const RenderArgs& args) {
     const double frames = args.frames;
     std::printf(
         "render: %d frames of %dx%d (mode %d) on %s: %.2f ms/frame simulation (%.1f steps of "
-        "%g s), %.2f ms/frame rendering, %.2f ms/frame writing; %s%s%s%s%s\n",
+        "%g s on the %s), %.2f ms/frame rendering, %.2f ms/frame writing; %s%s%s%s%s\n",
         args.frames, args.width, args.height, static_cast<int>(view.mode),
         renderer.gl_renderer().c_str(), 1e3 * simulate / frames,
-        frames > 1 ? double(steps) / (frames - 1) : 0.0, solver->dt(), 1e3 * draw / frames,
+        frames > 1 ? double(steps) / (frames - 1) : 0.0, solver->dt(),
+        dynamic_cast<const vis::GpuSolver*>(solver.get()) ? "GPU" : "CPU", 1e3 * draw / frames,
         1e3 * output / frames, args.out.c_str(), video ? " and " : "", args.video.c_str(),
         music ? " with music: " : "", music ? music->source.c_str() : "");
     print_views(renderer.diagnostics(), view);

@@ -99,6 +99,8 @@ inline bool is_explicit(IntegratorKind k) {
 }
 enum class Precision { f32, f64 };
 
+enum class Backend { cpu, gpu };
+
 struct SolverSpec {
   IntegratorKind integrator = IntegratorKind::symplectic_euler;
   double dt = 0.001;           // s, fixed step, > 0 (ignored when dt_auto)
@@ -111,6 +113,9 @@ struct SolverSpec {
   bool self_collision = false;    // the cloth keeps its layers apart (sim/contact/self_collision)
   double self_thickness = 0.005;  // m: how far apart two layers stay
   Precision precision = Precision::f32;
+  // Where the cloth step runs: gpu asks for the OpenGL compute backend (vis/gpu/gpu_solver.hpp),
+  // which only a program with a GL context can give; everything else steps on the CPU.
+  Backend backend = Backend::cpu;
 };
 
 // A traced vertex: (cloth, i, j). cloth is 0 in the one-cloth form.

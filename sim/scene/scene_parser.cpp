@@ -428,8 +428,8 @@ class Reader {
     field(t, key, "self_thickness", [&](auto& n, auto& k) { s.self_thickness = number(n, k); });
     field(t, key, "backend", [&](auto& n, auto& k) {
       const std::string b = text(n, k);
-      if (b == "gpu") fail(k, n, "backend \"gpu\" is not supported yet (valid: cpu)");
-      if (b != "cpu") fail(k, n, "unknown backend \"" + b + "\" (valid: cpu)");
+      if (b != "cpu" && b != "gpu") fail(k, n, "unknown backend \"" + b + "\" (valid: cpu, gpu)");
+      s.backend = b == "gpu" ? Backend::gpu : Backend::cpu;
     });
   }
 

@@ -4,7 +4,9 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
+#include "sim/forces/wind.hpp"
 #include "vis/gl/gl_error.hpp"
 #include "vis/gl/program.hpp"
 
@@ -36,16 +38,6 @@ void require_compute(std::size_t largest_table) {
     throw GlUnavailable("the cloth's neighbour table has " + std::to_string(largest_table) +
                         " entries; this driver's buffer textures hold at most " +
                         std::to_string(texels));
-}
-
-std::vector<float> to_vec4(const Vec3Array<float>& a) {
-  std::vector<float> out(4 * a.size(), 0.0f);
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    out[4 * i] = a.x[i];
-    out[4 * i + 1] = a.y[i];
-    out[4 * i + 2] = a.z[i];
-  }
-  return out;
 }
 
 Buffer make_storage(const void* data, std::size_t bytes) {
@@ -93,6 +85,7 @@ GpuCloth::GpuCloth(const Model<float>& model, const Vec3Array<float>& positions,
   mass_ = make_storage(model.mass.data(), n_ * sizeof(float));
   inv_mass_ = make_storage(model.inv_mass.data(), n_ * sizeof(float));
   const std::vector<float> zero(4 * n_, 0.0f);
+  field_ = make_storage(zero.data(), zero.size() * sizeof(float));
   for (int k = 0; k < 2; ++k) {
     x_[k] = make_textured(zero.data(), zero.size() * sizeof(float), GL_RGBA32F);
     v_[k] = make_textured(zero.data(), zero.size() * sizeof(float), GL_RGBA32F);
@@ -121,6 +114,7 @@ GpuCloth::GpuCloth(const Model<float>& model, const Vec3Array<float>& positions,
   glProgramUniform1i(p, location(step_program_, "damped"), damped_ ? 1 : 0);
   glProgramUniform3f(p, location(step_program_, "gravity"), gravity_[0], gravity_[1], gravity_[2]);
   glProgramUniform1f(p, location(step_program_, "drag"), drag_);
+  set_wind_uniforms(model.wind);
   glProgramUniform1ui(faces_program_.get(), location(faces_program_, "triangles"),
                       static_cast<GLuint>(triangle_count_));
   glProgramUniform1ui(normals_program_.get(), location(normals_program_, "n"),
@@ -129,12 +123,18 @@ GpuCloth::GpuCloth(const Model<float>& model, const Vec3Array<float>& positions,
 }
 
 void GpuCloth::set_state(const Vec3Array<float>& positions, const Vec3Array<float>& velocities) {
-  const std::vector<float> x = to_vec4(positions), v = to_vec4(velocities);
   current_ = 0;
-  glNamedBufferSubData(x_[0].buffer.get(), 0, static_cast<GLsizeiptr>(x.size() * sizeof(float)),
-                       x.data());
-  glNamedBufferSubData(v_[0].buffer.get(), 0, static_cast<GLsizeiptr>(v.size() * sizeof(float)),
-                       v.data());
+  const auto bytes = static_cast<GLsizeiptr>(4 * n_ * sizeof(float));
+  staging_.resize(4 * n_);  // allocates once
+  for (const auto& [from, to] : {std::pair{&positions, &x_[0]}, std::pair{&velocities, &v_[0]}}) {
+    for (std::size_t i = 0; i < n_; ++i) {
+      staging_[4 * i] = from->x[i];
+      staging_[4 * i + 1] = from->y[i];
+      staging_[4 * i + 2] = from->z[i];
+      staging_[4 * i + 3] = 0.0f;
+    }
+    glNamedBufferSubData(to->buffer.get(), 0, bytes, staging_.data());
+  }
   force_valid_ = false;
 }
 
@@ -144,59 +144,40 @@ void GpuCloth::dispatch(unsigned items) const {
                   GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
-// One dispatch of cloth_step.comp's `stage` reading the state in x_[src], v_[src] and writing
-// x_[1 - src], v_[1 - src]; Verlet's end kick gathers at (x_[1 - src], v_pred_) instead.
-void GpuCloth::force_pass(int stage, int src) {
-  const int dst = 1 - src;
-  const bool end_kick = stage == kVerletKick;
-  glBindTextureUnit(4, (end_kick ? x_[dst] : x_[src]).texture.get());
-  glBindTextureUnit(5, (end_kick ? v_pred_ : v_[src]).texture.get());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, x_[src].buffer.get());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, v_[src].buffer.get());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, x_[dst].buffer.get());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, v_[dst].buffer.get());
-  glProgramUniform1i(step_program_.get(), stage_location_, stage);
-  dispatch(static_cast<unsigned>(n_));
-}
-
-void GpuCloth::step(int count, float h, IntegratorKind kind) {
-  if (kind != IntegratorKind::symplectic_euler && kind != IntegratorKind::verlet)
-    throw std::invalid_argument("GpuCloth steps symplectic_euler and verlet only");
-  if (count <= 0 || n_ == 0) return;
+// The wind's constants (sim/forces/wind.hpp WindField) as cloth_step.comp's uniforms.
+void GpuCloth::set_wind_uniforms(const WindSpec& spec) {
+  const WindField field(spec);
+  windy_ = spec.enabled && !field.calm() && triangle_count_ > 0;
   const GLuint p = step_program_.get();
-  glUseProgram(p);
-  glProgramUniform1f(p, location(step_program_, "h"), h);
-  glProgramUniform1f(p, location(step_program_, "half_h"), 0.5f * h);  // as the CPU rounds it
-  glBindTextureUnit(0, neighbour_.texture.get());
-  glBindTextureUnit(1, stiffness_.texture.get());
-  glBindTextureUnit(2, rest_length_.texture.get());
-  glBindTextureUnit(3, damping_.texture.get());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, force_.get());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, v_pred_.buffer.get());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, mass_.get());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, inv_mass_.get());
-  if (kind == IntegratorKind::symplectic_euler) {
-    for (int k = 0; k < count; ++k) {
-      force_pass(kSymplecticEuler, current_);
-      current_ = 1 - current_;
-    }
-    force_valid_ = false;  // a later Verlet step evaluates its start force afresh
-  } else {
-    if (!force_valid_) force_pass(kForceOnly, current_);
-    for (int k = 0; k < count; ++k) {
-      force_pass(kVerletDrift, current_);
-      force_pass(kVerletKick, current_);
-      current_ = 1 - current_;
-    }
-    force_valid_ = true;
+  glProgramUniform1i(p, location(step_program_, "windy"), windy_ ? 1 : 0);
+  glProgramUniform1i(p, location(step_program_, "gusty"), windy_ && !field.steady() ? 1 : 0);
+  glProgramUniform3f(p, location(step_program_, "wind"), static_cast<float>(spec.velocity[0]),
+                     static_cast<float>(spec.velocity[1]), static_cast<float>(spec.velocity[2]));
+  glProgramUniform1f(p, location(step_program_, "wind_coefficient"),
+                     static_cast<float>(spec.coefficient));
+  const Vec3d& w = spec.velocity;
+  const double speed2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+  const double lag[3] = {speed2 > 0 ? w[0] / speed2 : 0.0, speed2 > 0 ? w[1] / speed2 : 0.0,
+                         speed2 > 0 ? w[2] / speed2 : 0.0};
+  glProgramUniform3d(p, location(step_program_, "wind_lag"), lag[0], lag[1], lag[2]);
+  glProgramUniform1d(p, location(step_program_, "gust"), spec.gust);
+  glProgramUniform1d(p, location(step_program_, "gust_period"), spec.gust_period);
+  // seed * golden ratio, as detail::lattice_value forms it, for the two octaves' seeds.
+  GLuint seeds[4];
+  for (int k = 0; k < 2; ++k) {
+    const std::uint64_t g = (spec.seed + static_cast<std::uint64_t>(k)) * 0x9e3779b97f4a7c15ULL;
+    seeds[2 * k] = static_cast<GLuint>(g & 0xffffffffu);
+    seeds[2 * k + 1] = static_cast<GLuint>(g >> 32);
   }
-  glUseProgram(0);
+  glProgramUniform2uiv(p, location(step_program_, "gust_seeds"), 2, seeds);
+  time_location_ = location(step_program_, "t");
 }
 
-void GpuCloth::compute_normals() {
-  if (n_ == 0) return;
+// The surface (normals_: unit normal and vertex area) of the positions in `x`: a face pass and a
+// vertex gather pass. Leaves its own program bound.
+void GpuCloth::surface_pass(const TexturedBuffer& x) {
   glUseProgram(faces_program_.get());
-  glBindTextureUnit(0, x_[current_].texture.get());
+  glBindTextureUnit(0, x.texture.get());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, triangles_.get());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, faces_.buffer.get());
   if (triangle_count_ > 0) dispatch(static_cast<unsigned>(triangle_count_));
@@ -205,17 +186,114 @@ void GpuCloth::compute_normals() {
   glBindTextureUnit(1, faces_.texture.get());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, normals_.get());
   dispatch(static_cast<unsigned>(n_));
+}
+
+// One dispatch of cloth_step.comp's `stage` at time t reading the state in x_[src], v_[src] and
+// writing x_[1 - src], v_[1 - src]; Verlet's end kick gathers at (x_[1 - src], v_pred_) instead.
+// `force` receives stages 1 and 3's force (Verlet's store, or the displayed force field).
+void GpuCloth::force_pass(int stage, int src, double t, const Buffer& force) {
+  const int dst = 1 - src;
+  const bool end_kick = stage == kVerletKick;
+  const TexturedBuffer& gather_x = end_kick ? x_[dst] : x_[src];
+  if (windy_ && stage != kVerletDrift) surface_pass(gather_x);
+  const GLuint p = step_program_.get();
+  glUseProgram(p);
+  glBindTextureUnit(0, neighbour_.texture.get());
+  glBindTextureUnit(1, stiffness_.texture.get());
+  glBindTextureUnit(2, rest_length_.texture.get());
+  glBindTextureUnit(3, damping_.texture.get());
+  glBindTextureUnit(4, gather_x.texture.get());
+  glBindTextureUnit(5, (end_kick ? v_pred_ : v_[src]).texture.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, x_[src].buffer.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, v_[src].buffer.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, x_[dst].buffer.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, v_[dst].buffer.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, force.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, v_pred_.buffer.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, mass_.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, inv_mass_.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, normals_.get());
+  glProgramUniform1i(p, stage_location_, stage);
+  glProgramUniform1d(p, time_location_, t);
+  dispatch(static_cast<unsigned>(n_));
+}
+
+void GpuCloth::step(int count, float h, IntegratorKind kind, double t) {
+  if (kind != IntegratorKind::symplectic_euler && kind != IntegratorKind::verlet)
+    throw std::invalid_argument("GpuCloth steps symplectic_euler and verlet only");
+  if (count <= 0 || n_ == 0) return;
+  const GLuint p = step_program_.get();
+  glProgramUniform1f(p, location(step_program_, "h"), h);
+  glProgramUniform1f(p, location(step_program_, "half_h"), 0.5f * h);  // as the CPU rounds it
+  // The CPU integrators take the time of each step and of Verlet's end force this way.
+  const double hd = static_cast<double>(h);
+  if (kind == IntegratorKind::symplectic_euler) {
+    for (int k = 0; k < count; ++k) {
+      force_pass(kSymplecticEuler, current_, t + k * hd, force_);
+      current_ = 1 - current_;
+    }
+    force_valid_ = false;  // a later Verlet step evaluates its start force afresh
+  } else {
+    if (!force_valid_) force_pass(kForceOnly, current_, t, force_);
+    for (int k = 0; k < count; ++k) {
+      force_pass(kVerletDrift, current_, t + k * hd, force_);
+      force_pass(kVerletKick, current_, t + k * hd + hd, force_);
+      current_ = 1 - current_;
+    }
+    force_valid_ = true;
+  }
   glUseProgram(0);
 }
 
+void GpuCloth::compute_force_field(double t) {
+  if (n_ == 0) return;
+  force_pass(kForceOnly, current_, t, field_);
+  glUseProgram(0);
+}
+
+void GpuCloth::read_force_field(Vec3Array<float>& f) const {
+  read_vec4(field_, f);
+}
+
+void GpuCloth::set_inverse_masses(const float* inv_mass) {
+  glNamedBufferSubData(inv_mass_.get(), 0, static_cast<GLsizeiptr>(n_ * sizeof(float)), inv_mass);
+  force_valid_ = false;
+}
+
+void GpuCloth::invalidate_force() {
+  force_valid_ = false;
+}
+
+void GpuCloth::compute_normals() {
+  if (n_ == 0) return;
+  surface_pass(x_[current_]);
+  glUseProgram(0);
+}
+
+const std::vector<float>& GpuCloth::load_staging(const Buffer& b) const {
+  staging_.resize(4 * n_);
+  glGetNamedBufferSubData(b.get(), 0, static_cast<GLsizeiptr>(staging_.size() * sizeof(float)),
+                          staging_.data());
+  return staging_;
+}
+
 void GpuCloth::read_vec4(const Buffer& b, float* xyz) const {
-  std::vector<float> v(4 * n_);
-  glGetNamedBufferSubData(b.get(), 0, static_cast<GLsizeiptr>(v.size() * sizeof(float)), v.data());
+  const std::vector<float>& v = load_staging(b);
   for (std::size_t i = 0; i < n_; ++i) {
     xyz[3 * i] = v[4 * i];
     xyz[3 * i + 1] = v[4 * i + 1];
     xyz[3 * i + 2] = v[4 * i + 2];
   }
+}
+
+void GpuCloth::read_vec4(const Buffer& b, Vec3Array<float>& a) const {
+  const std::vector<float>& v = load_staging(b);
+  for (std::size_t i = 0; i < n_; ++i) a.set(i, v[4 * i], v[4 * i + 1], v[4 * i + 2]);
+}
+
+void GpuCloth::read_state(Vec3Array<float>& positions, Vec3Array<float>& velocities) const {
+  read_vec4(x_[current_].buffer, positions);
+  read_vec4(v_[current_].buffer, velocities);
 }
 
 void GpuCloth::read_positions(float* xyz) const {

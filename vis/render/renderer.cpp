@@ -9,6 +9,7 @@
 #include "sim/solver.hpp"
 #include "vis/colormap/colormap_texture.hpp"
 #include "vis/gl/program.hpp"
+#include "vis/gpu/gpu_solver.hpp"
 #include "vis/passes/diffusion_pass.hpp"
 #include "vis/passes/shadow_pass.hpp"
 #include "vis/passes/sky_pass.hpp"
@@ -237,6 +238,7 @@ void Renderer::set_cloth(Solver& solver) {
   line_indices_ = static_cast<GLsizei>(lines.size());
 
   dynamic_vbo_ = make_buffer();
+  seam_source_ = Buffer();
   static_vbo_ = make_buffer();
   scalar_vbo_ = make_buffer();
   tangent_vbo_ = make_buffer();
@@ -293,6 +295,8 @@ void Renderer::set_cloth(Solver& solver) {
 }
 
 void Renderer::update_cloth(Solver& solver) {
+  GpuSolver* gpu = dynamic_cast<GpuSolver*>(&solver);
+  gpu_source_ = gpu ? &gpu->gpu() : nullptr;
   solver.copy_positions(staging_.data());
   // The cloth's current bounds: the light's frustum follows the cloth, so the shadow map spends
   // its texels on it wherever it has moved.
@@ -308,6 +312,11 @@ void Renderer::update_cloth(Solver& solver) {
   cloth_hi_ = hi;
   tangents_stale_ = true;
   if (colliders_) colliders_->update(solver.time());  // where the moving ones are now
+  if (gpu) {
+    gpu->gpu().compute_normals();
+    pack_from_gpu(gpu->gpu());
+    return;
+  }
   const std::size_t rn = render_vertex_count();
   solver.copy_normals(staging_.data() + 3 * rn);
   // The seam copies take their solver vertex's position and normal.
@@ -323,10 +332,38 @@ void Renderer::update_cloth(Solver& solver) {
                        static_cast<GLsizeiptr>(staging_.size() * sizeof(float)), staging_.data());
 }
 
+void Renderer::pack_from_gpu(const GpuCloth& gpu) {
+  const std::size_t rn = render_vertex_count();
+  if (!pack_program_) pack_program_ = build_program({"cloth_pack.comp"});
+  if (!seam_source_) {  // after each set_cloth
+    std::vector<std::int32_t> seams(seam_copies_.begin(), seam_copies_.end());
+    seam_source_ = make_buffer();
+    glNamedBufferStorage(seam_source_.get(),
+                         static_cast<GLsizeiptr>(std::max<std::size_t>(1, seams.size()) * 4),
+                         seams.empty() ? nullptr : seams.data(), 0);
+  }
+  const GLuint p = pack_program_.get();
+  glProgramUniform1ui(p, glGetUniformLocation(p, "n"), static_cast<GLuint>(vertices_));
+  glProgramUniform1ui(p, glGetUniformLocation(p, "render_n"), static_cast<GLuint>(rn));
+  glUseProgram(p);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, gpu.position_buffer());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, gpu.normal_buffer());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, seam_source_.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, dynamic_vbo_.get());
+  glDispatchCompute(static_cast<GLuint>((rn + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
+                  GL_BUFFER_UPDATE_BARRIER_BIT);
+  glUseProgram(0);
+}
+
 // The tangent frame of every grid cloth from the positions and normals of the last
 // update_cloth(), only when a mode that needs it is drawn.
 void Renderer::update_tangents() {
   if (!tangents_stale_ || vertices_ == 0) return;
+  if (gpu_source_) {  // the normals stayed on the GPU: the tangents need them here
+    const std::size_t rn = render_vertex_count();
+    gpu_source_->read_normals(staging_.data() + 3 * rn);
+  }
   const float* positions = staging_.data();
   const float* normals = staging_.data() + 3 * render_vertex_count();
   for (const ClothRange& c : grids_) {

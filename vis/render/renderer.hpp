@@ -22,6 +22,8 @@ struct Image;
 
 namespace clothlab::vis {
 
+class GpuCloth;
+
 class ColliderScenery;
 class DiffusionPass;
 class Scenery;
@@ -44,6 +46,9 @@ class Renderer {
   // Uploads the current positions and smooth normals (computed in parallel by the solver) into
   // the vertex buffer, in place, and poses moving colliders at the solver's time(). Call once
   // per frame before draw().
+  // With the GPU backend (vis/gpu/gpu_solver.hpp) the positions and normals go from the solver's
+  // buffers into the vertex buffer by a compute pass (shaders/cloth_pack.comp), never through the
+  // CPU; the CPU reads only the state mirror the solver keeps anyway, for the cloth's bounds.
   void update_cloth(Solver& solver);
   // The colour-by scalar, one per vertex (vertex_count() values), and the range the colour map
   // spans, for draws while view.color.field is not none.
@@ -87,6 +92,7 @@ class Renderer {
   void draw_shadow_map(const ViewSettings& view, bool translucent);
   void draw_sky(const ViewSettings& view, const glm::mat4& view_proj, glm::vec3 centre);
   void update_tangents();
+  void pack_from_gpu(const GpuCloth& gpu);  // update_cloth's vertex buffer with the GPU backend
   void set_thread_fraction(double fraction);
   void set_weave_bump(double strength);
   void upload_normal_map(const Image& map);
@@ -126,7 +132,12 @@ class Renderer {
   std::vector<float> staging_;         // positions, then normals, per render vertex
   std::vector<float> scalar_staging_;  // the colour-by scalar per render vertex
   std::size_t vertices_ = 0;           // the solver's
-  std::vector<int> seam_copies_;       // render vertex vertices_ + k copies solver vertex [k]
+  // The GPU backend's cloth the last update_cloth() packed from (normals for the tangents are
+  // read back from it only when a mode needs them), else null.
+  const GpuCloth* gpu_source_ = nullptr;
+  Program pack_program_;          // cloth_pack.comp, built on the first GPU-backend frame
+  Buffer seam_source_;            // seam_copies_ for cloth_pack.comp
+  std::vector<int> seam_copies_;  // render vertex vertices_ + k copies solver vertex [k]
   GLsizei triangle_indices_ = 0, line_indices_ = 0;
 };
 

@@ -74,8 +74,22 @@ bool step_editors(SolverSpec& s, const Solver& running) {
 }
 
 // Integrator, dt, springs, drag, wind: applied to the running motion once an edit is finished.
+// solver.backend: where the cloth steps. The motion carries over (load_state) either way; a scene
+// the GPU cannot run stays on the CPU and the panel's message says why.
+bool backend_radio(Backend& backend) {
+  int b = backend == Backend::gpu ? 1 : 0;
+  bool edited = ImGui::RadioButton("CPU", &b, 0);
+  ImGui::SameLine();
+  edited |= ImGui::RadioButton("GPU (compute shaders)", &b, 1);
+  ImGui::SameLine();
+  ImGui::TextUnformatted("backend");
+  backend = b == 1 ? Backend::gpu : Backend::cpu;
+  return edited;
+}
+
 bool dynamics_editors(Scene& draft, const Solver& running) {
-  bool edited = integrator_combo(draft.solver.integrator);
+  bool edited = backend_radio(draft.solver.backend);
+  edited |= integrator_combo(draft.solver.integrator);
   edited |= step_editors(draft.solver, running);
   edited |= spring_editors(draft.springs);
   for (ClothSpec& cloth : draft.cloths) {
@@ -159,11 +173,13 @@ void statistics(SimSession& session, const FrameStats& stats) {
   ImGui::Text("simulated time   %.3f s  (step %ld)", solver.time(), solver.step_count());
   ImGui::Text("steps per frame  %.1f", stats.steps_per_frame());
   ImGui::Text("time per step    %.4f ms", stats.ms_per_step());
+  ImGui::Text("simulation/frame %.2f ms", stats.ms_per_step() * stats.steps_per_frame());
   const SolveStats last = solver.last_solve();
   if (last.iterations > 0)
     ImGui::Text("iterations       %d per substep, residual %.2g%s", last.iterations, last.residual,
                 last.converged ? "" : " (at the cap)");
   ImGui::Text("frame time       %.1f ms", stats.frame_ms());
+  ImGui::Text("cloth copies     %d  ([ and ])", session.copies());
   ImGui::Text("vertices         %zu", solver.vertex_count());
   ImGui::Text("springs          %zu", solver.spring_count());
   ImGui::Text("threads          %d", solver.threads());

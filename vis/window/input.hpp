@@ -31,6 +31,8 @@ enum class Action {
   reset,                 // R
   more_vertices,         // +
   fewer_vertices,        // -
+  more_copies,           // ]: twice the copies of the cloth
+  fewer_copies,          // [: half
   toggle_parallel,       // M
   toggle_help,           // H
   screenshot,            // F12

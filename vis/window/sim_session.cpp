@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "sim/scene/scene_copies.hpp"
 #include "sim/scene/scene_error.hpp"
 #include "sim/scene/validate.hpp"
 #include "vis/window/scene_edit.hpp"
@@ -19,9 +20,15 @@ std::string edit_message(const SceneError& e) {
 
 }  // namespace
 
-SimSession::SimSession(Scene scene)
-    : base_(scene), applied_(scene), draft_(std::move(scene)), solver_(build(applied_)) {
+SimSession::SimSession(Scene scene, SolverFactory factory)
+    : factory_(std::move(factory)), base_(scene), applied_(scene), draft_(std::move(scene)) {
+  solver_ = build(applied_);
+  rebuilt();
   choose_threads();
+}
+
+void SimSession::rebuilt() {
+  built_ = with_copies(applied_, copies_, spacing_);
 }
 
 void SimSession::choose_threads() {
@@ -31,9 +38,13 @@ void SimSession::choose_threads() {
   solver_->set_threads(threads);
 }
 
-std::unique_ptr<Solver> SimSession::build(const Scene& scene) const {
+std::unique_ptr<Solver> SimSession::build(const Scene& scene) {
   validate_scene(scene);
-  return make_solver(scene);
+  const Scene copied = with_copies(scene, copies_, spacing_);
+  std::string note;
+  std::unique_ptr<Solver> solver = factory_ ? factory_(copied, note) : make_solver(copied);
+  backend_note_ = note;
+  return solver;
 }
 
 void SimSession::apply_dynamics() {
@@ -48,6 +59,7 @@ void SimSession::apply_dynamics() {
   }
   error_.clear();
   applied_ = std::move(candidate);
+  rebuilt();
   // A diverged state is not worth carrying over: the new values wait for R.
   if (divergence_) return;
   next->load_state(*solver_);
@@ -74,6 +86,7 @@ void SimSession::reset() {
     return;
   }
   applied_ = draft_;
+  rebuilt();
   error_.clear();
   structure_error_.clear();
   divergence_.reset();
@@ -82,10 +95,19 @@ void SimSession::reset() {
 }
 
 void SimSession::load(Scene scene) {
-  std::unique_ptr<Solver> next = build(scene);  // throws: the running scene stays
+  const int copies = copies_;
+  copies_ = 1;  // a new scene starts as one
+  std::unique_ptr<Solver> next;
+  try {
+    next = build(scene);
+  } catch (...) {
+    copies_ = copies;  // the running scene stays
+    throw;
+  }
   if (recording()) stop_recording();
   solver_ = std::move(next);
   base_ = applied_ = draft_ = std::move(scene);
+  rebuilt();
   error_.clear();
   structure_error_.clear();
   divergence_.reset();
@@ -96,6 +118,43 @@ void SimSession::load(Scene scene) {
 
 void SimSession::scale_resolution(double factor) {
   if (vis::scale_resolution(draft_, factor)) reset();
+}
+
+std::string SimSession::set_copies(int copies) {
+  copies = std::clamp(copies, 1, kMaxCopies);
+  if (copies == copies_) return {};
+  if (std::string why = copies_unsupported_reason(applied_); !why.empty()) return why;
+  if (copies_ == 1) {
+    // A quarter of the original's horizontal extent apart (at least 0.25 m).
+    const std::size_t n = solver_->vertex_count();
+    std::vector<float> xyz(3 * n);
+    solver_->copy_rest_positions(xyz.data());
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (std::size_t v = 0; v < n; ++v) {
+      for (int k = 0; k < 2; ++k) {
+        lo[k] = std::min(lo[k], double(xyz[3 * v + 2 * k]));
+        hi[k] = std::max(hi[k], double(xyz[3 * v + 2 * k]));
+      }
+    }
+    const double extent = n > 0 ? std::max(hi[0] - lo[0], hi[1] - lo[1]) : 1.0;
+    spacing_ = extent + std::max(0.25, 0.25 * extent);
+  }
+  const int before = copies_;
+  copies_ = copies;
+  std::unique_ptr<Solver> next;
+  try {
+    next = build(applied_);
+  } catch (const SceneError& e) {
+    copies_ = before;
+    return edit_message(e);
+  }
+  if (recording()) stop_recording();
+  solver_ = std::move(next);
+  rebuilt();
+  divergence_.reset();
+  ++generation_;
+  choose_threads();
+  return {};
 }
 
 void SimSession::toggle_wind() {

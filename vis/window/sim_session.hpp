@@ -2,9 +2,11 @@
 // built from, and the panel's draft of the next one. Edits go to the draft; values that keep the
 // topology apply at once (a new solver takes over the motion with load_state), structural ones
 // (resolution) on reset. Every edit passes validate_scene first; a bad value is reported, not
-// applied. No GL here.
+// applied. The solver itself comes from a factory (the window's makes the GPU backend's when
+// solver.backend = "gpu"); no GL here.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -16,15 +18,22 @@
 
 namespace clothlab::vis {
 
+// Makes the solver for a validated scene; sets `note` to one line when it could not give the
+// backend the scene asks for (and gave the CPU's), else leaves it empty.
+using SolverFactory = std::function<std::unique_ptr<Solver>(const Scene&, std::string& note)>;
+
 class SimSession {
  public:
-  // Builds the solver; throws SceneError when the scene cannot be built.
-  explicit SimSession(Scene scene);
+  // Builds the solver (with make_solver when `factory` is empty); throws SceneError when the
+  // scene cannot be built.
+  explicit SimSession(Scene scene, SolverFactory factory = {});
 
   Solver& solver() { return *solver_; }
   const Solver& solver() const { return *solver_; }
-  const Scene& scene() const { return applied_; }  // what the solver was built from
-  Scene& draft() { return draft_; }                // what the panel edits
+  // What the solver was built from: the applied scene with its copies (every cloth and collider
+  // the renderer draws).
+  const Scene& scene() const { return built_; }
+  Scene& draft() { return draft_; }  // what the panel edits
   // Counts rebuilds from scratch: when it changes, the cloth's topology may have changed and
   // the renderer needs set_cloth.
   long generation() const { return generation_; }
@@ -42,6 +51,14 @@ class SimSession {
   void load(Scene scene);
   // + / -: scales the draft's resolution by factor and resets.
   void scale_resolution(double factor);
+  // [ and ]: the number of copies of the scene's cloths (and the colliders under them) side by
+  // side, 1..kMaxCopies, each simulated (sim/scene/scene_copies.hpp); the run restarts at t = 0.
+  // Returns a one-line reason when the scene cannot be copied (nothing changes then).
+  std::string set_copies(int copies);
+  int copies() const { return copies_; }
+  static constexpr int kMaxCopies = 64;
+  // Why the running solver is not the backend the scene asks for (empty when it is).
+  const std::string& backend_note() const { return backend_note_; }
   void toggle_wind();
   // M: all cores <-> one thread. Until M is pressed the session chooses: all cores (the scene's
   // threads setting) from kParallelVertices vertices up, one thread below. The window's OpenMP
@@ -78,13 +95,19 @@ class SimSession {
   bool structure_pending() const;  // the draft's resolution differs from the running one
 
  private:
-  std::unique_ptr<Solver> build(const Scene& scene) const;
+  // Validates `scene` and builds the solver for it with copies_ copies.
+  std::unique_ptr<Solver> build(const Scene& scene);
+  void rebuilt();         // after applied_ or copies_ changed: the built scene follows
   void choose_threads();  // while the user has not pressed M
   FrameAdvance advance_recording(const FrameStepper& stepper, double wall_seconds);
   void record_step();
 
   bool parallel_chosen_ = false;  // M was pressed: keep the user's choice
-  Scene base_, applied_, draft_;
+  SolverFactory factory_;
+  int copies_ = 1;
+  double spacing_ = 0.0;  // m between copies, from the original's extent
+  std::string backend_note_;
+  Scene base_, applied_, draft_, built_;
   std::unique_ptr<Solver> solver_;
   std::optional<Divergence> divergence_;
   std::string error_, structure_error_;

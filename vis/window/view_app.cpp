@@ -14,6 +14,7 @@
 #include "sim/solver.hpp"
 #include "sim/trace/trace_run.hpp"
 #include "vis/gl/gl.hpp"
+#include "vis/gpu/gpu_solver.hpp"
 #include "vis/render/diagnostics.hpp"
 #include "vis/render/field_pass.hpp"
 #include "vis/render/renderer.hpp"
@@ -87,11 +88,11 @@ ViewHooks ViewHooks::from_environment() {
 }
 
 ViewApp::ViewApp(Scene scene, ViewHooks hooks)
-    : session_(std::move(scene)),
+    : scene_name_(std::filesystem::path(scene.file).filename().string()),
+      window_("ClothLab — " + scene_name_, kInitialWidth, kInitialHeight),
+      session_(std::move(scene), make_backend_solver),
       hooks_(std::move(hooks)),
       music_(hooks_.no_audio),
-      scene_name_(std::filesystem::path(session_.scene().file).filename().string()),
-      window_("ClothLab — " + scene_name_, kInitialWidth, kInitialHeight),
       renderer_(std::make_unique<Renderer>()),
       diagnostics_(std::make_unique<Diagnostics>()),
       view_(scene_view(session_.scene(), session_.solver())) {
@@ -100,7 +101,36 @@ ViewApp::ViewApp(Scene scene, ViewHooks hooks)
   // A push of 0.5 m/s on average over the whole cloth: visible, never violent.
   panel_.push_strength = 0.5 * total_mass(session_.scene());
   music_.load(session_.scene());
+  report_backend();
   last_frame_time_ = glfwGetTime();
+}
+
+const char* ViewApp::backend_name() const {
+  return dynamic_cast<const GpuSolver*>(&session_.solver()) ? "GPU" : "CPU";
+}
+
+void ViewApp::report_backend() {
+  if (session_.backend_note() == shown_backend_note_) return;
+  shown_backend_note_ = session_.backend_note();
+  if (shown_backend_note_.empty()) return;
+  panel_.message = shown_backend_note_;
+  std::printf("clothlab view: %s\n", shown_backend_note_.c_str());
+}
+
+// [ and ]: the scene's cloth repeated side by side, framed so every copy is in view.
+void ViewApp::change_copies(int copies) {
+  stop_recording();  // a new run starts at t = 0
+  const std::string why = session_.set_copies(copies);
+  if (!why.empty()) {
+    panel_.message = "copies: " + why;
+    std::printf("clothlab view: %s\n", panel_.message.c_str());
+    return;
+  }
+  view_.camera = scene_view(session_.scene(), session_.solver()).camera;
+  report_backend();
+  std::printf("clothlab view: %d %s (%zu vertices)\n", session_.copies(),
+              session_.copies() == 1 ? "copy" : "copies", session_.solver().vertex_count());
+  last_title_time_ = -1.0;
 }
 
 // The GL objects and the UI go before the window, which owns the context.
@@ -161,11 +191,13 @@ int ViewApp::run() {
     const double n = static_cast<double>(run_frames_);
     std::printf(
         "clothlab view: %ld frames: %.2f ms/frame, %.2f ms/frame simulation (%.1f steps), "
-        "%.0f %% of real time simulated\n",
+        "%.0f %% of real time simulated (%d %s, %s backend, %zu vertices)\n",
         run_frames_, 1e3 * run_totals_.frame_seconds / n, 1e3 * run_totals_.step_seconds / n,
         double(run_totals_.steps) / n,
         run_totals_.frame_seconds > 0.0 ? 100.0 * run_totals_.simulated / run_totals_.frame_seconds
-                                        : 0.0);
+                                        : 0.0,
+        session_.copies(), session_.copies() == 1 ? "copy" : "copies", backend_name(),
+        session_.solver().vertex_count());
   }
   return 0;
 }
@@ -211,6 +243,7 @@ void ViewApp::frame() {
     open_scene(*panel_.open_scene);
     panel_.open_scene.reset();
   }
+  report_backend();
   if (view_.mode != DisplayMode::springs) last_shaded_ = view_.mode;
   draw_help_overlay(panel_.show_help);
   draw_status_overlay(session_, stats_);
@@ -326,6 +359,12 @@ void ViewApp::dispatch(Action action) {
     case Action::fewer_vertices:
       stop_recording();
       session_.scale_resolution(1.0 / kResolutionFactor);
+      break;
+    case Action::more_copies:
+      change_copies(2 * session_.copies());
+      break;
+    case Action::fewer_copies:
+      change_copies(session_.copies() / 2);
       break;
     case Action::toggle_parallel:
       session_.toggle_parallel();
@@ -593,10 +632,19 @@ void ViewApp::update_title() {
   const double now = glfwGetTime();
   if (now - last_title_time_ < kTitleRefreshSeconds) return;
   last_title_time_ = now;
-  char timing[96];
-  std::snprintf(timing, sizeof timing, "%.3f ms/step, %.1f ms/frame", stats_.ms_per_step(),
+  char timing[160];
+  std::snprintf(timing, sizeof timing,
+                "%d %s on the %s — simulation %.3f ms/step, %.2f ms/frame — %.1f ms/frame",
+                session_.copies(), session_.copies() == 1 ? "cloth" : "cloths", backend_name(),
+                stats_.ms_per_step(), stats_.ms_per_step() * stats_.steps_per_frame(),
                 stats_.frame_ms());
   std::string title = "ClothLab — " + scene_name_ + " — " + timing;
+  if (stats_.behind() && !session_.paused && !session_.divergence()) {
+    char behind[64];
+    std::snprintf(behind, sizeof behind, " — behind: %.0f %% of real time",
+                  stats_.real_time_percent());
+    title += behind;
+  }
   if (session_.divergence())
     title += " — diverged (R resets)";
   else if (session_.paused)

@@ -94,13 +94,19 @@ class ViewApp {
   void release_pins();
   void drag_hook();  // CLOTHLAB_VIEW_DRAG
   void open_scene(const std::string& path);
+  void change_copies(int copies);    // [ and ]
+  void report_backend();             // prints the session's backend note when it changes
+  const char* backend_name() const;  // "CPU" or "GPU": where the running solver steps
 
+  // The window (and its GL context) first: the GPU backend's solver needs the context to be
+  // built, and goes before it on destruction.
+  std::string scene_name_;
+  GlfwWindow window_;
   SimSession session_;
+  std::string shown_backend_note_;  // the session's note last printed
   ViewHooks hooks_;
   MusicSync music_;  // the scene's music, and the audio clock while it plays
   MusicPlot music_plot_;
-  std::string scene_name_;
-  GlfwWindow window_;
   std::unique_ptr<Renderer> renderer_;
   // Only while a probe is on (and for the pick of a Ctrl + drag); sized to the framebuffer.
   std::unique_ptr<FieldPass> field_pass_;
