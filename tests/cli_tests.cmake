@@ -9,7 +9,7 @@ set(CLOTHLAB_DEFAULT_SCENE ${PROJECT_SOURCE_DIR}/scenes/default.toml)
 # matching REGEX. ARGS must not contain '|' (expect_exit.cmake's separator).
 function(clothlab_cli_test name rc regex)
   set(environment "${CLOTHLAB_TEST_ENVIRONMENT}")
-  if(name MATCHES "^(render|view)\\." OR name MATCHES "^bench\\.backends")  # an OpenGL context
+  if(name MATCHES "^(render|view)\\." OR name MATCHES "^(bench\\.backends|trace\\.gpu)")  # GL
     set(environment "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
   endif()
   string(JOIN "|" args ${ARGN})
@@ -136,6 +136,18 @@ clothlab_cli_test(set.bad_dt_word 2 "solver.dt: expected a number of seconds or 
 # `clothlab bench`: a reduced suite writes its tables; a bad suite name is bad input.
 clothlab_cli_test(bench.stability_quick 0 "Largest stable dt.*wrote .*stability\\.csv.*wrote .*stability_stress\\.csv"
   bench --suite stability --quick --out ${CLOTHLAB_TRACE_OUT}/bench/stability.csv)
+# solver.backend = "gpu" from the command line: trace and render step the cloth on the GPU and say
+# so; a scene the GPU cannot run says why in one line and runs on the CPU.
+clothlab_cli_test(trace.gpu_backend 0 "ms/step \\(symplectic_euler, float, GPU, .*wrote"
+  trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.05 --out ${CLOTHLAB_TRACE_OUT}/trace_gpu.csv
+  --set solver.backend=gpu)
+clothlab_cli_test(trace.gpu_backend_rk4 0
+  "clothlab trace: solver\\.backend = \"gpu\": the GPU step runs symplectic_euler and verlet, not rk4; the cloth steps on the CPU.*float, CPU,"
+  trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.02 --out ${CLOTHLAB_TRACE_OUT}/trace_gpu_rk4.csv
+  --set solver.backend=gpu --set solver.integrator=rk4)
+clothlab_cli_test(render.gpu_backend 0 "steps of [0-9.]+ s on the GPU\\)"
+  render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 160x90 --quiet
+  --out ${CLOTHLAB_TRACE_OUT}/render_gpu --set solver.backend=gpu)
 # The GPU backend against the CPU solver (an OpenGL context: EGL on llvmpipe in CI).
 clothlab_cli_test(bench.backends_quick 0 "CPU and GPU backends.*gpu .*32x32.*wrote .*backends\\.csv"
   bench --suite backends --quick --out ${CLOTHLAB_TRACE_OUT}/bench/backends.csv)
@@ -268,16 +280,27 @@ if(XVFB_RUN)
   # clothlab_view_test(NAME HOOKS REGEX): `clothlab view` on the default scene in a 1280x800
   # virtual screen with the test hooks HOOKS (VAR=value entries joined by '|'), which must exit
   # 0 and print a line matching REGEX.
+  # Arguments after REGEX follow the scene on the command line.
   function(clothlab_view_test name hooks regex)
+    set(extra "")
+    foreach(arg ${ARGN})
+      string(APPEND extra "|${arg}")
+    endforeach()
     add_test(NAME cli.view.${name}
       COMMAND ${CMAKE_COMMAND}
-        "-DCOMMAND=${CMAKE_COMMAND}|-E|env|--unset=WAYLAND_DISPLAY|${hooks}|${XVFB_RUN}|-a|-s|-screen 0 1280x800x24|$<TARGET_FILE:clothlab>|view|${CLOTHLAB_DEFAULT_SCENE}"
+        "-DCOMMAND=${CMAKE_COMMAND}|-E|env|--unset=WAYLAND_DISPLAY|${hooks}|${XVFB_RUN}|-a|-s|-screen 0 1280x800x24|$<TARGET_FILE:clothlab>|view|${CLOTHLAB_DEFAULT_SCENE}${extra}"
         "-DEXPECT_RC=0"
         "-DEXPECT_REGEX=${regex}"
         -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
     set_tests_properties(cli.view.${name} PROPERTIES TIMEOUT 120
       ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
   endfunction()
+  # ] twice: four copies of the cloth side by side, stepped on the GPU; [ halves them again (at
+  # one copy it does nothing). The hook spells the brackets out: CMake lists mangle them.
+  clothlab_view_test(gpu_copies
+    "CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=12|CLOTHLAB_VIEW_KEYS=LeftBracket,,RightBracket,,RightBracket,,,,LeftBracket,,RightBracket"
+    "clothlab view: 4 copies \\(4096 vertices\\).*clothlab view: 2 copies \\(2048 vertices\\).*frames: .*\\(4 copies, GPU backend, 4096 vertices\\)"
+    --set solver.backend=gpu)
   # D drops the cloth: the solver lets go of its pins (the window says so only when it has).
   clothlab_view_test(drop_key "CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=6|CLOTHLAB_VIEW_KEYS=,,D"
     "clothlab view: pins released")

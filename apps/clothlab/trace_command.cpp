@@ -1,11 +1,16 @@
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "apps/clothlab/commands.hpp"
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
 #include "sim/trace/trace_run.hpp"
+#include "vis/gl/gl_error.hpp"
+#include "vis/gl/headless_context.hpp"
+#include "vis/gpu/gpu_solver.hpp"
 
 namespace clothlab::app {
 
@@ -22,7 +27,22 @@ int run_trace_command(const TraceArgs& args) {
   std::optional<Scene> loaded = load_scene("trace", args.scene, args.overrides);
   if (!loaded) return kBadInput;
   Scene& scene = *loaded;
-  const auto solver = make_solver(scene);
+  // solver.backend = "gpu" steps the cloth in a headless GL context of its own.
+  std::optional<vis::HeadlessContext> context;
+  std::string no_context;
+  if (scene.solver.backend == Backend::gpu) {
+    try {
+      context.emplace();
+    } catch (const vis::GlUnavailable& e) {
+      no_context =
+          std::string("solver.backend = \"gpu\": ") + e.what() + "; the cloth steps on the CPU";
+      scene.solver.backend = Backend::cpu;
+    }
+  }
+  std::string backend_note;
+  const auto solver = vis::make_backend_solver(scene, backend_note);
+  if (backend_note.empty()) backend_note = no_context;
+  if (!backend_note.empty()) std::printf("clothlab trace: %s\n", backend_note.c_str());
   const TraceSpec spec = scene.trace ? *scene.trace : default_trace(scene);
   const bool doubles = scene.solver.precision == Precision::f64;
   TraceRunResult r;
@@ -43,12 +63,14 @@ int run_trace_command(const TraceArgs& args) {
   if (solver->substeps() > 1)
     std::snprintf(substeps, sizeof substeps, " (%d substeps)", solver->substeps());
   std::printf(
-      "trace: %.6g s simulated in %ld steps of %g s%s%s, %.4g ms/step (%s, %s, %d thread(s), %zu "
+      "trace: %.6g s simulated in %ld steps of %g s%s%s, %.4g ms/step (%s, %s, %s, %d thread(s), "
+      "%zu "
       "vertices), final energy %.6g J (kinetic %.4g, elastic %.4g, gravity %.6g); wrote %s "
       "(%ld steps)\n",
       r.simulated_time, r.steps, solver->dt(), scene.solver.dt_auto ? " (auto)" : "", substeps,
       ms_per_step, to_string(scene.solver.integrator), doubles ? "double" : "float",
-      solver->threads(), solver->vertex_count(), r.final_energy.total(), r.final_energy.kinetic,
+      dynamic_cast<const vis::GpuSolver*>(solver.get()) ? "GPU" : "CPU", solver->threads(),
+      solver->vertex_count(), r.final_energy.total(), r.final_energy.kinetic,
       r.final_energy.elastic, r.final_energy.gravity, args.out.c_str(), r.rows);
   // The iterative methods' work: PCG iterations (implicit_euler) or sweeps per substep.
   const SolveTotals& t = solver->solve_totals();

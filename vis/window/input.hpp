@@ -52,7 +52,8 @@ std::span<const KeyBinding> key_bindings();
 
 // The action of a GLFW key event (GLFW_PRESS or GLFW_REPEAT), if any.
 std::optional<Action> action_for_key(int glfw_key, int glfw_action);
-// The action named like a binding ("P", "Space", "F12"), for the test hook.
+// The action named like a binding ("P", "Space", "F12"; "[" and "]" also as "LeftBracket" and
+// "RightBracket"), for the test hook.
 std::optional<Action> action_named(std::string_view name);
 
 // Display mode after key 1-3: key 1 toggles between springs and the last shaded mode.
