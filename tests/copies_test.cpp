@@ -140,8 +140,9 @@ TEST(Copies, SessionClampsAndRestarts) {
 
 TEST(Copies, ScenesThatCannotBeCopiedSayWhy) {
   Scene s = drop(IntegratorKind::symplectic_euler);
-  s.colliders[0].kind = ColliderKind::mesh;
-  EXPECT_EQ(copies_unsupported_reason(s), "colliders[0]: mesh colliders are not copied");
+  s.mannequin.emplace();
+  EXPECT_EQ(copies_unsupported_reason(s),
+            "the mannequin is one body: a scene with a mannequin is not copied");
   EXPECT_THROW(with_copies(s, 2, 2.0), std::invalid_argument);
   EXPECT_EQ(with_copies(s, 1, 2.0).cloths.size(), 1u);
   Scene follow = drop(IntegratorKind::symplectic_euler);

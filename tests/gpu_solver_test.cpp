@@ -21,6 +21,7 @@
 #include "vis/gpu/gpu_solver.hpp"
 #include "vis/render/headless_renderer.hpp"
 #include "vis/render/view_settings.hpp"
+#include "vis/window/sim_session.hpp"
 
 namespace clothlab {
 namespace {
@@ -237,6 +238,34 @@ TEST_F(GpuSolverTest, ScenesTheGpuCannotRunStayOnTheCpuWithAReason) {
   scene.solver.precision = Precision::f64;
   EXPECT_EQ(dynamic_cast<vis::GpuSolver*>(vis::make_backend_solver(scene, note).get()), nullptr);
   EXPECT_NE(note.find("float, not double"), std::string::npos);
+}
+
+// The panel's CPU / GPU switch (SimSession::apply_dynamics with the window's factory) carries the
+// running motion over, both ways; a choice the GPU cannot run stays on the CPU with the reason.
+TEST_F(GpuSolverTest, PanelSwitchCarriesTheMotionOver) {
+  vis::SimSession session(windy(IntegratorKind::symplectic_euler), vis::make_backend_solver);
+  const FrameStepper stepper;
+  for (int f = 0; f < 5; ++f) session.advance(stepper, 1.0 / 60.0);
+  const double t = session.solver().time();
+  const Vec3d p = session.solver().position(kRes * kRes - 1);
+  session.draft().solver.backend = Backend::gpu;
+  session.apply_dynamics();
+  ASSERT_NE(dynamic_cast<const vis::GpuSolver*>(&session.solver()), nullptr);
+  EXPECT_EQ(session.backend_note(), "");
+  EXPECT_EQ(session.solver().time(), t);
+  EXPECT_EQ(session.solver().position(kRes * kRes - 1), p);
+  for (int f = 0; f < 5; ++f) session.advance(stepper, 1.0 / 60.0);
+  EXPECT_GT(session.solver().time(), t);
+  const Vec3d q = session.solver().position(kRes * kRes - 1);
+  session.draft().solver.backend = Backend::cpu;
+  session.apply_dynamics();
+  EXPECT_EQ(dynamic_cast<const vis::GpuSolver*>(&session.solver()), nullptr);
+  EXPECT_EQ(session.solver().position(kRes * kRes - 1), q);
+  session.draft().solver.backend = Backend::gpu;
+  session.draft().solver.integrator = IntegratorKind::rk4;
+  session.apply_dynamics();
+  EXPECT_EQ(dynamic_cast<const vis::GpuSolver*>(&session.solver()), nullptr);
+  EXPECT_NE(session.backend_note().find("not rk4"), std::string::npos);
 }
 
 // Twice the stable step: the checks on the GPU's state stop the run with a report.

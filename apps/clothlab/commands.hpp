@@ -30,6 +30,7 @@ struct RenderArgs {
   int mode = 0;  // display mode (keys 1-3, 7); 0: the scene's render.mode
   int width = 1280, height = 720;
   double fps = 60.0;      // simulated time per frame = 1 / fps
+  int copies = 1;         // copies of the scene's cloth side by side (sim/scene/scene_copies.hpp)
   std::string out;        // directory for frame_00000.png, ...
   std::string video;      // optional MP4 through ffmpeg
   std::string music_out;  // optional: the scene's music as a WAV file
@@ -53,6 +54,7 @@ struct RenderArgs {
 struct ViewArgs {
   std::string scene;  // empty: the default scene
   std::vector<std::string> overrides;
+  int copies = 1;  // copies of the cloth side by side (the window's [ and ])
 };
 
 struct BenchArgs {

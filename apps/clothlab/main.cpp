@@ -93,6 +93,10 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--music-out", render.music_out,
                          "also write the scene's [music] (e.g. its generated drum track) as WAV");
   render_cmd->add_flag("--quiet", render.quiet, "no progress bar");
+  render_cmd
+      ->add_option("--copies", render.copies,
+                   "copies of the scene's cloth side by side, each simulated (as the window's ])")
+      ->check(CLI::Range(1, 64));
   std::string probe;
   auto* probe_opt = render_cmd->add_option(
       "--probe", probe, "after the last frame, print the field under pixel PX,PY as JSON");
@@ -137,6 +141,10 @@ int main(int argc, char** argv) {
   ViewArgs view;
   auto* view_cmd = app.add_subcommand("view", "open a window on a scene (default scene if none)");
   add_scene_options(*view_cmd, view.scene, view.overrides, false);
+  view_cmd
+      ->add_option("--copies", view.copies,
+                   "start with this many copies of the cloth side by side ([ and ] change it)")
+      ->check(CLI::Range(1, 64));
 
   BenchArgs bench;
   auto* bench_cmd = app.add_subcommand(

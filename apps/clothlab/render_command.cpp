@@ -11,6 +11,7 @@
 #include "apps/clothlab/progress_bar.hpp"
 #include "apps/clothlab/video_pipe.hpp"
 #include "sim/audio/music_track.hpp"
+#include "sim/scene/scene_copies.hpp"
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
 #include "vis/gl/gl_error.hpp"
@@ -126,6 +127,14 @@ int run_render(const RenderArgs& args) {
   try {
     vis::HeadlessRenderer renderer(args.width, args.height);
     // After the context: solver.backend = "gpu" steps the cloth in it.
+    if (args.copies > 1) {
+      if (const std::string why = copies_unsupported_reason(scene); !why.empty())
+        throw std::runtime_error("--copies: " + why);
+      const auto original = make_solver(scene);
+      std::vector<float> rest(3 * original->vertex_count());
+      original->copy_rest_positions(rest.data());
+      scene = with_copies(scene, args.copies, copy_spacing(rest));
+    }
     std::string backend_note;
     const auto solver = vis::make_backend_solver(scene, backend_note);
     if (!backend_note.empty()) std::printf("clothlab render: %s\n", backend_note.c_str());

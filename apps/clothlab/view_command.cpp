@@ -17,6 +17,7 @@ int run_view(const ViewArgs& args) {
   Scene& scene = *loaded;
   try {
     vis::ViewApp app(std::move(scene), vis::ViewHooks::from_environment());
+    if (args.copies > 1) app.change_copies(args.copies);
     return app.run();
   } catch (const SceneError& e) {  // the scene parsed but the solver could not be built from it
     std::fprintf(stderr, "clothlab view: %s\n", e.what());

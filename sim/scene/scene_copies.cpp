@@ -1,5 +1,6 @@
 #include "sim/scene/scene_copies.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -16,9 +17,19 @@ std::string copies_unsupported_reason(const Scene& scene) {
   if (scene.mannequin) return "the mannequin is one body: a scene with a mannequin is not copied";
   for (const ClothSpec& c : scene.cloths)
     if (c.pins_follow) return c.key + ".pins_follow: a cloth whose pins follow a collider";
-  for (const ColliderSpec& c : scene.colliders)
-    if (c.kind == ColliderKind::mesh) return c.key + ": mesh colliders are not copied";
   return {};
+}
+
+double copy_spacing(const std::vector<float>& rest_xyz) {
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (std::size_t v = 0; v + 2 < rest_xyz.size(); v += 3) {
+    for (int k = 0; k < 2; ++k) {  // x and z
+      lo[k] = std::min(lo[k], double(rest_xyz[v + 2 * k]));
+      hi[k] = std::max(hi[k], double(rest_xyz[v + 2 * k]));
+    }
+  }
+  const double extent = rest_xyz.empty() ? 1.0 : std::max(hi[0] - lo[0], hi[1] - lo[1]);
+  return extent + std::max(0.25, 0.25 * extent);
 }
 
 Vec3d copy_offset(int k, int copies, double spacing) {

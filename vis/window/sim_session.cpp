@@ -125,19 +125,9 @@ std::string SimSession::set_copies(int copies) {
   if (copies == copies_) return {};
   if (std::string why = copies_unsupported_reason(applied_); !why.empty()) return why;
   if (copies_ == 1) {
-    // A quarter of the original's horizontal extent apart (at least 0.25 m).
-    const std::size_t n = solver_->vertex_count();
-    std::vector<float> xyz(3 * n);
-    solver_->copy_rest_positions(xyz.data());
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-    for (std::size_t v = 0; v < n; ++v) {
-      for (int k = 0; k < 2; ++k) {
-        lo[k] = std::min(lo[k], double(xyz[3 * v + 2 * k]));
-        hi[k] = std::max(hi[k], double(xyz[3 * v + 2 * k]));
-      }
-    }
-    const double extent = n > 0 ? std::max(hi[0] - lo[0], hi[1] - lo[1]) : 1.0;
-    spacing_ = extent + std::max(0.25, 0.25 * extent);
+    std::vector<float> rest(3 * solver_->vertex_count());
+    solver_->copy_rest_positions(rest.data());
+    spacing_ = copy_spacing(rest);
   }
   const int before = copies_;
   copies_ = copies;

@@ -75,6 +75,9 @@ class ViewApp {
   ViewApp& operator=(const ViewApp&) = delete;
 
   int run();  // until Esc or the window is closed; returns the exit status (0)
+  // [ and ] (and --copies): this many copies of the cloth side by side, framed in the view; a
+  // scene that cannot be copied says why in the panel and on stdout.
+  void change_copies(int copies);
 
  private:
   void install_callbacks();
@@ -94,7 +97,6 @@ class ViewApp {
   void release_pins();
   void drag_hook();  // CLOTHLAB_VIEW_DRAG
   void open_scene(const std::string& path);
-  void change_copies(int copies);    // [ and ]
   void report_backend();             // prints the session's backend note when it changes
   const char* backend_name() const;  // "CPU" or "GPU": where the running solver steps
 
