@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
+#include "gl_context_fixture.hpp"
 #include "sim/solver_impl.hpp"
 #include "test_scenes.hpp"
-#include "vis/gl/headless_context.hpp"
 #include "vis/gpu/gpu_cloth.hpp"
 
 namespace clothlab {
@@ -181,11 +181,9 @@ Readback read(const vis::GpuCloth& gpu) {
   return r;
 }
 
-class GpuClothTest : public ::testing::Test {
+class GpuClothTest : public testing::GlContextTest {
  protected:
-  static void SetUpTestSuite() { context_ = std::make_unique<vis::HeadlessContext>(); }
-  static void TearDownTestSuite() { context_.reset(); }
-  static bool llvmpipe() { return context_->renderer().find("llvmpipe") != std::string::npos; }
+  static bool llvmpipe() { return context().renderer().find("llvmpipe") != std::string::npos; }
 
   // 200 steps on the CPU solver, the contraction-free reference and the GPU, compared.
   static void compare_after_200_steps(IntegratorKind kind) {
@@ -218,7 +216,7 @@ class GpuClothTest : public ::testing::Test {
         "|v_gpu - v_cpu| = %.3g m/s; against the -ffp-contract=off reference %.3g m, %.3g m/s "
         "(%s); %.3f ms/step GPU, %.3f ms/step CPU, 1 thread (shared machine: noisy)\n",
         kind == IntegratorKind::verlet ? "verlet" : "symplectic_euler", kRes, kRes, double(h),
-        kSteps, dx, dv, rdx, rdv, context_->renderer().c_str(), ms(t2 - t1), ms(t1 - t0));
+        kSteps, dx, dv, rdx, rdv, context().renderer().c_str(), ms(t2 - t1), ms(t1 - t0));
     EXPECT_LT(dx, 1e-5);
     EXPECT_LT(dv, 1e-4);
     // The cloth moved (by 6 mm or more), 100 times the tolerance: not two resting sheets.
@@ -236,10 +234,7 @@ class GpuClothTest : public ::testing::Test {
       EXPECT_EQ(rdv, 0.0);
     }
   }
-
-  static std::unique_ptr<vis::HeadlessContext> context_;
 };
-std::unique_ptr<vis::HeadlessContext> GpuClothTest::context_;
 
 TEST_F(GpuClothTest, SymplecticEulerFollowsTheCpuSolverFor200Steps) {
   compare_after_200_steps(IntegratorKind::symplectic_euler);

@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "gl_context_fixture.hpp"
 #include "sim/scene/scene_copies.hpp"
 #include "sim/solver_impl.hpp"
 #include "test_scenes.hpp"
-#include "vis/gl/headless_context.hpp"
 #include "vis/gpu/gpu_solver.hpp"
 #include "vis/render/headless_renderer.hpp"
 #include "vis/render/view_settings.hpp"
@@ -72,11 +72,8 @@ double largest_move(const Solver& a, const Solver& b) {
   return compare(a, b).position;
 }
 
-class GpuSolverTest : public ::testing::Test {
+class GpuSolverTest : public testing::GlContextTest {
  protected:
-  static void SetUpTestSuite() { context_ = std::make_unique<vis::HeadlessContext>(); }
-  static void TearDownTestSuite() { context_.reset(); }
-
   static void wind_follows_the_cpu(IntegratorKind kind) {
     const Scene scene = windy(kind);
     SolverT<float> cpu(scene, SpringKernel::neighbour_list);
@@ -95,10 +92,7 @@ class GpuSolverTest : public ::testing::Test {
     ASSERT_TRUE(calm.step(200).ok());
     EXPECT_GT(largest_move(calm, gpu), 1e-3);
   }
-
-  static std::unique_ptr<vis::HeadlessContext> context_;
 };
-std::unique_ptr<vis::HeadlessContext> GpuSolverTest::context_;
 
 TEST_F(GpuSolverTest, GustyWindFollowsTheCpuWithSymplecticEuler) {
   wind_follows_the_cpu(IntegratorKind::symplectic_euler);
