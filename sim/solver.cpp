@@ -93,6 +93,10 @@ AdvanceResult SolverT<T>::advance(double duration) {
   return step(count);
 }
 
+// The step loop of both backends: the CPU-side parts (release, contacts, moving pins, grab,
+// checks) run on state_, which the hooks keep current where the integrator runs elsewhere (the
+// GPU backend: sync_state() reads it back, mirror_written() and state_corrected() send it up);
+// on the CPU the hooks cost a call each.
 template <class T>
 AdvanceResult SolverT<T>::step(long count) {
   AdvanceResult result;
@@ -107,20 +111,47 @@ AdvanceResult SolverT<T>::step(long count) {
     const double t0 = time();
     release_due(false);
     // Self-collision pairs once per step, reused by every substep (contact.md section 2).
-    if (self_) self_->find_pairs(model_, state_, dt_, threads_);
+    if (self_) {
+      sync_state();
+      self_->find_pairs(model_, state_, dt_, threads_);
+    }
     for (int sub = 0; sub < substeps_; ++sub) {
-      if (contacts_) contacts_->begin(state_, t0 + sub * h, h, threads_);
-      if (moving_pins_) moving_pins_->drive(model_, state_, t0 + sub * h, h);
-      integrator_->step(sys, state_, t0 + sub * h, static_cast<T>(h));
-      record(integrator_->last_stats());
-      if (moving_pins_) moving_pins_->place(model_, state_, t0 + (sub + 1) * h);
-      if (grab_) pull_grabbed(h);
-      bool corrected = contacts_ && contacts_->respond(model_, state_, t0 + sub * h, h, threads_);
-      if (self_ && self_->respond(model_, state_, h)) corrected = true;
-      if (corrected) integrator_->state_corrected();
+      const double t = t0 + sub * h;
+      if (contacts_) {
+        sync_state();
+        contacts_->begin(state_, t, h, threads_);
+      }
+      if (moving_pins_) {
+        sync_state();
+        moving_pins_->drive(model_, state_, t, h);
+        mirror_written();
+      }
+      record(integrate(sys, t, h));
+      if (moving_pins_) {
+        sync_state();
+        moving_pins_->place(model_, state_, t0 + (sub + 1) * h);
+        mirror_written();
+      }
+      bool corrected = false;
+      if (grab_) {
+        sync_state();
+        pull_grabbed(h);
+        corrected = true;
+      }
+      if (contacts_) {
+        sync_state();
+        if (contacts_->respond(model_, state_, t, h, threads_)) corrected = true;
+      }
+      if (self_) {
+        sync_state();
+        if (self_->respond(model_, state_, h)) corrected = true;
+      }
+      if (corrected) state_corrected();
     }
     ++steps_;
     ++result.steps;
+    if (!check_after(k, count)) continue;
+    sync_state();
     if (monitor_.check(model_, state_, steps_, time(), threads_, report)) {
       diverged_ = report;
       result.divergence = report;
@@ -128,6 +159,17 @@ AdvanceResult SolverT<T>::step(long count) {
     }
   }
   return result;
+}
+
+template <class T>
+SolveStats SolverT<T>::integrate(const System<T>& sys, double t, double h) {
+  integrator_->step(sys, state_, t, static_cast<T>(h));
+  return integrator_->last_stats();
+}
+
+template <class T>
+void SolverT<T>::state_corrected() {
+  integrator_->state_corrected();
 }
 
 template <class T>
@@ -268,6 +310,7 @@ void SolverT<T>::release_due(bool all) {
   // The integrators build their systems around the pinned vertices (filters, factorisations):
   // a new one for the new pins (once, at the release; the step loop itself never allocates).
   integrator_ = make_integrator<T>(model_, spec_);
+  pins_changed();
 }
 
 template <class T>
@@ -296,7 +339,6 @@ void SolverT<T>::pull_grabbed(double h) {
     added += 0.5 * double(model_.mass[i]) * ((v + dv) * (v + dv) - v * v);
   }
   monitor_.add_energy(std::abs(added));
-  integrator_->state_corrected();
 }
 
 template <class T>
@@ -311,6 +353,7 @@ void SolverT<T>::restore_pins() {
   model_.pinned = built_pins_;
   released_ = false;
   integrator_ = make_integrator<T>(model_, spec_);
+  pins_changed();
 }
 
 template <class T>

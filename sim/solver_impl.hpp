@@ -74,6 +74,22 @@ class SolverT : public Solver {
   void state_changed();
 
  protected:
+  // Where the integrator runs and how the rest of the step reaches its state. The CPU integrates
+  // state_ in place and these are trivial; the GPU backend integrates its own copy and keeps
+  // state_ as a mirror of it.
+  // One integrator substep of h seconds from time t; returns its statistics.
+  virtual SolveStats integrate(const System<T>& sys, double t, double h);
+  // Brings state_ up to date before CPU code reads it.
+  virtual void sync_state() const {}
+  // CPU code wrote state_ (moving pins) where the integrator's cached force stays valid.
+  virtual void mirror_written() {}
+  // CPU code corrected state_ after a substep (the grab, a collision response).
+  virtual void state_corrected();
+  // The pinned set changed (a release, a reset).
+  virtual void pins_changed() {}
+  // Whether the divergence check runs after step k (0-based) of a step(count) call.
+  virtual bool check_after(long /*k*/, long /*count*/) const { return true; }
+
   static void copy(const Vec3Array<T>& a, float* xyz) {
     for (std::size_t i = 0; i < a.size(); ++i) {
       xyz[3 * i] = static_cast<float>(a.x[i]);

@@ -27,8 +27,7 @@ const Scene& checked(const Scene& scene) {
 GpuSolver::GpuSolver(const Scene& scene)
     : SolverT<float>(checked(scene), SpringKernel::neighbour_list),
       gpu_(model_, state_.pos, state_.vel),
-      kind_(spec_.integrator),
-      uploaded_pins_(model_.pinned.size()) {}
+      kind_(spec_.integrator) {}
 
 void GpuSolver::pull() const {
   if (!gpu_ahead_) return;
@@ -42,78 +41,34 @@ void GpuSolver::push() {
   gpu_ahead_ = false;
 }
 
-// Release (D, release_at) and reset change which vertices are pinned: inverse masses of 0.
-void GpuSolver::upload_pins_if_changed() {
-  if (model_.pinned.size() == uploaded_pins_) return;
-  gpu_.set_inverse_masses(model_.inv_mass.data());
-  uploaded_pins_ = model_.pinned.size();
+// The substep on the GPU; the mirror falls behind until sync_state().
+SolveStats GpuSolver::integrate(const System<float>& /*sys*/, double t, double h) {
+  gpu_.step(1, static_cast<float>(h), kind_, t);
+  gpu_ahead_ = true;
+  return {};
 }
 
-// SolverT::step with the integrator on the GPU; the CPU-side parts pull the state down first and
-// push what they corrected back up.
-AdvanceResult GpuSolver::step(long count) {
-  AdvanceResult result;
-  if (diverged_) {
-    result.divergence = diverged_;
-    return result;
-  }
-  const double h = dt_ / substeps_;
-  Divergence report;
-  for (long k = 0; k < count; ++k) {
-    const double t0 = time();
-    release_due(false);
-    upload_pins_if_changed();
-    if (self_) {
-      pull();
-      self_->find_pairs(model_, state_, dt_, threads_);
-    }
-    for (int sub = 0; sub < substeps_; ++sub) {
-      const double t = t0 + sub * h;
-      if (contacts_) {
-        pull();
-        contacts_->begin(state_, t, h, threads_);
-      }
-      if (moving_pins_) {
-        pull();
-        moving_pins_->drive(model_, state_, t, h);
-        push();
-      }
-      gpu_.step(1, static_cast<float>(h), kind_, t);
-      gpu_ahead_ = true;
-      record(SolveStats{});
-      if (moving_pins_) {
-        pull();
-        moving_pins_->place(model_, state_, t0 + (sub + 1) * h);
-        push();
-      }
-      bool corrected = false;
-      if (grab_) {
-        pull();
-        pull_grabbed(h);
-        corrected = true;
-      }
-      if (contacts_) {
-        pull();
-        if (contacts_->respond(model_, state_, t, h, threads_)) corrected = true;
-      }
-      if (self_) {
-        pull();
-        if (self_->respond(model_, state_, h)) corrected = true;
-      }
-      if (corrected) push();
-    }
-    ++steps_;
-    ++result.steps;
-    // The checks read the mirror: every step when it is current anyway, else at the call's end.
-    if (gpu_ahead_ && k + 1 < count) continue;
-    pull();
-    if (monitor_.check(model_, state_, steps_, time(), threads_, report)) {
-      diverged_ = report;
-      result.divergence = report;
-      break;
-    }
-  }
-  return result;
+void GpuSolver::sync_state() const {
+  pull();
+}
+
+void GpuSolver::mirror_written() {
+  push();
+}
+
+void GpuSolver::state_corrected() {
+  push();  // forgets Verlet's stored force, as the CPU's integrator does
+}
+
+// Release (D, release_at) and reset change which vertices are pinned: inverse masses of 0.
+void GpuSolver::pins_changed() {
+  gpu_.set_inverse_masses(model_.inv_mass.data());
+}
+
+// Without CPU work between the substeps the mirror is read once per step() call: in the window,
+// once per frame.
+bool GpuSolver::check_after(long k, long count) const {
+  return !gpu_ahead_ || k + 1 == count;
 }
 
 Vec3d GpuSolver::position(int vertex) const {
@@ -174,13 +129,7 @@ void GpuSolver::load_state(const Solver& other) {
 void GpuSolver::reset() {
   gpu_ahead_ = false;
   SolverT<float>::reset();
-  upload_pins_if_changed();
   push();
-}
-
-void GpuSolver::release_pins() {
-  SolverT<float>::release_pins();
-  upload_pins_if_changed();
 }
 
 std::unique_ptr<Solver> make_backend_solver(const Scene& scene, std::string& note) {

@@ -1,8 +1,8 @@
 // solver.backend = "gpu": the Solver whose cloth step runs as OpenGL compute shaders (GpuCloth).
-// It is the CPU solver (SolverT<float> over the neighbour list) with its step replaced: the model,
-// pins, release, grab, colliders, self-collision, moving pins and the divergence checks are the
-// CPU's own code, and the state lives on the GPU. The CPU keeps a mirror of it, refreshed only
-// when something on the CPU needs it:
+// It is the CPU solver (SolverT<float> over the neighbour list) with its integrator replaced
+// through SolverT's hooks: the step loop, model, pins, release, grab, colliders, self-collision,
+// moving pins and the divergence checks are the CPU's own code, and the state lives on the GPU. The
+// CPU keeps a mirror of it, refreshed only when something on the CPU needs it:
 //  - the divergence checks, after every step when the mirror is current anyway, else once at the
 //    end of each step() / advance() call (a frame's steps in the window);
 //  - colliders, self-collision, moving pins and a grab, around each substep (their responses run
@@ -29,7 +29,6 @@ class GpuSolver final : public SolverT<float> {
   // gpu_unsupported_reason(scene) is not empty, SceneError as the CPU solver does.
   explicit GpuSolver(const Scene& scene);
 
-  AdvanceResult step(long count) override;
   Vec3d position(int vertex) const override;
   Vec3d velocity(int vertex) const override;
   void update_force_field(ForceSource source = ForceSource::total) override;
@@ -40,7 +39,6 @@ class GpuSolver final : public SolverT<float> {
   void copy_velocities(float* xyz) const override;
   void load_state(const Solver& other) override;
   void reset() override;
-  void release_pins() override;
 
   // The GPU side, for the renderer (buffers, normals) and tests.
   GpuCloth& gpu() { return gpu_; }
@@ -51,11 +49,17 @@ class GpuSolver final : public SolverT<float> {
   // cache of the state the GPU holds.
   void pull() const;
   void push();  // the mirror (changed on the CPU) up to the GPU
-  void upload_pins_if_changed();
+
+  // SolverT's step loop, with the integrator on the GPU.
+  SolveStats integrate(const System<float>& sys, double t, double h) override;
+  void sync_state() const override;
+  void mirror_written() override;
+  void state_corrected() override;
+  void pins_changed() override;
+  bool check_after(long k, long count) const override;
 
   GpuCloth gpu_;
   IntegratorKind kind_;
-  std::size_t uploaded_pins_ = 0;  // model_.pinned.size() the GPU's inverse masses hold
   mutable bool gpu_ahead_ = false;
 };
 
