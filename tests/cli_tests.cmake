@@ -145,6 +145,16 @@ clothlab_cli_test(trace.gpu_backend_rk4 0
   "clothlab trace: solver\\.backend = \"gpu\": the GPU step runs symplectic_euler and verlet, not rk4; the cloth steps on the CPU.*float, CPU,"
   trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.02 --out ${CLOTHLAB_TRACE_OUT}/trace_gpu_rk4.csv
   --set solver.backend=gpu --set solver.integrator=rk4)
+# Without an OpenGL context (here: EGL finds no vendor library) the GPU choice says so in one
+# line and the CPU runs the scene.
+add_test(NAME cli.trace.gpu_without_gl
+  COMMAND ${CMAKE_COMMAND}
+    "-DCOMMAND=${CMAKE_COMMAND}|-E|env|__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json|$<TARGET_FILE:clothlab>|trace|${CLOTHLAB_DEFAULT_SCENE}|--duration|0.01|--out|${CLOTHLAB_TRACE_OUT}/trace_gpu_no_gl.csv|--set|solver.backend=gpu"
+    "-DEXPECT_RC=0"
+    "-DEXPECT_REGEX=clothlab trace: solver\\.backend = \"gpu\": EGL [^\n]*; the cloth steps on the CPU\n.*float, CPU,"
+    -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
+set_tests_properties(cli.trace.gpu_without_gl PROPERTIES TIMEOUT 60
+  ENVIRONMENT "${CLOTHLAB_TEST_ENVIRONMENT}")
 clothlab_cli_test(render.gpu_backend 0 "steps of [0-9.]+ s on the GPU\\)"
   render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 160x90 --quiet
   --out ${CLOTHLAB_TRACE_OUT}/render_gpu --set solver.backend=gpu)
