@@ -105,6 +105,11 @@ ViewApp::ViewApp(Scene scene, ViewHooks hooks)
   last_frame_time_ = glfwGetTime();
 }
 
+std::string ViewApp::copies_text() const {
+  const int n = session_.copies();
+  return std::to_string(n) + (n == 1 ? " copy" : " copies");
+}
+
 const char* ViewApp::backend_name() const {
   return dynamic_cast<const GpuSolver*>(&session_.solver()) ? "GPU" : "CPU";
 }
@@ -127,9 +132,8 @@ void ViewApp::change_copies(int copies) {
     return;
   }
   view_.camera = scene_view(session_.scene(), session_.solver()).camera;
-  report_backend();
-  std::printf("clothlab view: %d %s (%zu vertices)\n", session_.copies(),
-              session_.copies() == 1 ? "copy" : "copies", session_.solver().vertex_count());
+  std::printf("clothlab view: %s (%zu vertices)\n", copies_text().c_str(),
+              session_.solver().vertex_count());
   last_title_time_ = -1.0;
 }
 
@@ -191,13 +195,12 @@ int ViewApp::run() {
     const double n = static_cast<double>(run_frames_);
     std::printf(
         "clothlab view: %ld frames: %.2f ms/frame, %.2f ms/frame simulation (%.1f steps), "
-        "%.0f %% of real time simulated (%d %s, %s backend, %zu vertices)\n",
+        "%.0f %% of real time simulated (%s, %s backend, %zu vertices)\n",
         run_frames_, 1e3 * run_totals_.frame_seconds / n, 1e3 * run_totals_.step_seconds / n,
         double(run_totals_.steps) / n,
         run_totals_.frame_seconds > 0.0 ? 100.0 * run_totals_.simulated / run_totals_.frame_seconds
                                         : 0.0,
-        session_.copies(), session_.copies() == 1 ? "copy" : "copies", backend_name(),
-        session_.solver().vertex_count());
+        copies_text().c_str(), backend_name(), session_.solver().vertex_count());
   }
   return 0;
 }
@@ -636,10 +639,9 @@ void ViewApp::update_title() {
   last_title_time_ = now;
   char timing[160];
   std::snprintf(timing, sizeof timing,
-                "%d %s on the %s — simulation %.3f ms/step, %.2f ms/frame — %.1f ms/frame",
-                session_.copies(), session_.copies() == 1 ? "copy" : "copies", backend_name(),
-                stats_.ms_per_step(), stats_.ms_per_step() * stats_.steps_per_frame(),
-                stats_.frame_ms());
+                "%s on the %s — simulation %.3f ms/step, %.2f ms/frame — %.1f ms/frame",
+                copies_text().c_str(), backend_name(), stats_.ms_per_step(),
+                stats_.ms_per_step() * stats_.steps_per_frame(), stats_.frame_ms());
   std::string title = "ClothLab — " + scene_name_ + " — " + timing;
   if (stats_.behind() && !session_.paused && !session_.divergence()) {
     char behind[64];
