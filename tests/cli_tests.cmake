@@ -8,14 +8,24 @@ set(CLOTHLAB_DEFAULT_SCENE ${PROJECT_SOURCE_DIR}/scenes/default.toml)
 # clothlab_cli_test(NAME RC REGEX ARGS...): runs `clothlab ARGS...`, expects status RC and output
 # matching REGEX. ARGS must not contain '|' (expect_exit.cmake's separator).
 function(clothlab_cli_test name rc regex)
+  clothlab_env_test(${name} "" ${rc} "${regex}" ${ARGN})
+endfunction()
+
+# clothlab_env_test(NAME ENV RC REGEX ARGS...): the same with the environment changed first by
+# ENV, `cmake -E env` arguments joined by '|' (e.g. "--unset=DISPLAY"); empty: unchanged.
+function(clothlab_env_test name env rc regex)
   set(environment "${CLOTHLAB_TEST_ENVIRONMENT}")
   if(name MATCHES "^(render|view)\\." OR name MATCHES "^(bench\\.backends|trace\\.gpu)")  # GL
     set(environment "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
   endif()
   string(JOIN "|" args ${ARGN})
+  set(program "$<TARGET_FILE:clothlab>")
+  if(NOT env STREQUAL "")
+    set(program "${CMAKE_COMMAND}|-E|env|${env}|${program}")
+  endif()
   add_test(NAME cli.${name}
     COMMAND ${CMAKE_COMMAND}
-      "-DCOMMAND=$<TARGET_FILE:clothlab>|${args}"
+      "-DCOMMAND=${program}|${args}"
       "-DEXPECT_RC=${rc}"
       "-DEXPECT_REGEX=${regex}"
       -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
@@ -147,14 +157,10 @@ clothlab_cli_test(trace.gpu_backend_rk4 0
   --set solver.backend=gpu --set solver.integrator=rk4)
 # Without an OpenGL context (here: EGL finds no vendor library) the GPU choice says so in one
 # line and the CPU runs the scene.
-add_test(NAME cli.trace.gpu_without_gl
-  COMMAND ${CMAKE_COMMAND}
-    "-DCOMMAND=${CMAKE_COMMAND}|-E|env|__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json|$<TARGET_FILE:clothlab>|trace|${CLOTHLAB_DEFAULT_SCENE}|--duration|0.01|--out|${CLOTHLAB_TRACE_OUT}/trace_gpu_no_gl.csv|--set|solver.backend=gpu"
-    "-DEXPECT_RC=0"
-    "-DEXPECT_REGEX=clothlab trace: solver\\.backend = \"gpu\": EGL [^\n]*; the cloth steps on the CPU\n.*float, CPU,"
-    -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
-set_tests_properties(cli.trace.gpu_without_gl PROPERTIES TIMEOUT 60
-  ENVIRONMENT "${CLOTHLAB_TEST_ENVIRONMENT}")
+clothlab_env_test(trace.gpu_without_gl "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json" 0
+  "clothlab trace: solver\\.backend = \"gpu\": EGL [^\n]*; the cloth steps on the CPU\n.*float, CPU,"
+  trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.01 --out ${CLOTHLAB_TRACE_OUT}/trace_gpu_no_gl.csv
+  --set solver.backend=gpu)
 clothlab_cli_test(render.gpu_backend 0 "steps of [0-9.]+ s on the GPU\\)"
   render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 160x90 --quiet
   --out ${CLOTHLAB_TRACE_OUT}/render_gpu --set solver.backend=gpu)
@@ -238,14 +244,8 @@ clothlab_cli_test(render.bad_force_source 2 "--force-source: inertia not in"
   render ${CLOTHLAB_DEFAULT_SCENE} --arrows force --force-source inertia --out ${CLOTHLAB_TRACE_OUT}/render_bad)
 # Without a display, view says so in one line, suggests render and exits 1 (DISPLAY is removed
 # so the test never opens a window on a developer's desktop).
-add_test(NAME cli.view.no_display
-  COMMAND ${CMAKE_COMMAND}
-    "-DCOMMAND=${CMAKE_COMMAND}|-E|env|--unset=DISPLAY|--unset=WAYLAND_DISPLAY|$<TARGET_FILE:clothlab>|view"
-    "-DEXPECT_RC=1"
-    "-DEXPECT_REGEX=clothlab view: no display available.*clothlab render"
-    -P ${CMAKE_CURRENT_LIST_DIR}/expect_exit.cmake)
-set_tests_properties(cli.view.no_display PROPERTIES TIMEOUT 60
-  ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
+clothlab_env_test(view.no_display "--unset=DISPLAY|--unset=WAYLAND_DISPLAY" 1
+  "clothlab view: no display available.*clothlab render" view)
 
 # The window itself, under a virtual X display (Xvfb, installed by scripts/deps): it opens,
 # takes every display mode and the main keys, quits by itself after 40 frames with status 0
