@@ -130,10 +130,7 @@ int run_render(const RenderArgs& args) {
     if (args.copies > 1) {
       if (const std::string why = copies_unsupported_reason(scene); !why.empty())
         throw std::runtime_error("--copies: " + why);
-      const auto original = make_solver(scene);
-      std::vector<float> rest(3 * original->vertex_count());
-      original->copy_rest_positions(rest.data());
-      scene = with_copies(scene, args.copies, copy_spacing(rest));
+      scene = with_copies(scene, args.copies, copy_spacing(*make_solver(scene)));
     }
     std::string backend_note;
     const auto solver = vis::make_backend_solver(scene, backend_note);
@@ -192,10 +189,9 @@ int run_render(const RenderArgs& args) {
         "%g s on the %s), %.2f ms/frame rendering, %.2f ms/frame writing; %s%s%s%s%s\n",
         args.frames, args.width, args.height, static_cast<int>(view.mode),
         renderer.gl_renderer().c_str(), 1e3 * simulate / frames,
-        frames > 1 ? double(steps) / (frames - 1) : 0.0, solver->dt(),
-        dynamic_cast<const vis::GpuSolver*>(solver.get()) ? "GPU" : "CPU", 1e3 * draw / frames,
-        1e3 * output / frames, args.out.c_str(), video ? " and " : "", args.video.c_str(),
-        music ? " with music: " : "", music ? music->source.c_str() : "");
+        frames > 1 ? double(steps) / (frames - 1) : 0.0, solver->dt(), vis::backend_name(*solver),
+        1e3 * draw / frames, 1e3 * output / frames, args.out.c_str(), video ? " and " : "",
+        args.video.c_str(), music ? " with music: " : "", music ? music->source.c_str() : "");
     print_views(renderer.diagnostics(), view);
     return 0;
   } catch (const vis::GlUnavailable& e) {

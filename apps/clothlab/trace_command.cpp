@@ -34,8 +34,7 @@ int run_trace_command(const TraceArgs& args) {
     try {
       context.emplace();
     } catch (const vis::GlUnavailable& e) {
-      no_context =
-          std::string("solver.backend = \"gpu\": ") + e.what() + "; the cloth steps on the CPU";
+      no_context = vis::cpu_fallback_note(e.what());
       scene.solver.backend = Backend::cpu;
     }
   }
@@ -69,9 +68,9 @@ int run_trace_command(const TraceArgs& args) {
       "(%ld steps)\n",
       r.simulated_time, r.steps, solver->dt(), scene.solver.dt_auto ? " (auto)" : "", substeps,
       ms_per_step, to_string(scene.solver.integrator), doubles ? "double" : "float",
-      dynamic_cast<const vis::GpuSolver*>(solver.get()) ? "GPU" : "CPU", solver->threads(),
-      solver->vertex_count(), r.final_energy.total(), r.final_energy.kinetic,
-      r.final_energy.elastic, r.final_energy.gravity, args.out.c_str(), r.rows);
+      vis::backend_name(*solver), solver->threads(), solver->vertex_count(), r.final_energy.total(),
+      r.final_energy.kinetic, r.final_energy.elastic, r.final_energy.gravity, args.out.c_str(),
+      r.rows);
   // The iterative methods' work: PCG iterations (implicit_euler) or sweeps per substep.
   const SolveTotals& t = solver->solve_totals();
   if (t.iterations > 0)

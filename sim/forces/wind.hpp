@@ -87,6 +87,7 @@ class WindField {
     return {spec_.velocity[0] * k, spec_.velocity[1] * k, spec_.velocity[2] * k};
   }
   const WindSpec& spec() const { return spec_; }
+  const double* lag() const { return lag_; }  // W / |W|^2, s/m (zero in calm air)
   bool calm() const { return speed_ == 0.0; }
   bool steady() const { return spec_.gust == 0.0; }  // factor() is 1 everywhere
 

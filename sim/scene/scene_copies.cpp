@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace clothlab {
 namespace {
@@ -20,7 +21,9 @@ std::string copies_unsupported_reason(const Scene& scene) {
   return {};
 }
 
-double copy_spacing(const std::vector<float>& rest_xyz) {
+double copy_spacing(const Solver& original) {
+  std::vector<float> rest_xyz(3 * original.vertex_count());
+  original.copy_rest_positions(rest_xyz.data());
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   for (std::size_t v = 0; v + 2 < rest_xyz.size(); v += 3) {
     for (int k = 0; k < 2; ++k) {  // x and z

@@ -6,9 +6,9 @@
 #pragma once
 
 #include <string>
-#include <vector>
 
 #include "sim/scene/scene.hpp"
+#include "sim/solver.hpp"
 
 namespace clothlab {
 
@@ -21,8 +21,9 @@ std::string copies_unsupported_reason(const Scene& scene);
 Vec3d copy_offset(int k, int copies, double spacing);
 
 // The spacing the window and `render --copies` use: the original's horizontal extent (the larger
-// of x and z over its rest positions, 3 floats per vertex) plus a quarter of it, at least 0.25 m.
-double copy_spacing(const std::vector<float>& rest_xyz);
+// of x and z over the rest positions of `original`, a solver built from the scene alone) plus a
+// quarter of it, at least 0.25 m.
+double copy_spacing(const Solver& original);
 
 // `scene` with `copies` (>= 1) copies of its cloths and non-plane colliders; copies == 1 gives
 // `scene` itself. Cloth c of copy k becomes cloth k * cloths + c (traces and pins of the original

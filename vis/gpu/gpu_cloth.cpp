@@ -66,10 +66,7 @@ GpuCloth::GpuCloth(const Model<float>& model, const Vec3Array<float>& positions,
     : n_(model.n),
       slots_(model.slots),
       incident_slots_(model.incident_slots),
-      triangle_count_(model.triangles.size()),
-      damped_(model.has_damping),
-      gravity_(model.gravity),
-      drag_(model.drag) {
+      triangle_count_(model.triangles.size()) {
   if (model.kernel != SpringKernel::neighbour_list)
     throw std::invalid_argument("GpuCloth needs a model built with SpringKernel::neighbour_list");
   if (positions.size() != n_ || velocities.size() != n_)
@@ -109,11 +106,15 @@ GpuCloth::GpuCloth(const Model<float>& model, const Vec3Array<float>& positions,
   normals_program_ = build_program({"cloth_normals.comp"});
   const GLuint p = step_program_.get();
   stage_location_ = location(step_program_, "stage");
+  time_location_ = location(step_program_, "t");
+  h_location_ = location(step_program_, "h");
+  half_h_location_ = location(step_program_, "half_h");
   glProgramUniform1ui(p, location(step_program_, "n"), static_cast<GLuint>(n_));
   glProgramUniform1i(p, location(step_program_, "slots"), slots_);
-  glProgramUniform1i(p, location(step_program_, "damped"), damped_ ? 1 : 0);
-  glProgramUniform3f(p, location(step_program_, "gravity"), gravity_[0], gravity_[1], gravity_[2]);
-  glProgramUniform1f(p, location(step_program_, "drag"), drag_);
+  glProgramUniform1i(p, location(step_program_, "damped"), model.has_damping ? 1 : 0);
+  glProgramUniform3f(p, location(step_program_, "gravity"), model.gravity[0], model.gravity[1],
+                     model.gravity[2]);
+  glProgramUniform1f(p, location(step_program_, "drag"), model.drag);
   set_wind_uniforms(model.wind);
   glProgramUniform1ui(faces_program_.get(), location(faces_program_, "triangles"),
                       static_cast<GLuint>(triangle_count_));
@@ -155,11 +156,7 @@ void GpuCloth::set_wind_uniforms(const WindSpec& spec) {
                      static_cast<float>(spec.velocity[1]), static_cast<float>(spec.velocity[2]));
   glProgramUniform1f(p, location(step_program_, "wind_coefficient"),
                      static_cast<float>(spec.coefficient));
-  const Vec3d& w = spec.velocity;
-  const double speed2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
-  const double lag[3] = {speed2 > 0 ? w[0] / speed2 : 0.0, speed2 > 0 ? w[1] / speed2 : 0.0,
-                         speed2 > 0 ? w[2] / speed2 : 0.0};
-  glProgramUniform3d(p, location(step_program_, "wind_lag"), lag[0], lag[1], lag[2]);
+  glProgramUniform3dv(p, location(step_program_, "wind_lag"), 1, field.lag());
   glProgramUniform1d(p, location(step_program_, "gust"), spec.gust);
   glProgramUniform1d(p, location(step_program_, "gust_period"), spec.gust_period);
   // seed * golden ratio, as detail::lattice_value forms it, for the two octaves' seeds.
@@ -170,7 +167,6 @@ void GpuCloth::set_wind_uniforms(const WindSpec& spec) {
     seeds[2 * k + 1] = static_cast<GLuint>(g >> 32);
   }
   glProgramUniform2uiv(p, location(step_program_, "gust_seeds"), 2, seeds);
-  time_location_ = location(step_program_, "t");
 }
 
 // The surface (normals_: unit normal and vertex area) of the positions in `x`: a face pass and a
@@ -223,8 +219,8 @@ void GpuCloth::step(int count, float h, IntegratorKind kind, double t) {
     throw std::invalid_argument("GpuCloth steps symplectic_euler and verlet only");
   if (count <= 0 || n_ == 0) return;
   const GLuint p = step_program_.get();
-  glProgramUniform1f(p, location(step_program_, "h"), h);
-  glProgramUniform1f(p, location(step_program_, "half_h"), 0.5f * h);  // as the CPU rounds it
+  glProgramUniform1f(p, h_location_, h);
+  glProgramUniform1f(p, half_h_location_, 0.5f * h);  // as the CPU rounds it
   // The CPU integrators take the time of each step and of Verlet's end force this way.
   const double hd = static_cast<double>(h);
   if (kind == IntegratorKind::symplectic_euler) {
@@ -257,10 +253,6 @@ void GpuCloth::read_force_field(Vec3Array<float>& f) const {
 
 void GpuCloth::set_inverse_masses(const float* inv_mass) {
   glNamedBufferSubData(inv_mass_.get(), 0, static_cast<GLsizeiptr>(n_ * sizeof(float)), inv_mass);
-  force_valid_ = false;
-}
-
-void GpuCloth::invalidate_force() {
   force_valid_ = false;
 }
 

@@ -13,7 +13,6 @@
 // buffer textures are optional in some drivers' fast paths). Needs a current GL 4.5 context.
 #pragma once
 
-#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -34,12 +33,10 @@ class GpuCloth {
   // Advances `count` steps of h seconds from time t (s; the gusts depend on it) with
   // symplectic_euler or verlet (others: std::invalid_argument). Verlet keeps its end-of-step
   // force for the next call, as the CPU does; a change of integrator, set_state(),
-  // set_inverse_masses() or invalidate_force() forgets it. Queues GPU work; returns at once.
+  // or set_inverse_masses() forgets it. Queues GPU work; returns at once.
   void step(int count, float h, IntegratorKind kind, double t = 0.0);
   // After a change of the pins (n inverse masses, 0 where pinned).
   void set_inverse_masses(const float* inv_mass);
-  // The state was corrected outside the step (a grab, a collision response).
-  void invalidate_force();
 
   // The total force F(x, v) at time t on every vertex (pinned ones too, as the CPU's
   // compute_forces) into a buffer of its own, for display; read_force_field copies it out.
@@ -87,9 +84,6 @@ class GpuCloth {
   int slots_ = 0;
   int incident_slots_ = 0;
   std::size_t triangle_count_ = 0;
-  bool damped_ = false;
-  std::array<float, 3> gravity_{};
-  float drag_ = 0.0f;
   bool windy_ = false;
 
   TexturedBuffer neighbour_, stiffness_, rest_length_, damping_;  // slot-major, n * slots
@@ -106,8 +100,8 @@ class GpuCloth {
   TexturedBuffer incident_;  // slot-major, n * incident_slots
   Buffer normals_;           // (unit normal, vertex area) per vertex
   Program step_program_, faces_program_, normals_program_;
-  GLint stage_location_ = -1;           // cloth_step.comp's `stage`
-  GLint time_location_ = -1;            // and `t`
+  GLint stage_location_ = -1;                                          // cloth_step.comp's `stage`
+  GLint time_location_ = -1, h_location_ = -1, half_h_location_ = -1;  // `t`, `h`, `half_h`
   mutable std::vector<float> staging_;  // 4 n floats for uploads and read-backs
 };
 

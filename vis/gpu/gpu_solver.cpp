@@ -132,6 +132,14 @@ void GpuSolver::reset() {
   push();
 }
 
+const char* backend_name(const Solver& solver) {
+  return dynamic_cast<const GpuSolver*>(&solver) ? "GPU" : "CPU";
+}
+
+std::string cpu_fallback_note(const std::string& why) {
+  return "solver.backend = \"gpu\": " + why + "; the cloth steps on the CPU";
+}
+
 std::unique_ptr<Solver> make_backend_solver(const Scene& scene, std::string& note) {
   note.clear();
   if (scene.solver.backend != Backend::gpu) return make_solver(scene);
@@ -143,7 +151,7 @@ std::unique_ptr<Solver> make_backend_solver(const Scene& scene, std::string& not
       why = e.what();
     }
   }
-  note = "solver.backend = \"gpu\": " + why + "; the cloth steps on the CPU";
+  note = cpu_fallback_note(why);
   return make_solver(scene);
 }
 

@@ -63,6 +63,11 @@ class GpuSolver final : public SolverT<float> {
   mutable bool gpu_ahead_ = false;
 };
 
+// "GPU" when `solver` steps on the GPU backend, else "CPU".
+const char* backend_name(const Solver& solver);
+// The line said when solver.backend = "gpu" cannot be honoured for reason `why`.
+std::string cpu_fallback_note(const std::string& why);
+
 // The solver for `scene`: a GpuSolver when scene.solver.backend is gpu and the scene and the
 // current GL context allow it, else the CPU solver, with `note` set to one line saying why the
 // GPU was not used (left empty otherwise). Needs a current GL context when backend is gpu.

@@ -125,9 +125,7 @@ std::string SimSession::set_copies(int copies) {
   if (copies == copies_) return {};
   if (std::string why = copies_unsupported_reason(applied_); !why.empty()) return why;
   if (copies_ == 1) {
-    std::vector<float> rest(3 * solver_->vertex_count());
-    solver_->copy_rest_positions(rest.data());
-    spacing_ = copy_spacing(rest);
+    spacing_ = copy_spacing(*solver_);
   }
   const int before = copies_;
   copies_ = copies;

@@ -110,10 +110,6 @@ std::string ViewApp::copies_text() const {
   return std::to_string(n) + (n == 1 ? " copy" : " copies");
 }
 
-const char* ViewApp::backend_name() const {
-  return dynamic_cast<const GpuSolver*>(&session_.solver()) ? "GPU" : "CPU";
-}
-
 void ViewApp::report_backend() {
   if (session_.backend_note() == shown_backend_note_) return;
   shown_backend_note_ = session_.backend_note();
@@ -200,7 +196,7 @@ int ViewApp::run() {
         double(run_totals_.steps) / n,
         run_totals_.frame_seconds > 0.0 ? 100.0 * run_totals_.simulated / run_totals_.frame_seconds
                                         : 0.0,
-        copies_text().c_str(), backend_name(), session_.solver().vertex_count());
+        copies_text().c_str(), backend_name(session_.solver()), session_.solver().vertex_count());
   }
   return 0;
 }
@@ -640,7 +636,7 @@ void ViewApp::update_title() {
   char timing[160];
   std::snprintf(timing, sizeof timing,
                 "%s on the %s — simulation %.3f ms/step, %.2f ms/frame — %.1f ms/frame",
-                copies_text().c_str(), backend_name(), stats_.ms_per_step(),
+                copies_text().c_str(), backend_name(session_.solver()), stats_.ms_per_step(),
                 stats_.ms_per_step() * stats_.steps_per_frame(), stats_.frame_ms());
   std::string title = "ClothLab — " + scene_name_ + " — " + timing;
   if (stats_.behind() && !session_.paused && !session_.divergence()) {

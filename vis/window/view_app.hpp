@@ -97,9 +97,8 @@ class ViewApp {
   void release_pins();
   void drag_hook();  // CLOTHLAB_VIEW_DRAG
   void open_scene(const std::string& path);
-  void report_backend();             // prints the session's backend note when it changes
-  const char* backend_name() const;  // "CPU" or "GPU": where the running solver steps
-  std::string copies_text() const;   // "1 copy", "4 copies"
+  void report_backend();            // prints the session's backend note when it changes
+  std::string copies_text() const;  // "1 copy", "4 copies"
 
   // The window (and its GL context) first: the GPU backend's solver needs the context to be
   // built, and goes before it on destruction.
