@@ -1,7 +1,7 @@
 // The benchmark scene: the default hanging sheet (2 m, 1 kg, 800 N/m, two corners pinned) at any
 // square resolution. Damping is the default sheet's (0.05 N*s/m at 32 x 32) scaled with the
 // vertex mass, so every grid has the same damping rate c / m; a fixed c would make fine grids
-// unstable (dt^2 w^2 + 2 dt gamma < 4, design.md). dt is half the symplectic Euler limit
+// unstable (dt^2 w^2 + 2 dt gamma < 4, docs/design.md). dt is half the symplectic Euler limit
 // 0.654 sqrt(m / k0): the cost of a step does not depend on dt, but the run stays physical.
 #pragma once
 

@@ -47,7 +47,7 @@ BENCHMARK(BM_SymplecticEulerStep)
     ->Unit(benchmark::kMicrosecond)
     ->MinTime(0.5);
 
-// Foreign load spoils 2-thread numbers (design.md, performance notes): record it with the run.
+// Foreign load spoils 2-thread numbers (docs/design.md, performance notes): record it with the run.
 void add_load_context() {
   std::ifstream in("/proc/loadavg");
   std::string one_minute;

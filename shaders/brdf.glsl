@@ -1,4 +1,4 @@
-// Cloth and metal-thread BRDFs (rendering.md section 2), written once in the common subset of
+// Cloth and metal-thread BRDFs (docs/rendering.md section 2), written once in the common subset of
 // GLSL 4.50 and C++ with GLM: vis/shading/brdf.hpp includes this very file into the C++
 // namespace clothlab::vis::brdf, where tests/brdf_test.cpp checks normalisation, reciprocity and
 // energy on the CPU. Rules for editing:

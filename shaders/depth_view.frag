@@ -3,8 +3,9 @@
 #include "lighting.glsl"
 
 // Key 7: the light's depth map, linearised to metres from the light and coloured through the
-// colour map from the near to the far plane (rendering.md section 6: a plane at distance d reads
-// d / f), shown as a square in the middle of the view. Texels no caster reached are dark grey.
+// colour map from the near to the far plane (docs/rendering.md section 6: a plane at distance d
+// reads d / f), shown as a square in the middle of the view. Texels no caster reached are dark
+// grey.
 layout(location = 0) uniform vec2 u_viewport;  // pixels
 layout(binding = 1) uniform sampler2D u_lut;   // 256 x 1 colour map, sRGB
 

@@ -2,11 +2,11 @@
 // the lit surface models that use it. Fragment-only: the kernels turn with gl_FragCoord.
 
 // The shadow map (vis/render/shadow_pass.cpp): one depth texture read through two samplers, a
-// comparing one for PCF and a plain one for the blocker search (rendering.md section 0).
+// comparing one for PCF and a plain one for the blocker search (docs/rendering.md section 0).
 layout(binding = 6) uniform sampler2DShadow u_shadow_compare;
 layout(binding = 7) uniform sampler2D u_shadow_depth;
 // With a translucent cloth (mode 5, shadow_range.w = 1): the opaque casters' own depth map and the
-// product of the translucent layers' transmittances (rendering.md section 5).
+// product of the translucent layers' transmittances (docs/rendering.md section 5).
 layout(binding = 8) uniform sampler2DShadow u_shadow_opaque;
 layout(binding = 9) uniform sampler2D u_shadow_colour;
 

@@ -1,6 +1,6 @@
 #version 450 core
 
-// The cloth's transmittance T = (1 - c) + c * tau * albedo (rendering.md section 5): light
+// The cloth's transmittance T = (1 - c) + c * tau * albedo (docs/rendering.md section 5): light
 // passes through the gaps between the threads (1 - c) and, tinted by the yarn, through the
 // threads themselves (c * tau * albedo). Blended multiplicatively, so layers multiply.
 layout(location = 0) uniform float u_repeat;        // fabric repeats per cloth

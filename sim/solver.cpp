@@ -36,8 +36,8 @@ SolverSpec resolve_step(const Model<T>& m, SolverSpec spec) {
   return spec;
 }
 
-// Fast limbs (contact.md section 3): no surface of the dancing body may move more than half its
-// thinnest feature in one substep, or a vertex could be stepped over rather than pushed. The
+// Fast limbs (docs/contact.md section 3): no surface of the dancing body may move more than half
+// its thinnest feature in one substep, or a vertex could be stepped over rather than pushed. The
 // fastest surface speed over the dance (sampled every 5 ms) sets the most a substep may be. The
 // dance is a 16-beat loop, so its first two minutes hold every move it makes (longer would cost
 // start-up time: 24 000 samples of about 6 us each already).
@@ -110,7 +110,7 @@ AdvanceResult SolverT<T>::step(long count) {
   for (long k = 0; k < count; ++k) {
     const double t0 = time();
     release_due(false);
-    // Self-collision pairs once per step, reused by every substep (contact.md section 2).
+    // Self-collision pairs once per step, reused by every substep (docs/contact.md section 2).
     if (self_) {
       sync_state();
       self_->find_pairs(model_, state_, dt_, threads_);

@@ -10,7 +10,7 @@
 #include <numbers>
 #include <string>
 
-#include "sim/audio/audio_clip.hpp"
+#include "music/audio_clip.hpp"
 
 namespace clothlab {
 namespace {

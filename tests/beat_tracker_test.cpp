@@ -1,6 +1,6 @@
-// Beat tracking on synthesised music with exact ground truth (contact.md section 4): tempo within
-// 0.5 BPM, beats within 15 ms on average, tempo changes followed, band energies where the drums
-// put them, and silence handled without NaN.
+// Beat tracking on synthesised music with exact ground truth (docs/contact.md section 4): tempo
+// within 0.5 BPM, beats within 15 ms on average, tempo changes followed, band energies where the
+// drums put them, and silence handled without NaN.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "sim/audio/beat_tracker.hpp"
-#include "sim/audio/drum_track.hpp"
+#include "music/beat_tracker.hpp"
+#include "music/drum_track.hpp"
 
 namespace clothlab {
 namespace {

@@ -1,5 +1,5 @@
 # Command-line tests: `clothlab check` on bad scenes and bad --set values must exit with status
-# exactly 2 and print a message naming the file, line and key (design.md, "Command line").
+# exactly 2 and print a message naming the file, line and key (docs/design.md, "Command line").
 # Included from tests/CMakeLists.txt; each test runs expect_exit.cmake.
 
 set(CLOTHLAB_BAD_SCENES ${CMAKE_CURRENT_LIST_DIR}/bad_scenes)

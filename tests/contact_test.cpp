@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "load/scene_load.hpp"
 #include "sim/contact/collider.hpp"
 #include "sim/contact/contact_response.hpp"
 #include "sim/scene/scene_error.hpp"
@@ -195,7 +196,7 @@ Scene drop(double offset, double sphere_friction = 0.3) {
 }
 
 // At every step of a 2 s drop and settle no vertex is deeper inside the sphere or the floor than
-// 1e-3 R below the thickness (contact.md section 1, test 3).
+// 1e-3 R below the thickness (docs/contact.md section 1, test 3).
 TEST(Drop, NoVertexSinksIntoTheSphereOrTheFloor) {
   SolverT<double> s(drop(0.0));
   std::vector<Collider> colliders;
@@ -448,7 +449,7 @@ TEST(ColliderScene, BadValuesNameTheKeyAndLine) {
   };
   for (const Case& c : cases) {
     try {
-      parse_scene_string(head + c.body, "bad.toml");
+      read_scene_string(head + c.body, "bad.toml");
       ADD_FAILURE() << "accepted: " << c.body;
     } catch (const SceneError& e) {
       EXPECT_EQ(e.key, c.key) << e.what();

@@ -1,4 +1,4 @@
-// Copies of the cloth (the window's [ and ], sim/scene/scene_copies.hpp): each copy of a drop
+// Copies of the cloth (the window's [ and ], sim/cloth/scene_copies.hpp): each copy of a drop
 // onto a sphere moves exactly as the original, shifted; the window's session keeps the simulated
 // time per frame whatever the number of copies; scenes that cannot be copied say why.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "sim/scene/scene_copies.hpp"
+#include "sim/cloth/scene_copies.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
 #include "vis/window/sim_session.hpp"

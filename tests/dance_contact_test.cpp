@@ -12,7 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "sim/audio/music_track.hpp"
+#include "load/scene_load.hpp"
+#include "music/music_track.hpp"
 #include "sim/body/body_motion.hpp"
 #include "sim/contact/collider.hpp"
 #include "sim/scene/scene_parser.hpp"
@@ -24,7 +25,7 @@ namespace {
 const std::string kDance = std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/dance.toml";
 
 const Scene& dance_scene() {
-  static const Scene scene = parse_scene_file(kDance);
+  static const Scene scene = read_scene_file(kDance);
   return scene;
 }
 

@@ -3,7 +3,7 @@
 # `clothlab view` on ${CLOTHLAB_DEFAULT_SCENE}: here that is scenes/dance.toml, set inside a
 # function so the scene that later files see is unchanged.
 #
-# No test opens an audio device (contact.md section 4): CLOTHLAB_VIEW_NO_AUDIO=1 takes the path
+# No test opens an audio device (docs/contact.md section 4): CLOTHLAB_VIEW_NO_AUDIO=1 takes the path
 # a machine without a device takes. The window must say so exactly once and run 30 frames of the
 # dance, its Music panel drawn, to exit status 0.
 function(clothlab_dance_view_tests)

@@ -10,7 +10,7 @@ namespace clothlab {
 namespace {
 
 TEST(Divergence, UnstableStepIsReportedWithStepTimeVertexAndQuantity) {
-  // Symplectic Euler is stable only for dt < 0.654 sqrt(m / k0) (design.md): 2.3e-4 s here.
+  // Symplectic Euler is stable only for dt < 0.654 sqrt(m / k0) (docs/design.md): 2.3e-4 s here.
   Scene scene = testing::sheet(16, 1.0, 0.2, 1000.0, IntegratorKind::symplectic_euler, 1e-3);
   scene.cloths[0].pins = {{0, 0}, {15, 0}};
   SolverT<float> s(scene);

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "gl_context_fixture.hpp"
-#include "sim/scene/scene_copies.hpp"
+#include "sim/cloth/scene_copies.hpp"
 #include "sim/solver_impl.hpp"
 #include "test_scenes.hpp"
 #include "vis/gpu/gpu_solver.hpp"

@@ -79,7 +79,7 @@ double rms_difference(const Solver& a, const Solver& b) {
 
 constexpr double kSheetTime = 0.25;  // s
 
-// RK4 at dt = 1e-5 s: converged far below the errors measured here (design.md: 2e-10 m at 1 s
+// RK4 at dt = 1e-5 s: converged far below the errors measured here (docs/design.md: 2e-10 m at 1 s
 // on the 32 x 32 sheet). Computed once, shared by the tests.
 const SolverT<double>& rk4_reference() {
   static const std::unique_ptr<SolverT<double>> reference = [] {

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "load/scene_load.hpp"
 #include "sim/cloth/mesh_cloth.hpp"
 #include "sim/contact/collider.hpp"
 #include "sim/mesh/triangle_mesh.hpp"
@@ -197,14 +198,14 @@ TEST(MeshCloth, DropOntoASphereRestsWithoutSinkingOnAnyThreadCount) {
 
 // The shipped scene parses, and mesh errors name the file, line and key.
 TEST(MeshCloth, SceneFileAndErrors) {
-  const Scene s = parse_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/round_cloth.toml");
+  const Scene s = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/round_cloth.toml");
   ASSERT_EQ(s.cloths.size(), 1u);
   EXPECT_EQ(s.cloths[0].resolution[0], 817);
   EXPECT_EQ(s.cloths[0].pins.front()[0], kRim - 1);
 
   auto error_of = [](const std::string& text) -> std::string {
     try {
-      validate_scene(parse_scene_string(text, "m.toml"));
+      validate_scene(read_scene_string(text, "m.toml"));
     } catch (const SceneError& e) {
       return e.what();
     }

@@ -11,6 +11,7 @@
 #include <random>
 #include <string>
 
+#include "load/scene_load.hpp"
 #include "sim/contact/collider.hpp"
 #include "sim/mesh/sdf_grid.hpp"
 #include "sim/mesh/triangle_mesh.hpp"
@@ -156,7 +157,7 @@ TEST_F(MeshCollider, BadObjFilesAreSceneErrors) {
         "[cloth]\nresolution = [4, 4]\n\n[[colliders]]\ntype = \"mesh\"\nfile = \"" + c.file +
         "\"\n";
     try {
-      parse_scene_string(text, "scene.toml");
+      read_scene_string(text, "scene.toml");
       ADD_FAILURE() << "accepted " << c.file;
     } catch (const SceneError& e) {
       EXPECT_EQ(e.key, "colliders[0].file") << e.what();
@@ -169,7 +170,7 @@ TEST_F(MeshCollider, BadObjFilesAreSceneErrors) {
   const std::string scene = write("s.toml",
                                   "[cloth]\nresolution = [4, 4]\n\n[[colliders]]\n"
                                   "type = \"mesh\"\nfile = \"box.obj\"\nscale = 2\n");
-  const Scene s = parse_scene_file(scene);
+  const Scene s = read_scene_file(scene);
   ASSERT_TRUE(s.colliders[0].mesh);
   EXPECT_NEAR(s.colliders[0].mesh->positions[7].x(), 0.2, 1e-6);
 }

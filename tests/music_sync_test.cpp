@@ -1,9 +1,9 @@
-// The audio clock as master of a view with music (sim/realtime/music_clock.hpp): the simulation
+// The audio clock as master of a view with music (music/music_clock.hpp): the simulation
 // catches up to the playback position while the music plays, stands still while paused, follows
 // the wall clock after the track's end, restarts the music with a new solver, and a machine that
 // cannot keep up makes the music wait rather than the dance drift off the beat. No audio device:
 // the playback positions are made up, as OpenAL would report them.
-#include "sim/realtime/music_clock.hpp"
+#include "music/music_clock.hpp"
 
 #include <gtest/gtest.h>
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "load/scene_load.hpp"
 #include "sim/mesh/triangle_mesh.hpp"
 #include "sim/scene/scene_parser.hpp"
 
@@ -30,7 +31,7 @@ dt = 0.001
 // Parses text and returns the SceneError it must throw.
 SceneError error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
   try {
-    parse_scene_string(text, "t.toml", overrides);
+    read_scene_string(text, "t.toml", overrides);
   } catch (const SceneError& e) {
     return e;
   }
@@ -54,7 +55,7 @@ void expect_error(const std::string& text, const std::string& key, int line,
 }
 
 TEST(SceneParser, DefaultSceneHasDocumentedValues) {
-  const Scene s = parse_scene_file(kDefaultScene);
+  const Scene s = read_scene_file(kDefaultScene);
   EXPECT_EQ(s.file, kDefaultScene);
   ASSERT_EQ(s.cloths.size(), 1u);
   EXPECT_FALSE(s.multi_cloth);
@@ -95,7 +96,7 @@ TEST(SceneParser, DefaultSceneHasDocumentedValues) {
 }
 
 TEST(SceneParser, RecordsSourceLocations) {
-  const Scene s = parse_scene_file(kDefaultScene);
+  const Scene s = read_scene_file(kDefaultScene);
   const SourceLoc& dt = s.locations.at("solver.dt");
   EXPECT_EQ(dt.file, kDefaultScene);
   EXPECT_GT(dt.line, 0);
@@ -106,26 +107,25 @@ TEST(SceneParser, RecordsSourceLocations) {
                           "forces.wind", "forces.wind.seed", "trace.vertices", "trace.every"})
     EXPECT_TRUE(s.locations.count(key)) << key;
 
-  const Scene m = parse_scene_string(kMinimal, "t.toml");
+  const Scene m = read_scene_string(kMinimal, "t.toml");
   EXPECT_EQ(m.locations.at("cloth.resolution").line, 4);
   EXPECT_EQ(m.locations.at("cloth.resolution").column, 14);  // the value, after "resolution = "
   EXPECT_EQ(m.locations.at("solver.dt").line, 8);
 }
 
 TEST(SceneParser, OmittedKeysTakeDefaults) {
-  const Scene s = parse_scene_string("[cloth]\npins = [[0, 0]]\n", "t.toml");
+  const Scene s = read_scene_string("[cloth]\npins = [[0, 0]]\n", "t.toml");
   EXPECT_EQ(s.cloths[0].resolution, (std::array<int, 2>{32, 32}));
   EXPECT_FALSE(s.forces.wind.enabled);
   EXPECT_FALSE(s.trace.has_value());
   EXPECT_EQ(s.solver.integrator, IntegratorKind::symplectic_euler);
   // A wind table needs only velocity.
-  const Scene w = parse_scene_string(kMinimal + "[forces]\nwind = { velocity = [1, 2, 3] }\n", "t");
+  const Scene w = read_scene_string(kMinimal + "[forces]\nwind = { velocity = [1, 2, 3] }\n", "t");
   EXPECT_TRUE(w.forces.wind.enabled);
   EXPECT_EQ(w.forces.wind.gust, 0.0);
   EXPECT_EQ(w.forces.wind.seed, 0u);
   // Integers are fine where floats are meant.
-  EXPECT_EQ(parse_scene_string(kMinimal + "[springs]\nstiffness = 5\n", "t").springs.stiffness,
-            5.0);
+  EXPECT_EQ(read_scene_string(kMinimal + "[springs]\nstiffness = 5\n", "t").springs.stiffness, 5.0);
 }
 
 TEST(SceneParser, IntegratorNamesRoundTrip) {
@@ -199,8 +199,8 @@ TEST(SceneParser, OutOfRange) {
                "unknown (valid: grid, tube, mesh)");
   expect_error(kMinimal + "precision = \"half\"\n", "solver.precision", 9, "float, double");
   expect_error(kMinimal + "backend = \"opencl\"\n", "solver.backend", 9, "valid: cpu, gpu");
-  EXPECT_EQ(parse_scene_string(kMinimal + "backend = \"cpu\"\n", "t").solver.backend, Backend::cpu);
-  EXPECT_EQ(parse_scene_string(kMinimal + "backend = \"gpu\"\n", "t").solver.backend, Backend::gpu);
+  EXPECT_EQ(read_scene_string(kMinimal + "backend = \"cpu\"\n", "t").solver.backend, Backend::cpu);
+  EXPECT_EQ(read_scene_string(kMinimal + "backend = \"gpu\"\n", "t").solver.backend, Backend::gpu);
 }
 
 TEST(SceneParser, TimeStep) {
@@ -208,7 +208,7 @@ TEST(SceneParser, TimeStep) {
   expect_error(no_dt + "dt = 0\n", "solver.dt", 4, "must be > 0 (got 0)");
   expect_error(no_dt + "dt = -1\n", "solver.dt", 4, "must be > 0 (got -1)");
   expect_error(no_dt + "dt = 2\n", "solver.dt", 4, "<= 1");
-  EXPECT_EQ(parse_scene_string(no_dt + "dt = 1\n", "t").solver.dt, 1.0);
+  EXPECT_EQ(read_scene_string(no_dt + "dt = 1\n", "t").solver.dt, 1.0);
 }
 
 TEST(SceneParser, Pins) {
@@ -220,7 +220,7 @@ TEST(SceneParser, Pins) {
   expect_error("[cloth]\nresolution = [2, 1]\npins = [[0, 0], [1, 0]]\n", "cloth.pins", 3,
                "every vertex is pinned");
   // No pins at all is fine (a falling sheet).
-  EXPECT_TRUE(parse_scene_string("[cloth]\n", "t").cloths[0].pins.empty());
+  EXPECT_TRUE(read_scene_string("[cloth]\n", "t").cloths[0].pins.empty());
 }
 
 TEST(SceneParser, UnknownKeys) {
@@ -251,7 +251,7 @@ TEST(SceneParser, UnknownKeys) {
 // [[colliders]]: every shape's keys, friction as a number or a table, motion by velocities or
 // keyframes, and a cloth's release time.
 TEST(SceneParser, Colliders) {
-  const Scene s = parse_scene_string(kMinimal + R"(
+  const Scene s = read_scene_string(kMinimal + R"(
 [[colliders]]
 type = "plane"
 point = [0, -1, 0]
@@ -275,7 +275,7 @@ b = [1, 1, 0]
 radius = 0.05
 motion = { keys = [{ time = 0, offset = [0, 0, 0] }, { time = 1, offset = [0, 0, 2], rotation = [0, 90, 0] }] }
 )",
-                                     "t.toml", {"cloth.release_at=0.5"});
+                                    "t.toml", {"cloth.release_at=0.5"});
   ASSERT_EQ(s.colliders.size(), 3u);
   EXPECT_EQ(s.colliders[0].kind, ColliderKind::plane);
   EXPECT_EQ(s.colliders[0].normal, (Vec3d{0, 2, 0}));
@@ -304,7 +304,7 @@ motion = { keys = [{ time = 1 }, { time = 0.5 }] }
 }
 
 TEST(SceneParser, RenderSection) {
-  const Scene s = parse_scene_string(kMinimal + R"([render]
+  const Scene s = read_scene_string(kMinimal + R"([render]
 mode = 7
 shadows = "pcss"
 shadow_map_size = 1024
@@ -324,7 +324,7 @@ type = "box"
 half_extents = [0.1, 0.2, 0.3]
 rotation = [0, 45, 0]
 )",
-                                     "t.toml");
+                                    "t.toml");
   const RenderSpec& r = s.render;
   EXPECT_EQ(r.mode, 7);
   EXPECT_EQ(r.shadows, ShadowFilter::pcss);
@@ -346,7 +346,7 @@ rotation = [0, 45, 0]
   EXPECT_EQ(r.meshes[1].half_extents, (Vec3d{0.1, 0.2, 0.3}));
   EXPECT_EQ(r.meshes[1].key, "render.meshes[1]");
   // Defaults without a [render] table.
-  const Scene d = parse_scene_string(kMinimal, "t.toml");
+  const Scene d = read_scene_string(kMinimal, "t.toml");
   EXPECT_EQ(d.render.mode, 3);
   EXPECT_EQ(d.render.shadows, ShadowFilter::pcf);
   EXPECT_TRUE(d.render.meshes.empty());
@@ -388,9 +388,9 @@ TEST(SceneParser, ObjSceneryIsReadWithTheScene) {
     std::ofstream obj(path);
     obj << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
   }
-  const Scene s = parse_scene_string(kMinimal + "[[render.meshes]]\ntype = \"obj\"\nfile = \"" +
-                                         path + "\"\nscale = 0.5\nsmooth = true\n",
-                                     "t.toml");
+  const Scene s = read_scene_string(kMinimal + "[[render.meshes]]\ntype = \"obj\"\nfile = \"" +
+                                        path + "\"\nscale = 0.5\nsmooth = true\n",
+                                    "t.toml");
   std::remove(path.c_str());
   ASSERT_EQ(s.render.meshes.size(), 1u);
   const MeshSpec& m = s.render.meshes[0];
@@ -409,14 +409,14 @@ TEST(SceneParser, UnknownIntegratorListsValidNames) {
 
 TEST(SceneParser, FileErrors) {
   try {
-    parse_scene_file("/nonexistent/dir/scene.toml");
+    read_scene_file("/nonexistent/dir/scene.toml");
     FAIL() << "no error for a missing file";
   } catch (const SceneError& e) {
     EXPECT_EQ(e.loc.file, "/nonexistent/dir/scene.toml");
     EXPECT_NE(std::string(e.what()).find("/nonexistent/dir/scene.toml"), std::string::npos);
     EXPECT_NE(std::string(e.what()).find("cannot open"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(parse_scene_file(CLOTHLAB_SOURCE_DIR), SceneError);  // a directory
+  EXPECT_THROW(read_scene_file(CLOTHLAB_SOURCE_DIR), SceneError);  // a directory
 
   const SceneError e = error_of("[cloth]\nmass = 1\nsize = [1, \n");
   EXPECT_EQ(e.loc.file, "t.toml");
@@ -430,7 +430,7 @@ TEST(SceneParser, FileErrors) {
 TEST(SceneParser, SyntaxErrorInFileNamesFileAndLine) {
   const std::string path = std::string(CLOTHLAB_SOURCE_DIR) + "/tests/bad_scenes/syntax_error.toml";
   try {
-    parse_scene_file(path);
+    read_scene_file(path);
     FAIL() << "no error";
   } catch (const SceneError& e) {
     EXPECT_EQ(e.loc.file, path);
@@ -447,7 +447,7 @@ TEST(SceneParser, MissingCloth) {
 }
 
 TEST(SceneOverrides, ChangeValues) {
-  const Scene s = parse_scene_file(
+  const Scene s = read_scene_file(
       kDefaultScene, {"solver.dt=0.0005", "solver.integrator=rk4", "solver.precision=\"double\"",
                       "cloth.pins=[[0, 0]]", "forces.wind={ velocity = [0, 0, 2] }",
                       " cloth.resolution = [8, 4] ", "trace.vertices=[[7, 3]]"});
@@ -464,7 +464,7 @@ TEST(SceneOverrides, ChangeValues) {
             "--set forces.wind={ velocity = [0, 0, 2] }");
   EXPECT_EQ(s.locations.at("cloth.mass").file, kDefaultScene);  // untouched values keep theirs
   // Later overrides win; a plain word is a string; keys can be created where allowed.
-  const Scene t = parse_scene_string(
+  const Scene t = read_scene_string(
       kMinimal, "t.toml",
       {"solver.dt=0.1", "solver.dt=0.2", "springs.damping=1", "forces.wind.velocity=[1,1,1]",
        "cloth.pins[0]=[3, 2]", "cloth.size[1]=0.5"});
@@ -513,7 +513,7 @@ TEST(SceneOverrides, MalformedArguments) {
   for (const char* bad : {"solver.dt", "=3", " = 3", "solver..dt=1", "solver.=1", ".dt=1",
                           "solver dt=1", "cloth[x].mass=1", "cloth[1.mass=1", "cloth[]=1"}) {
     try {
-      parse_scene_string(kMinimal, "t.toml", {bad});
+      read_scene_string(kMinimal, "t.toml", {bad});
       ADD_FAILURE() << "no error for --set " << bad;
     } catch (const SceneError& e) {
       EXPECT_EQ(e.loc.file, std::string("--set ") + bad) << e.what();
@@ -549,7 +549,7 @@ fields = ["energy", "position"]
 )";
 
 TEST(MultiCloth, PerClothSpringsAndTraces) {
-  const Scene s = parse_scene_string(kTwoCloths, "two.toml");
+  const Scene s = read_scene_string(kTwoCloths, "two.toml");
   EXPECT_TRUE(s.multi_cloth);
   ASSERT_EQ(s.cloths.size(), 2u);
   EXPECT_EQ(s.cloths[0].key, "cloth[0]");

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "load/scene_load.hpp"
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
 #include "vis/render/view_settings.hpp"
@@ -27,7 +28,7 @@ radius = 0.5
 )";
 
 TEST(SceneView, FloorAndFramingComeFromTheColliders) {
-  const Scene scene = parse_scene_string(kScene, "t.toml");
+  const Scene scene = read_scene_string(kScene, "t.toml");
   const std::unique_ptr<Solver> solver = make_solver(scene);
   const vis::ViewSettings plain = vis::default_view(*solver);
   const vis::ViewSettings v = vis::scene_view(scene, *solver);
@@ -42,7 +43,7 @@ TEST(SceneView, MeshCollidersAreFramedToo) {
   const std::string mesh =
       std::string("[cloth]\nresolution = [8, 8]\n\n[[colliders]]\ntype = \"mesh\"\nfile = \"") +
       CLOTHLAB_SOURCE_DIR + "/assets/meshes/chair.obj\"\ncenter = [3, 0, 0]\n";
-  const Scene scene = parse_scene_string(mesh, "t.toml");
+  const Scene scene = read_scene_string(mesh, "t.toml");
   const std::unique_ptr<Solver> solver = make_solver(scene);
   const vis::ViewSettings plain = vis::default_view(*solver);
   const vis::ViewSettings v = vis::scene_view(scene, *solver);
@@ -50,16 +51,16 @@ TEST(SceneView, MeshCollidersAreFramedToo) {
 }
 
 TEST(SceneView, SceneCameraOverridesTheFraming) {
-  const Scene scene = parse_scene_string(
+  const Scene scene = read_scene_string(
       kScene + "\n[render.camera]\ntarget = [1, 2, 3]\npitch = 40\ndistance = 7.5\n", "t.toml");
   const std::unique_ptr<Solver> solver = make_solver(scene);
-  const vis::ViewSettings framed = vis::scene_view(parse_scene_string(kScene, "t.toml"), *solver);
+  const vis::ViewSettings framed = vis::scene_view(read_scene_string(kScene, "t.toml"), *solver);
   const vis::ViewSettings v = vis::scene_view(scene, *solver);
   EXPECT_EQ(v.camera.target, glm::vec3(1.0f, 2.0f, 3.0f));
   EXPECT_FLOAT_EQ(v.camera.pitch_deg, 40.0f);
   EXPECT_FLOAT_EQ(v.camera.distance, 7.5f);
   EXPECT_FLOAT_EQ(v.camera.yaw_deg, framed.camera.yaw_deg) << "yaw not given: framed";
-  EXPECT_THROW(parse_scene_string(kScene + "\n[render.camera]\npitch = 95\n", "t.toml"),
+  EXPECT_THROW(read_scene_string(kScene + "\n[render.camera]\npitch = 95\n", "t.toml"),
                std::exception);
 }
 

@@ -1,5 +1,5 @@
 // Lighting and shadows on real pixels (headless EGL; llvmpipe on CI), measured in image regions
-// rather than whole images so they survive a change of Mesa or CPU (rendering.md section 0):
+// rather than whole images so they survive a change of Mesa or CPU (docs/rendering.md section 0):
 // linear lighting (the cosine law), no shadow acne on a lit floor, no peter-panning at a post's
 // foot, PCSS penumbrae that widen with the distance to the blocker while PCF's stay put, the
 // depth view (key 7) separating floor, cloth and an object, and a sky that does not move with

@@ -26,7 +26,7 @@ TEST(Spectrum, SingleSpringIsExact) {
 }
 
 TEST(Spectrum, LatticeMatchesTheClosedForm) {
-  // design.md: the seed lattice's highest angular frequency is about 3.06 sqrt(k0 / m).
+  // docs/design.md: the seed lattice's highest angular frequency is about 3.06 sqrt(k0 / m).
   Scene scene = testing::sheet(48, 1.0, 0.5, 1000.0, IntegratorKind::symplectic_euler, 1e-4);
   scene.springs.damping = 0.02;
   scene.forces.drag = 0.001;
@@ -53,7 +53,7 @@ TEST(StepLimit, ClosedFormsOfTheOscillator) {
   // Symplectic Euler and velocity Verlet: h < 2 / w without damping.
   EXPECT_NEAR(stable_step_limit(IntegratorKind::symplectic_euler, w, 0.0), 2.0 / w, 1e-9 / w);
   EXPECT_NEAR(stable_step_limit(IntegratorKind::verlet, w, 0.0), 2.0 / w, 1e-9 / w);
-  // With damping rate g, symplectic Euler needs h^2 w^2 + 2 h g < 4 (design.md).
+  // With damping rate g, symplectic Euler needs h^2 w^2 + 2 h g < 4 (docs/design.md).
   const double g = 300.0;
   EXPECT_NEAR(stable_step_limit(IntegratorKind::symplectic_euler, w, g),
               (-g + std::sqrt(g * g + 4.0 * w * w)) / (w * w), 1e-9 / w);

@@ -1,5 +1,5 @@
-// Mode 6's tangent frame on real pixels (rendering.md section 3): the weave's normal map is read
-// in a frame built per vertex from positions and UVs (T along dP/du, B along dP/dv, N the
+// Mode 6's tangent frame on real pixels (docs/rendering.md section 3): the weave's normal map is
+// read in a frame built per vertex from positions and UVs (T along dP/du, B along dP/dv, N the
 // surface normal), so a map that turns with the UV layout must give the same picture whatever
 // the layout. The map here is one constant tilted normal, chosen per layout so that it means
 // the same world-space normal; a tangent or bitangent of the wrong sign, or swapped, would tilt

@@ -52,7 +52,7 @@ inline Scene sheet(int res, double size, double mass, double stiffness, Integrat
   return s;
 }
 
-// design.md "Accuracy benchmark scenes": a res x res sheet, 1 m, 0.2 kg, stiffness 1000 N/m,
+// docs/design.md "Accuracy benchmark scenes": a res x res sheet, 1 m, 0.2 kg, stiffness 1000 N/m,
 // along-spring damping 0.05 N*s/m, lying horizontal and pinned at the two corners of one edge,
 // released at rest (the accuracy suite's scene, bench/suites/lab_scenes.hpp), in double.
 inline Scene falling_sheet(int res, IntegratorKind integrator, double dt) {

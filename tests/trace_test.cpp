@@ -33,7 +33,7 @@ std::string slurp(const std::string& path) {
 // A sheet with everything that touches the force pass switched on, large enough (40 x 40 =
 // 1600 vertices) to span several parallel blocks.
 Scene busy_scene() {
-  // dt below the stability limit 0.654 sqrt(m / k0) = 5.8e-4 s (design.md).
+  // dt below the stability limit 0.654 sqrt(m / k0) = 5.8e-4 s (docs/design.md).
   Scene s = testing::sheet(40, 2.0, 1.0, 800.0, IntegratorKind::symplectic_euler, 4e-4);
   s.cloths[0].pins = {{0, 0}, {39, 0}};
   s.springs.damping = 0.05;

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "load/scene_load.hpp"
 #include "sim/cloth/tube_cloth.hpp"
 #include "sim/scene/scene_error.hpp"
 #include "sim/scene/scene_parser.hpp"
@@ -117,14 +118,14 @@ TEST(TubeCloth, SceneErrorsNameTheKey) {
   };
   for (const Case& c : cases) {
     try {
-      parse_scene_string(c.text, "t.toml");
+      read_scene_string(c.text, "t.toml");
       ADD_FAILURE() << "accepted: " << c.text;
     } catch (const SceneError& e) {
       EXPECT_EQ(e.key, c.key) << e.what();
       EXPECT_NE(std::string(e.what()).find(c.says), std::string::npos) << e.what();
     }
   }
-  const Scene ok = parse_scene_string(
+  const Scene ok = read_scene_string(
       "[cloth]\nshape = \"tube\"\nradius = 0.25\nlength = 0.5\nresolution = [16, 8]\n", "t.toml");
   EXPECT_EQ(ok.cloths[0].radius, (std::array<double, 2>{0.25, 0.25}));
 }

@@ -1,6 +1,7 @@
 #include <cstdio>
 
 #include "apps/clothlab/commands.hpp"
+#include "sim/scene/parameters.hpp"
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
 
@@ -18,6 +19,12 @@ int run_check(const CheckArgs& args) {
               args.scene.c_str(), scene->cloths.size(), solver->vertex_count(),
               solver->spring_count(), to_string(scene->solver.integrator), solver->dt(),
               scene->solver.dt_auto ? " (auto)" : "", substeps);
+  return 0;
+}
+
+// The parameter table, as the README's "Scene keys" section holds it.
+int run_params() {
+  std::fputs(parameters_markdown().c_str(), stdout);
   return 0;
 }
 

@@ -30,7 +30,7 @@ struct RenderArgs {
   int mode = 0;  // display mode (keys 1-3, 7); 0: the scene's render.mode
   int width = 1280, height = 720;
   double fps = 60.0;      // simulated time per frame = 1 / fps
-  int copies = 1;         // copies of the scene's cloth side by side (sim/scene/scene_copies.hpp)
+  int copies = 1;         // copies of the scene's cloth side by side (sim/cloth/scene_copies.hpp)
   std::string out;        // directory for frame_00000.png, ...
   std::string video;      // optional MP4 through ffmpeg
   std::string music_out;  // optional: the scene's music as a WAV file
@@ -67,6 +67,7 @@ struct BenchArgs {
 
 int run_bench(const BenchArgs& args);
 int run_check(const CheckArgs& args);
+int run_params();  // check_command.cpp
 int run_render(const RenderArgs& args);
 int run_view(const ViewArgs& args);
 int run_trace_command(const TraceArgs& args);

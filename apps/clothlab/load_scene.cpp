@@ -2,14 +2,14 @@
 #include <cstdio>
 
 #include "apps/clothlab/commands.hpp"
-#include "sim/scene/scene_parser.hpp"
+#include "load/scene_load.hpp"
 
 namespace clothlab::app {
 
 std::optional<Scene> load_scene(const char* command, const std::string& path,
                                 const std::vector<std::string>& overrides) {
   try {
-    return parse_scene_file(path, overrides);
+    return read_scene_file(path, overrides);
   } catch (const SceneError& e) {
     std::fprintf(stderr, "clothlab %s: %s\n", command, e.what());
     return std::nullopt;

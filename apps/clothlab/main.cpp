@@ -146,6 +146,9 @@ int main(int argc, char** argv) {
                    "start with this many copies of the cloth side by side ([ and ] change it)")
       ->check(CLI::Range(1, 64));
 
+  auto* params_cmd = app.add_subcommand(
+      "params", "print every scene key: type, range, default, unit and meaning (Markdown)");
+
   BenchArgs bench;
   auto* bench_cmd = app.add_subcommand(
       "bench",
@@ -169,6 +172,7 @@ int main(int argc, char** argv) {
     return rc == 0 ? 0 : 2;
   }
   if (*check_cmd) return run_check(check);
+  if (*params_cmd) return run_params();
   if (*trace_cmd) return run_trace_command(trace);
   if (*render_cmd) {
     std::sscanf(size.c_str(), "%dx%d", &render.width, &render.height);

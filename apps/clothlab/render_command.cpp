@@ -10,8 +10,8 @@
 #include "apps/clothlab/commands.hpp"
 #include "apps/clothlab/progress_bar.hpp"
 #include "apps/clothlab/video_pipe.hpp"
-#include "sim/audio/music_track.hpp"
-#include "sim/scene/scene_copies.hpp"
+#include "music/music_track.hpp"
+#include "sim/cloth/scene_copies.hpp"
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
 #include "vis/gl/gl_error.hpp"
@@ -130,7 +130,7 @@ int run_render(const RenderArgs& args) {
     if (args.copies > 1) {
       if (const std::string why = copies_unsupported_reason(scene); !why.empty())
         throw std::runtime_error("--copies: " + why);
-      scene = with_copies(scene, args.copies, copy_spacing(*make_solver(scene)));
+      scene = with_copies(scene, args.copies, copy_spacing(scene));
     }
     std::string backend_note;
     const auto solver = vis::make_backend_solver(scene, backend_note);

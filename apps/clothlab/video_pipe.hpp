@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/audio/audio_clip.hpp"
+#include "music/audio_clip.hpp"
 
 namespace clothlab::app {
 

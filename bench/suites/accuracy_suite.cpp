@@ -1,7 +1,7 @@
 // `clothlab bench --suite accuracy`: run time against error. Every integrator runs a ladder of
 // steps on the canonical scenes; its positions at fixed horizons are compared with a reference
 // (double-precision RK4 at a small step, whose own convergence is checked by halving that step).
-// design.md, "Accuracy benchmark scenes", sets the scenes and the rules.
+// docs/design.md, "Accuracy benchmark scenes", sets the scenes and the rules.
 #include <algorithm>
 #include <cmath>
 #include <functional>

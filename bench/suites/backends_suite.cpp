@@ -1,7 +1,7 @@
 // `clothlab bench --suite backends`: the CPU solver against solver.backend = "gpu"
 // (vis/gpu/gpu_solver.hpp) on the benchmark sheet (bench/bench_scenes.hpp, no wind), symplectic
 // Euler in float, from 64x64 to 512x512 and with 1 to 16 copies of a 64x64 sheet side by side
-// (sim/scene/scene_copies.hpp, as the window's ]). Per step, the median of batches of about 20 ms;
+// (sim/cloth/scene_copies.hpp, as the window's ]). Per step, the median of batches of about 20 ms;
 // a GPU batch is one step() call, which ends with the read-back its divergence check needs, so its
 // time is the work done, not the work queued. The renderer string and llvmpipe's thread count
 // (LP_NUM_THREADS; unset: one per core) are printed: on Mesa's llvmpipe the "GPU" is the CPU
@@ -16,7 +16,7 @@
 #include "bench/bench_scenes.hpp"
 #include "bench/suites/step_timing.hpp"
 #include "bench/suites/suites.hpp"
-#include "sim/scene/scene_copies.hpp"
+#include "sim/cloth/scene_copies.hpp"
 #include "sim/solver_impl.hpp"
 #include "vis/gl/headless_context.hpp"
 #include "vis/gpu/gpu_solver.hpp"

@@ -1,4 +1,4 @@
-// The canonical scenes of the accuracy and stability suites (design.md, "Accuracy benchmark
+// The canonical scenes of the accuracy and stability suites (docs/design.md, "Accuracy benchmark
 // scenes"), built in code so tests and benchmarks share them.
 #pragma once
 

@@ -10,7 +10,7 @@
 
 #include "bench/suites/step_timing.hpp"
 #include "bench/suites/suites.hpp"
-#include "sim/scene/scene_parser.hpp"
+#include "load/scene_load.hpp"
 #include "sim/solver.hpp"
 #include "vis/gl/gl.hpp"
 #include "vis/render/headless_renderer.hpp"
@@ -39,7 +39,7 @@ std::vector<Table> rendering_suite(const SuiteOptions& o) {
   const int width = o.quick ? 320 : 1280, height = o.quick ? 240 : 720;
   const int rounds = o.quick ? 1 : 5, frames = o.quick ? 1 : 3;
   Scene scene =
-      parse_scene_file(CLOTHLAB_DEFAULT_SCENE, {"solver.threads=" + std::to_string(o.threads)});
+      read_scene_file(CLOTHLAB_DEFAULT_SCENE, {"solver.threads=" + std::to_string(o.threads)});
   scene.render.meshes = {mesh(MeshKind::sphere, {-1.4, 0.4, 0.8}, 0.4, {0.8, 0.3, 0.2}),
                          mesh(MeshKind::box, {1.5, 0.3, 0.6}, 0.3, {0.3, 0.5, 0.8}),
                          mesh(MeshKind::torus_knot, {0.0, 0.5, 1.4}, 0.45, {0.85, 0.75, 0.3})};

@@ -31,7 +31,7 @@ std::string sci(double value, int digits = 3);  // %.*e with `digits` significan
 std::string pct(double ratio);                  // 0.123 -> "12.3 %"
 
 // One-minute load average of the machine (/proc/loadavg), NaN if unreadable: benchmarks print it
-// so a reader can tell a noisy measurement (design.md, "Performance notes").
+// so a reader can tell a noisy measurement (docs/design.md, "Performance notes").
 double load_average();
 
 // Wall-clock seconds since construction.

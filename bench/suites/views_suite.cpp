@@ -14,7 +14,7 @@
 #include <stdexcept>
 
 #include "bench/suites/suites.hpp"
-#include "sim/scene/scene_parser.hpp"
+#include "load/scene_load.hpp"
 #include "sim/solver.hpp"
 #include "vis/gl/gl.hpp"
 #include "vis/render/headless_renderer.hpp"
@@ -46,7 +46,7 @@ Scene default_scene(int res, int threads) {
     overrides.push_back("cloth.resolution=[" + r + "," + r + "]");
     overrides.push_back("cloth.pins=[[0,0],[" + last + ",0]]");
   }
-  return parse_scene_file(CLOTHLAB_DEFAULT_SCENE, overrides);
+  return read_scene_file(CLOTHLAB_DEFAULT_SCENE, overrides);
 }
 
 }  // namespace

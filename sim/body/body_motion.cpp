@@ -3,15 +3,15 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "sim/core/check.hpp"
+
 namespace clothlab {
 
 BodyMotion::BodyMotion(Dance dance, const Eigen::Vector3d& position, double facing_degrees)
     : dance_(std::move(dance)),
       facing_(Eigen::AngleAxisd(facing_degrees * M_PI / 180.0, Eigen::Vector3d::UnitY())),
       position_(position) {
-  if (dance_.primitive_count() > kMaxParts)
-    throw std::invalid_argument("mannequin has more than " + std::to_string(kMaxParts) +
-                                " primitives");
+  CLOTHLAB_CHECK_LE(dance_.primitive_count(), kMaxParts);  // the pose cache holds kMaxParts
 }
 
 const BodyMotion::Entry& BodyMotion::evaluate(double t) const {

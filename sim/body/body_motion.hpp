@@ -18,8 +18,8 @@ class BodyMotion {
   static constexpr int kMaxParts = 24;
 
   // The dance placed in the world: turned `facing_degrees` about +y, then moved to `position`
-  // (the dance's own frame stands at the origin facing +z). Throws std::invalid_argument for a
-  // mannequin of more than kMaxParts primitives.
+  // (the dance's own frame stands at the origin facing +z). A mannequin of more than kMaxParts
+  // primitives is a programmer error (CLOTHLAB_CHECK).
   BodyMotion(Dance dance, const Eigen::Vector3d& position, double facing_degrees);
 
   const Dance& dance() const { return dance_; }

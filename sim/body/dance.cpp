@@ -62,7 +62,7 @@ T hermite(const T& p0, const T& m0, const T& p1, const T& m1, double s, double d
 // One beat of the choreography, angles in degrees, as deviations from the rest pose. Steps
 // between neighbouring beats stay under about 50 degrees: at 140 BPM (0.43 s a beat) and with
 // the Catmull-Rom overshoot that keeps joints near 3 rad/s, well under the 10 rad/s of
-// contact.md section 3.
+// docs/contact.md section 3.
 struct Move {
   double hip_sway;          // pelvis roll about +z; the hips roll back so the legs stay upright
   double chest_sway;        // chest roll about +z

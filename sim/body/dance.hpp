@@ -1,4 +1,4 @@
-// The mannequin dancing to beats (contact.md section 3). The rest (A-)pose is held for
+// The mannequin dancing to beats (docs/contact.md section 3). The rest (A-)pose is held for
 // settle_seconds, so garments can settle and seams close; then the dance blends in with a
 // smoothstep weight until the first keyframe, which lands on the blend_beats-th beat after
 // settle_seconds. From there one keyframe pose sits exactly on every beat (a 16-beat loop: hip

@@ -12,7 +12,7 @@ using Eigen::Vector3d;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-// Proportions of a 1.75 m adult (contact.md section 3 for the primitive sizes).
+// Proportions of a 1.75 m adult (docs/contact.md section 3 for the primitive sizes).
 constexpr double kHeight = 1.75;
 constexpr double kArmOut = 25 * kDeg;  // A-pose: arms 25 degrees from the body
 constexpr double kLegOut = 3 * kDeg;   // legs slightly apart

@@ -1,7 +1,7 @@
-// A procedural 1.75 m mannequin (contact.md section 3): spheres, boxes and capsules attached to
-// the joints of a forward-kinematics skeleton, standing on y = 0 and facing +z, its left hand on
+// A procedural 1.75 m mannequin (docs/contact.md section 3): spheres, boxes and capsules attached
+// to the joints of a forward-kinematics skeleton, standing on y = 0 and facing +z, its left hand on
 // +x. At rest the arms hang in an A-pose (25 degrees out from the body) so that a skirt or a cape
-// hangs clear of them, and the legs stand slightly apart. Sizes from contact.md section 3.
+// hangs clear of them, and the legs stand slightly apart. Sizes from docs/contact.md section 3.
 #pragma once
 
 #include <Eigen/Geometry>

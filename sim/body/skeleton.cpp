@@ -1,13 +1,14 @@
 #include "sim/body/skeleton.hpp"
 
-#include <cassert>
 #include <stdexcept>
+
+#include "sim/core/check.hpp"
 
 namespace clothlab {
 
 int Skeleton::add(std::string name, int parent, const Eigen::Vector3d& offset,
                   const Eigen::Quaterniond& rest_rotation) {
-  if (size() >= kMaxJoints) throw std::invalid_argument("skeleton: more than kMaxJoints joints");
+  CLOTHLAB_CHECK_LT(size(), kMaxJoints);  // the fixed pose arrays hold kMaxJoints
   if (parent < -1 || parent >= size())
     throw std::invalid_argument("skeleton: joint '" + name + "' has no earlier parent");
   joints.push_back(Joint{std::move(name), parent, offset, rest_rotation.normalized()});
@@ -29,7 +30,7 @@ SkeletonPose rest_pose(const Skeleton& skeleton) {
 
 void forward_kinematics(const Skeleton& skeleton, const SkeletonPose& pose,
                         std::span<JointFrame> world) {
-  assert(world.size() >= skeleton.joints.size());
+  CLOTHLAB_CHECK_GE(world.size(), skeleton.joints.size());
   const JointFrame root{pose.root_rotation, pose.root_translation};
   for (int j = 0; j < skeleton.size(); ++j) {
     const Joint& joint = skeleton.joints[j];

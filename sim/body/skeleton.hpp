@@ -1,4 +1,4 @@
-// A forward-kinematics skeleton (contact.md section 3): joints in a tree, each with its rest
+// A forward-kinematics skeleton (docs/contact.md section 3): joints in a tree, each with its rest
 // offset from its parent and a rotation in its parent's frame. The world frame of joint j is
 // parent_world * T(offset_j) * R(local_j); the root's parent is the figure's placement on the
 // floor, T(root_translation) * R(root_rotation). The solver poses the skeleton at every substep,

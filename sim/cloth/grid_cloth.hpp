@@ -1,4 +1,4 @@
-// A rectangular grid of vertices as design.md defines it: vertex (i, j) sits at
+// A rectangular grid of vertices as docs/design.md defines it: vertex (i, j) sits at
 // origin + i * du * u + j * dv * v, with du = size_u / (res_u - 1) and u, v the unit axes.
 #pragma once
 

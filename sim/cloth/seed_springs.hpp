@@ -1,6 +1,7 @@
-// The assignment's "seed" spring rule (design.md): every vertex pair closer than 2*sqrt(2)*edge
-// is joined by a spring of stiffness k = stiffness * edge / rest_length. On a square grid this is
-// the 20-neighbour stencil (offsets with di^2 + dj^2 < 8): structural, shear and bending springs.
+// The assignment's "seed" spring rule (docs/design.md): every vertex pair closer than
+// 2*sqrt(2)*edge is joined by a spring of stiffness k = stiffness * edge / rest_length. On a square
+// grid this is the 20-neighbour stencil (offsets with di^2 + dj^2 < 8): structural, shear and
+// bending springs.
 #pragma once
 
 #include <vector>

@@ -1,5 +1,5 @@
 // A collider at run time: its shape as a signed distance in its own frame, and its rigid pose
-// at any time (contact.md section 1). One interface for every shape: phi(p) (negative inside),
+// at any time (docs/contact.md section 1). One interface for every shape: phi(p) (negative inside),
 // its gradient as the outward normal, and the surface velocity v_c = v + w x (x - c) that the
 // contact response works relative to.
 #pragma once

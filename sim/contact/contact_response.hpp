@@ -1,5 +1,5 @@
 // Collision response against the scene's colliders, applied after every integrator substep
-// (contact.md section 1; Bridson, Fedkiw & Anderson 2002, section 7):
+// (docs/contact.md section 1; Bridson, Fedkiw & Anderson 2002, section 7):
 //  1. Detection in each collider's own frame, along the vertex's path relative to the collider
 //     (start of the substep in the collider's start pose, end in its end pose), so a fast thin
 //     collider cannot pass a vertex unseen: where the path starts outside the shell (phi >=

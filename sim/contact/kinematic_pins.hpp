@@ -1,5 +1,5 @@
 // Pins that move with a collider (ClothSpec::pins_follow: a skirt's waistband on a turning body,
-// contact.md section 3): each such pinned vertex keeps its place in the collider's frame, x =
+// docs/contact.md section 3): each such pinned vertex keeps its place in the collider's frame, x =
 // pose(t) * x_local, with the collider's surface velocity. The integrators move a pinned vertex
 // by h v and nothing else (XPBD and local/global hold it still), so drive() gives it the velocity
 // that carries it to its place at the end of the substep, and place() puts it exactly there.

@@ -1,4 +1,4 @@
-// Cloth self-collision (contact.md section 2): vertices are spheres, two vertices of the cloth
+// Cloth self-collision (docs/contact.md section 2): vertices are spheres, two vertices of the cloth
 // stay at least `thickness` (solver.self_thickness) apart.
 //  - Broad phase once per solver step (not per substep): a spatial hash of the vertex positions
 //    (Teschner et al. 2003, "Optimized Spatial Hashing for Collision Detection of Deformable
@@ -10,7 +10,7 @@
 //    or under the longest spring (every spring-connected pair, as the seed rule joins all pairs
 //    closer than its longest spring): neighbours in the grid are always that close and their
 //    springs already keep them apart. Vertices of different cloths are never skipped.
-//  - Response after every substep, after the collider response (contact.md section 1, the same
+//  - Response after every substep, after the collider response (docs/contact.md section 1, the same
 //    steps as sim/contact/contact_response.hpp, between two moving vertices): along the pair's
 //    direction n, the relative normal velocity may close the gap beyond the thickness within the
 //    next substep (gap / h) but no more, an inelastic impulse split by inverse mass (a pinned

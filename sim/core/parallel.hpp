@@ -1,6 +1,6 @@
 // Deterministic OpenMP helpers. Work is cut into blocks of a fixed size that does not depend on
 // the thread count, and every vertex is computed by the same code path in the same order, so a
-// result is bit-identical for any number of threads (design.md: "same trace, bit for bit").
+// result is bit-identical for any number of threads (docs/design.md: "same trace, bit for bit").
 #pragma once
 
 #include <algorithm>

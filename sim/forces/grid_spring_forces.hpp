@@ -1,7 +1,7 @@
 // The row-sweep spring kernel for grid cloths: the same physics as spring_forces.hpp (Hooke plus
 // along-spring damping), with the neighbours of one grid row under one stencil offset read as a
 // contiguous run of memory. No index array and no gathers: the loop streams and vectorises fully
-// (design.md, performance notes: the fastest of the layouts measured for the seed stencil).
+// (docs/design.md, performance notes: the fastest of the layouts measured for the seed stencil).
 #pragma once
 
 #include <algorithm>

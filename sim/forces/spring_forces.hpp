@@ -1,7 +1,7 @@
 // Spring forces gathered per vertex over the neighbour table (Model<T>).
 // Hooke: F_i += k (|d| - L) d/|d|, with d = x_j - x_i.
-// Along-spring damping (design.md): F_i += c ((v_j - v_i) . d^) d^, i.e. -c ((v_i - v_j) . n) n.
-// Both ends compute the same expression with d negated, so F_ij = -F_ji exactly (momentum).
+// Along-spring damping (docs/design.md): F_i += c ((v_j - v_i) . d^) d^, i.e. -c ((v_i - v_j) . n)
+// n. Both ends compute the same expression with d negated, so F_ij = -F_ji exactly (momentum).
 #pragma once
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// The assignment's "hack" (design.md): with a = a(t, x, v) and dv = a dt,
+// The assignment's "hack" (docs/design.md): with a = a(t, x, v) and dv = a dt,
 //   x' = x + (v + dv) dt + a dt^2 / 2,   v' = v + dv.
 // It is symplectic Euler plus an extra a dt^2 / 2 in the position: first order, kept so the
 // course's reference behaviour can be compared.

@@ -1,5 +1,5 @@
 // The signed distance field of a closed triangle mesh, sampled once at load on a regular grid
-// (a mesh collider, contact.md section 1: phi by trilinear lookup, the normal from its
+// (a mesh collider, docs/contact.md section 1: phi by trilinear lookup, the normal from its
 // gradient). Built in three passes:
 //  1. exact point-triangle distances (Ericson, "Real-Time Collision Detection" 5.1.5) for the
 //     grid points near each triangle (a band of two cells round its box);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "sim/cloth/build_cloth.hpp"
 #include "sim/cloth/grid_cloth.hpp"
 #include "sim/cloth/mesh_cloth.hpp"
 #include "sim/cloth/tube_cloth.hpp"
@@ -115,9 +116,7 @@ Model<T> build_model(const Scene& scene, SpringKernel kernel) {
   std::vector<double> masses;
   for (std::size_t c = 0; c < scene.cloths.size(); ++c) {
     const std::string& shape = scene.cloths[c].shape;
-    const GridCloth g = shape == "tube"   ? build_tube_cloth(scene.cloths[c])
-                        : shape == "mesh" ? build_mesh_cloth(scene.cloths[c])
-                                          : build_grid_cloth(scene.cloths[c]);
+    const GridCloth g = build_cloth(scene.cloths[c]);
     const SpringSpec& spec = scene.springs_of(c);
     const int offset = static_cast<int>(positions.size());
     m.cloths.push_back({offset, g.nu, g.nv, g.wrap_u, g.mesh});

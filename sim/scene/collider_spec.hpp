@@ -1,6 +1,6 @@
-// [[colliders]]: the solid shapes the cloth collides with (design.md "Scene file", contact.md
-// section 1). Plain data; sim/contact/ builds the signed distances from it and vis/ draws the
-// same shapes.
+// [[colliders]]: the solid shapes the cloth collides with (docs/design.md "Scene file",
+// docs/contact.md section 1). Plain data; sim/contact/ builds the signed distances from it and vis/
+// draws the same shapes.
 #pragma once
 
 #include <array>

@@ -1,4 +1,4 @@
-// The scene's [render] table (design.md "Later sections"): how the scene is shown -- display
+// The scene's [render] table (docs/design.md, "Scene file"): how the scene is shown -- display
 // mode, shadows, the light, the sky, the pole the cloth hangs from, extra meshes and the cloth's
 // look. Plain data read by vis/; nothing here changes the physics.
 #pragma once
@@ -61,7 +61,7 @@ struct MeshSpec {
   std::string key;                          // "render.meshes[2]", for messages
 };
 
-// The cloth's material in modes 4-6 (rendering.md sections 2-5).
+// The cloth's material in modes 4-6 (docs/rendering.md sections 2-5).
 struct ClothLookSpec {
   double roughness = 0.5;        // Oren-Nayar roughness, 0..1
   double sheen = 1.0;            // sheen strength, 0..1 (sheen colour = sqrt(albedo) * sheen)

@@ -1,5 +1,5 @@
 // Scene: the plain data a scene file (TOML, version 1) is parsed into. Objects are built from it
-// afterwards (see sim/solver.hpp). Layout and keys: ../shared/design/design.md, README.md.
+// afterwards (see sim/solver.hpp). Layout and keys: docs/design.md, README.md.
 #pragma once
 
 #include <array>
@@ -24,7 +24,7 @@ struct SourceLoc {
 };
 
 struct SpringSpec {
-  std::string rule = "seed";  // the only rule so far: design.md "seed" rule
+  std::string rule = "seed";  // the only rule so far: docs/design.md "seed" rule
   double stiffness = 800.0;   // N/m, k = stiffness * edge / rest_length
   double damping = 0.0;       // N*s/m, along-spring damping
 };

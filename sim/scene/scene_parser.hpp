@@ -1,4 +1,4 @@
-// Reading a scene file (TOML, version 1; see ../shared/design/design.md) into a Scene.
+// Reading a scene file (TOML, version 1; see docs/design.md) into a Scene.
 // Every problem -- unreadable file, TOML syntax, unknown key, wrong type, value out of range --
 // is a SceneError naming the file, line, column and key path (or the --set argument).
 #pragma once

@@ -1,5 +1,5 @@
-// CSV traces (design.md, "CSV trace"). One header row, then per written step one row per traced
-// vertex: step,time,[cloth,]vertex_i,vertex_j, then px,py,pz / vx,vy,vz / fx,fy,fz for the
+// CSV traces (docs/design.md, "CSV trace"). One header row, then per written step one row per
+// traced vertex: step,time,[cloth,]vertex_i,vertex_j, then px,py,pz / vx,vy,vz / fx,fy,fz for the
 // requested fields, then kinetic,elastic,gravity,total when "energy" is requested (the step's
 // energy, repeated on each vertex row of that step). With energy but no traced vertex, each step
 // has one row with vertex -1,-1 and no per-vertex columns. The cloth column appears only for

@@ -1,6 +1,6 @@
-// Colour maps for the scientific views (rendering.md section 8): the 256-entry sRGB tables, the
-// colour the GPU shows for a value, the range a field is mapped over, and "nice" colour-bar ticks.
-// No GL here, so the tests and the CPU colour bar use exactly what the LUT texture holds.
+// Colour maps for the scientific views (docs/rendering.md section 8): the 256-entry sRGB tables,
+// the colour the GPU shows for a value, the range a field is mapped over, and "nice" colour-bar
+// ticks. No GL here, so the tests and the CPU colour bar use exactly what the LUT texture holds.
 #pragma once
 
 #include <array>

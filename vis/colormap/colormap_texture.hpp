@@ -1,4 +1,5 @@
-// The colour map as the 256x1 lookup texture the field shaders sample (rendering.md section 8).
+// The colour map as the 256x1 lookup texture the field shaders sample (docs/rendering.md section
+// 8).
 #pragma once
 
 #include "vis/colormap/colormap.hpp"

@@ -1,4 +1,4 @@
-// Move-only RAII owners of GL objects (style.md: "GL objects are move-only RAII types under
+// Move-only RAII owners of GL objects (docs/style.md: "GL objects are move-only RAII types under
 // vis/gl/"). Each wraps one name and deletes it with the matching glDelete* call.
 #pragma once
 

@@ -1,5 +1,5 @@
-// The colour bar beside a scientific view (rendering.md section 8): the map drawn from the same
-// colours the cloth shows, with "nice" ticks, labels and the field's title and unit.
+// The colour bar beside a scientific view (docs/rendering.md section 8): the map drawn from the
+// same colours the cloth shows, with "nice" ticks, labels and the field's title and unit.
 #pragma once
 
 #include <imgui.h>

@@ -1,5 +1,5 @@
 // Mode 6's subsurface imitation by texture-space diffusion (d'Eon & Luebke, "Advanced Techniques
-// for Realistic Real-Time Skin Rendering", GPU Gems 3 ch. 14; rendering.md section 4): the
+// for Realistic Real-Time Skin Rendering", GPU Gems 3 ch. 14; docs/rendering.md section 4): the
 // irradiance of the cloth's lit side drawn into the cloths' UV atlas, then blurred by three
 // Gaussians of growing width (each blur applied to the previous one, so variances add), each a
 // horizontal and a vertical 7-tap pass. The cloth pass samples the three blurs back and weighs

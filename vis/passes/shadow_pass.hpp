@@ -1,5 +1,5 @@
-// The shadow map: every caster's depth from the light (rendering.md section 6), drawn before the
-// main pass whenever a shadow filter or the depth view (key 7) needs it, and nowhere else. One
+// The shadow map: every caster's depth from the light (docs/rendering.md section 6), drawn before
+// the main pass whenever a shadow filter or the depth view (key 7) needs it, and nowhere else. One
 // depth texture, read through two sampler objects: a comparing one for PCF and a plain one for
 // PCSS's blocker search and the depth view.
 #pragma once
@@ -24,7 +24,7 @@ class ShadowPass {
   // Restores the state begin() changed (not the framebuffer: the caller binds its own).
   void end();
 
-  // Coloured shadows of a translucent cloth (mode 5; rendering.md section 5, the OptiFine/Iris
+  // Coloured shadows of a translucent cloth (mode 5; docs/rendering.md section 5, the OptiFine/Iris
   // scheme): after the all-casters map, a second depth map of the opaque casters only and a
   // colour map holding the product of the transmittances of the translucent layers.
   void begin_opaque();  // the opaque-only depth map as the target (draw the opaque casters)

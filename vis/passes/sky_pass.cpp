@@ -37,7 +37,7 @@ void SkyPass::bake(glm::vec3 sun, float turbidity) {
 
 void SkyPass::draw(glm::vec3 sun, float turbidity, const glm::mat4& view_proj, glm::vec3 eye) {
   if (!cube_ || sun != baked_sun_ || turbidity != baked_turbidity_) bake(sun, turbidity);
-  // No seams between the faces (rendering.md section 7).
+  // No seams between the faces (docs/rendering.md section 7).
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
   const glm::mat4 inverse = glm::inverse(view_proj);
   glUseProgram(program_.get());

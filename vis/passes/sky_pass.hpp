@@ -1,5 +1,5 @@
-// The sky behind everything (rendering.md section 7): Preetham's daylight model (vis/sky/) baked
-// once into a cube map for the sun's direction and the turbidity, drawn as a full-screen
+// The sky behind everything (docs/rendering.md section 7): Preetham's daylight model (vis/sky/)
+// baked once into a cube map for the sun's direction and the turbidity, drawn as a full-screen
 // triangle at the far plane where nothing else was drawn. Baked again only when the sun or the
 // turbidity changes.
 #pragma once

@@ -1,6 +1,6 @@
-// The scene's [[colliders]] drawn with the shapes the cloth collides with (contact.md section 1):
-// sphere, box (rotated; rounded edges where it has rounding), capsule, and planes other than the
-// floor (floor_collider.hpp) as a large two-sided quad. Lit and shadowed like the other scenery
+// The scene's [[colliders]] drawn with the shapes the cloth collides with (docs/contact.md section
+// 1): sphere, box (rotated; rounded edges where it has rounding), capsule, and planes other than
+// the floor (floor_collider.hpp) as a large two-sided quad. Lit and shadowed like the other scenery
 // in every shaded mode and drawn into the shadow map as casters (so also into mode 7's depth
 // view). Moving colliders follow the solver's clock: update() poses every shape at a time.
 #pragma once

@@ -1,8 +1,8 @@
 // The scientific views drawn over the cloth, shared by the window and headless rendering: the
 // colour-by scalar (ViewSettings::color) and the force and normal arrows (ViewSettings::arrows).
 // Each frame update() computes only what the view shows, from the solver's current state: no
-// force field, no scalar and no arrow buffer exists while everything is off (design.md: no field
-// export unless something displays, probes or traces it).
+// force field, no scalar and no arrow buffer exists while everything is off (docs/design.md: no
+// field export unless something displays, probes or traces it).
 #pragma once
 
 #include <cstddef>

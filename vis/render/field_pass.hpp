@@ -1,7 +1,8 @@
 // The field pass behind probes: draws the cloth once more, with the main pass's geometry and
 // camera, into single-sample float targets (force, velocity, world position) and a triangle id,
 // so one pixel can be read back as raw SI values rather than colours. Only built and drawn when
-// something probes (design.md: no field export unless something displays, probes or traces it).
+// something probes (docs/design.md: no field export unless something displays, probes or traces
+// it).
 #pragma once
 
 #include <glm/glm.hpp>

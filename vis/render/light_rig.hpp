@@ -1,6 +1,6 @@
 // Where the scene's light is and how its shadow map sees the scene: a spot light gets a
 // perspective frustum, a directional light an orthographic box, each fitted to the casters and
-// reaching on to where their shadows land (rendering.md section 6).
+// reaching on to where their shadows land (docs/rendering.md section 6).
 #pragma once
 
 #include <glm/glm.hpp>

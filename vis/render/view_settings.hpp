@@ -1,6 +1,6 @@
 // ViewSettings: every choice a user can make about how the cloth is shown, in one plain struct
-// with its defaults here (style.md: one settings struct edited by keys and the UI, no scattered
-// statics). Nothing here changes the physics.
+// with its defaults here (docs/style.md: one settings struct edited by keys and the UI, no
+// scattered statics). Nothing here changes the physics.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -18,7 +18,7 @@ struct Scene;
 
 namespace clothlab::vis {
 
-// Keys 1-7 (design.md): springs as lines coloured by strain, world normals as colour, Lambert
+// Keys 1-7 (docs/design.md): springs as lines coloured by strain, world normals as colour, Lambert
 // with the fabric texture, the cloth BRDF, translucent cloth, the normal-mapped weave, and the
 // light's depth map.
 enum class DisplayMode {

@@ -1,7 +1,7 @@
-// Asset-free daylight sky (rendering.md section 7): the Preetham, Shirley & Smits analytic model
-// evaluated on the CPU and baked into a linear-RGB cube map for the skybox pass. No GL here; the
-// renderer uploads CubeFaces as GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, one glTexImage2D per face
-// (RGB float, rows bottom-up in t exactly as stored).
+// Asset-free daylight sky (docs/rendering.md section 7): the Preetham, Shirley & Smits analytic
+// model evaluated on the CPU and baked into a linear-RGB cube map for the skybox pass. No GL here;
+// the renderer uploads CubeFaces as GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, one glTexImage2D per
+// face (RGB float, rows bottom-up in t exactly as stored).
 //
 // Source: A. J. Preetham, P. Shirley, B. Smits, "A Practical Analytic Model for Daylight",
 // SIGGRAPH 1999, section 3 and appendix A.2 (Perez distribution coefficients for Y, x, y linear in

@@ -1,5 +1,5 @@
 // Per-vertex tangent frame of a grid cloth for normal mapping, recomputed every frame from the
-// current positions and normals (rendering.md section 3). Plain arrays, no solver dependency.
+// current positions and normals (docs/rendering.md section 3). Plain arrays, no solver dependency.
 #pragma once
 
 #include <array>

@@ -15,7 +15,7 @@
 // normal n (unit, z >= 0) is stored as byte = 128 + round(127 * n), per channel, so n = 0 is
 // exactly 128 and n = 1 exactly 255 (flat = (128, 128, 255)). This is the usual n * 0.5 + 0.5
 // encoding, but scaled by 127 around 128 instead of by 127.5 around 127.5, which cannot hit 0
-// exactly (rendering.md section 3). Decode with
+// exactly (docs/rendering.md section 3). Decode with
 //     n = byte / 127 - 128 / 127            (bytes, as decode_normal does), or in GLSL
 //     n = texture(map, uv).rgb * (255.0 / 127.0) - 128.0 / 127.0
 // then normalise (after filtering). The decoded vector of a texel made here is unit length

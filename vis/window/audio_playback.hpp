@@ -1,4 +1,4 @@
-// Music playback in the window through OpenAL (contact.md section 4). The audio clock is the
+// Music playback in the window through OpenAL (docs/contact.md section 4). The audio clock is the
 // master and the simulation catches up to time(); where no device opens (a headless machine has
 // no /dev/snd) open() returns nothing and the caller runs on the simulation clock. Interactive
 // only: no test opens a device.
@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "sim/audio/audio_clip.hpp"
+#include "music/audio_clip.hpp"
 
 namespace clothlab::vis {
 

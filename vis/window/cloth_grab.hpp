@@ -1,5 +1,5 @@
-// Ctrl + left drag pulls the cloth (design.md "Keys (window)"): the press picks the vertex under
-// the cursor with the probes' field pass, the drag moves its target in the plane through the
+// Ctrl + left drag pulls the cloth (docs/design.md "Keys (window)"): the press picks the vertex
+// under the cursor with the probes' field pass, the drag moves its target in the plane through the
 // vertex that faces the camera (so the vertex stays at the depth where it was grabbed and
 // follows the cursor), the release lets go. The solver does the pulling (Solver::grab: a stiff
 // damped spring to the target). No GL here but through probe_fields.

@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <string>
 
+#include "sim/scene/parameter_keys.hpp"
+#include "vis/window/parameter_editors.hpp"
 #include "vis/window/scene_edit.hpp"
 #include "vis/window/views_panel.hpp"
 
@@ -20,86 +22,23 @@ const ImVec4 kErrorColour{1.0f, 0.45f, 0.4f, 1.0f};
 const ImVec4 kWarningColour{1.0f, 0.8f, 0.3f, 1.0f};
 constexpr float kPanelWidth = 380.0f;
 
-// True when an edit of the last widget is finished -- a slider released, typed text confirmed, a
-// combo item or checkbox clicked -- so the solver is rebuilt once per edit, not once per frame
-// of a drag (a rebuild of a 512 x 512 cloth takes a while).
-bool committed(bool changed) {
-  return (changed && !ImGui::IsItemActive()) || ImGui::IsItemDeactivatedAfterEdit();
-}
-
-// A double slider on a logarithmic scale (Ctrl + click types any value).
-bool log_slider(const char* label, double& value, double lo, double hi) {
-  return committed(ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, "%.4g",
-                                       ImGuiSliderFlags_Logarithmic));
-}
-
-bool integrator_combo(IntegratorKind& kind) {
-  bool changed = false;
-  if (ImGui::BeginCombo("integrator", to_string(kind))) {
-    for (IntegratorKind k : kAllIntegrators) {
-      if (ImGui::Selectable(to_string(k), k == kind)) {
-        changed = k != kind;
-        kind = k;
-      }
-    }
-    ImGui::EndCombo();
-  }
-  return changed;
-}
-
-bool spring_editors(SpringSpec& springs) {
-  bool edited = log_slider("stiffness (N/m)", springs.stiffness, 1.0, 1e5);
-  edited |= log_slider("damping (N*s/m)", springs.damping, 0.0, 10.0);
-  return edited;
-}
-
-// The step: automatic (from the highest frequency) or typed; substeps; the iterative methods'
-// own parameters.
-bool step_editors(SolverSpec& s, const Solver& running) {
-  bool edited = committed(ImGui::Checkbox("auto dt", &s.dt_auto));
-  if (s.dt_auto) {
-    ImGui::SameLine();
-    ImGui::TextDisabled("%.4g s x %d substep(s)", running.dt(), running.substeps());
-  } else {
-    edited |= committed(ImGui::InputDouble("dt (s)", &s.dt, 0.0, 0.0, "%.6g"));
-    edited |= committed(ImGui::InputInt("substeps", &s.substeps));
-  }
-  if (s.integrator == IntegratorKind::implicit_euler) {
-    edited |= log_slider("CG tolerance", s.cg_tolerance, 1e-10, 1e-1);
-    edited |= committed(ImGui::InputInt("CG max iterations", &s.cg_max_iterations));
-  }
-  if (s.integrator == IntegratorKind::xpbd || s.integrator == IntegratorKind::local_global)
-    edited |= committed(ImGui::InputInt("iterations (0 = default)", &s.iterations));
-  return edited;
-}
-
 // Integrator, dt, springs, drag, wind: applied to the running motion once an edit is finished.
-// solver.backend: where the cloth steps. The motion carries over (load_state) either way; a scene
-// the GPU cannot run stays on the CPU and the panel's message says why.
-bool backend_radio(Backend& backend) {
-  int b = backend == Backend::gpu ? 1 : 0;
-  bool edited = ImGui::RadioButton("CPU", &b, 0);
-  ImGui::SameLine();
-  edited |= ImGui::RadioButton("GPU (compute shaders)", &b, 1);
-  ImGui::SameLine();
-  ImGui::TextUnformatted("backend");
-  backend = b == 1 ? Backend::gpu : Backend::cpu;
-  return edited;
-}
-
+// The editors come from the parameter table; solver.backend moves the motion (load_state) to the
+// other backend, and a scene the GPU cannot run stays on the CPU with the panel's message saying
+// why.
 bool dynamics_editors(Scene& draft, const Solver& running) {
-  bool edited = backend_radio(draft.solver.backend);
-  edited |= integrator_combo(draft.solver.integrator);
-  edited |= step_editors(draft.solver, running);
-  edited |= spring_editors(draft.springs);
+  const IntegratorKind integrator = draft.solver.integrator;
+  bool edited = edit_section(Section::solver, &draft.solver, integrator, running);
+  edited |= edit_section(Section::springs, &draft.springs, integrator, running);
   for (ClothSpec& cloth : draft.cloths) {
     if (!cloth.springs) continue;  // this cloth's own springs replace the shared ones
     ImGui::PushID(cloth.key.c_str());
-    ImGui::TextDisabled("%s.springs", cloth.key.c_str());
-    edited |= spring_editors(*cloth.springs);
+    ImGui::TextDisabled("%s",
+                        (cloth.key + "." + std::string(key_of<&ClothSpec::springs>())).c_str());
+    edited |= edit_section(Section::springs, &*cloth.springs, integrator, running);
     ImGui::PopID();
   }
-  edited |= log_slider("drag (N*s/m)", draft.forces.drag, 0.0, 1.0);
+  edited |= edit_section(Section::forces, &draft.forces, integrator, running);
   edited |= committed(ImGui::Checkbox("wind (W)", &draft.forces.wind.enabled));
   double speed = wind_speed(draft);
   const double lo = 0.0, hi = 30.0;
@@ -125,15 +64,18 @@ bool structure_editors(Scene& draft) {
   return edited;
 }
 
-// Shadows: the filter and the map's size (rendering.md section 6).
+// Shadows: the filter and the map's size (docs/rendering.md section 6).
 void shadow_editors(ViewSettings& view) {
   if (ImGui::BeginCombo("shadows", to_string(view.shadows))) {
     for (const auto& [filter, name] : kShadowFilterNames)
       if (ImGui::Selectable(name, filter == view.shadows)) view.shadows = filter;
     ImGui::EndCombo();
   }
+  // Powers of two over the table's panel range for render.shadow_map_size.
+  const Range ui = find_parameter(Section::render, key_of<&RenderSpec::shadow_map_size>())->ui;
+  const int lo = static_cast<int>(std::log2(ui.lo)), hi = static_cast<int>(std::log2(ui.hi));
   int size_log2 = static_cast<int>(std::lround(std::log2(view.shadow_map_size)));
-  if (ImGui::SliderInt("shadow map", &size_log2, 9, 12, "")) view.shadow_map_size = 1 << size_log2;
+  if (ImGui::SliderInt("shadow map", &size_log2, lo, hi, "")) view.shadow_map_size = 1 << size_log2;
   ImGui::SameLine();
   ImGui::TextDisabled("%d^2", view.shadow_map_size);
   float size = view.light_size;

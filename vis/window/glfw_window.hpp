@@ -1,7 +1,7 @@
 // The window: GLFW with an OpenGL 4.5 core context (vsync on), GL loaded through glad. In debug
 // builds the context is a debug context and GL reports its errors through
-// glDebugMessageCallback (style.md: no glGetError polling). Owns glfwInit/glfwTerminate, so one
-// GlfwWindow lives at a time.
+// glDebugMessageCallback (docs/style.md: no glGetError polling). Owns glfwInit/glfwTerminate, so
+// one GlfwWindow lives at a time.
 #pragma once
 
 #include <string>

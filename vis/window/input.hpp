@@ -1,4 +1,4 @@
-// Keys and mouse of the window (design.md, "Keys (window)"). One table binds each key to an
+// Keys and mouse of the window (docs/design.md, "Keys (window)"). One table binds each key to an
 // action and a help line, so the H overlay always lists exactly the keys that work.
 #pragma once
 

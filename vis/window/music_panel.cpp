@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "sim/audio/beat_tracker.hpp"
-#include "sim/audio/music_track.hpp"
+#include "music/beat_tracker.hpp"
+#include "music/music_track.hpp"
 
 namespace clothlab::vis {
 namespace {

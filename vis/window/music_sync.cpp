@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "sim/audio/music_track.hpp"
+#include "music/music_track.hpp"
 
 namespace clothlab::vis {
 

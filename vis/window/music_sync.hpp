@@ -1,5 +1,5 @@
 // Music in the window: plays a scene's [music] through OpenAL and lets the audio clock drive the
-// simulation (the rule is MusicClock's, sim/realtime/music_clock.hpp; this file only carries its
+// simulation (the rule is MusicClock's, music/music_clock.hpp; this file only carries its
 // plans out on the playback). Where no device opens, or CLOTHLAB_VIEW_NO_AUDIO=1 asks for
 // silence, it says so once per run and the simulation follows the frame's wall time, as in a
 // scene without music.
@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "sim/realtime/music_clock.hpp"
+#include "music/music_clock.hpp"
 #include "vis/window/audio_playback.hpp"
 #include "vis/window/sim_session.hpp"
 

@@ -5,10 +5,15 @@
 #include <set>
 #include <tuple>
 
+#include "sim/scene/parameter_keys.hpp"
+
 namespace clothlab::vis {
 namespace {
 
-constexpr int kMinResolution = 2, kMaxResolution = 512;
+// The +/- keys' range per axis: the table's panel range for cloth.resolution.
+Range resolution_range() {
+  return find_parameter(Section::cloth, key_of<&ClothSpec::resolution>())->ui;
+}
 
 // Index i on an axis of `from` vertices moved to the same relative place on `to` vertices.
 int remap_index(int i, int from, int to) {
@@ -34,12 +39,13 @@ void copy_dynamics(const Scene& from, Scene& to) {
 }
 
 bool scale_resolution(Scene& scene, double factor) {
+  const Range range = resolution_range();
+  const int lo = static_cast<int>(range.lo), hi = static_cast<int>(range.hi);
   bool changed = false;
   for (ClothSpec& cloth : scene.cloths) {
     for (int& n : cloth.resolution) {
       if (n <= 1) continue;
-      const int scaled =
-          std::clamp(static_cast<int>(std::lround(n * factor)), kMinResolution, kMaxResolution);
+      const int scaled = std::clamp(static_cast<int>(std::lround(n * factor)), lo, hi);
       changed |= scaled != n;
       n = scaled;
     }

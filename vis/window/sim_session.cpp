@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "sim/scene/scene_copies.hpp"
+#include "sim/cloth/scene_copies.hpp"
 #include "sim/scene/scene_error.hpp"
 #include "sim/scene/validate.hpp"
 #include "vis/window/scene_edit.hpp"
@@ -125,7 +125,7 @@ std::string SimSession::set_copies(int copies) {
   if (copies == copies_) return {};
   if (std::string why = copies_unsupported_reason(applied_); !why.empty()) return why;
   if (copies_ == 1) {
-    spacing_ = copy_spacing(*solver_);
+    spacing_ = copy_spacing(applied_);
   }
   const int before = copies_;
   copies_ = copies;

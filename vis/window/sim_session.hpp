@@ -52,7 +52,7 @@ class SimSession {
   // + / -: scales the draft's resolution by factor and resets.
   void scale_resolution(double factor);
   // [ and ]: the number of copies of the scene's cloths (and the colliders under them) side by
-  // side, 1..kMaxCopies, each simulated (sim/scene/scene_copies.hpp); the run restarts at t = 0.
+  // side, 1..kMaxCopies, each simulated (sim/cloth/scene_copies.hpp); the run restarts at t = 0.
   // Returns a one-line reason when the scene cannot be copied (nothing changes then).
   std::string set_copies(int copies);
   int copies() const { return copies_; }
@@ -78,7 +78,7 @@ class SimSession {
   bool paused = false;
 
   // Recording (the panel's Record): from now on every step the session takes is written as CSV
-  // trace rows of `spec` (design.md "CSV trace"), its `every` counted from the step recording
+  // trace rows of `spec` (docs/design.md "CSV trace"), its `every` counted from the step recording
   // began, into a temporary file beside `path` that stop_recording() renames to `path`: the
   // file is complete or absent. Reset, a resolution change and the session's end stop it.
   // Throws std::runtime_error when the file cannot be opened.

@@ -1,6 +1,6 @@
 #include "vis/window/view_app.hpp"
 
-#include "sim/scene/scene_parser.hpp"
+#include "load/scene_load.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -419,7 +419,7 @@ void ViewApp::drag_hook() {
 // its own view; a file that cannot be read or built leaves the running one and says why.
 void ViewApp::open_scene(const std::string& path) {
   try {
-    session_.load(parse_scene_file(path));
+    session_.load(read_scene_file(path));
   } catch (const SceneError& e) {
     panel_.message = e.what();
     std::printf("clothlab view: not opened: %s\n", e.what());

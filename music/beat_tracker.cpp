@@ -1,4 +1,4 @@
-#include "sim/audio/beat_tracker.hpp"
+#include "music/beat_tracker.hpp"
 
 #include <algorithm>
 #include <cmath>

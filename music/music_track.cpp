@@ -1,9 +1,9 @@
-#include "sim/audio/music_track.hpp"
+#include "music/music_track.hpp"
 
 #include <algorithm>
 #include <cstdio>
 
-#include "sim/audio/drum_track.hpp"
+#include "music/drum_track.hpp"
 
 namespace clothlab {
 

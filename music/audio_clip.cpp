@@ -1,4 +1,4 @@
-#include "sim/audio/audio_clip.hpp"
+#include "music/audio_clip.hpp"
 
 #include <sndfile.h>
 

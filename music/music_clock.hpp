@@ -1,4 +1,4 @@
-// The audio clock as the master of an interactive view with music (contact.md section 4): each
+// The audio clock as the master of an interactive view with music (docs/contact.md section 4): each
 // frame the simulation catches up to the playback position in fixed steps (FrameStepper), so the
 // dance lands on the beat you hear whatever the frame rate. This is the rule alone, free of any
 // audio library, so it is tested without a device; vis/window/music_sync.hpp applies its plans

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "sim/audio/audio_clip.hpp"
+#include "music/audio_clip.hpp"
 
 namespace clothlab {
 

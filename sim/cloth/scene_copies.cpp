@@ -1,4 +1,6 @@
-#include "sim/scene/scene_copies.hpp"
+#include "sim/cloth/scene_copies.hpp"
+
+#include "sim/cloth/build_cloth.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,17 +23,20 @@ std::string copies_unsupported_reason(const Scene& scene) {
   return {};
 }
 
-double copy_spacing(const Solver& original) {
-  std::vector<float> rest_xyz(3 * original.vertex_count());
-  original.copy_rest_positions(rest_xyz.data());
+double copy_spacing(const Scene& scene) {
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-  for (std::size_t v = 0; v + 2 < rest_xyz.size(); v += 3) {
-    for (int k = 0; k < 2; ++k) {  // x and z
-      lo[k] = std::min(lo[k], double(rest_xyz[v + 2 * k]));
-      hi[k] = std::max(hi[k], double(rest_xyz[v + 2 * k]));
+  bool any = false;
+  for (const ClothSpec& spec : scene.cloths) {
+    for (const Vec3d& p : build_cloth(spec).positions) {
+      for (int k = 0; k < 2; ++k) {  // x and z, rounded to float as the solver keeps them
+        const double x = static_cast<float>(p[std::size_t(2 * k)]);
+        lo[k] = std::min(lo[k], x);
+        hi[k] = std::max(hi[k], x);
+      }
+      any = true;
     }
   }
-  const double extent = rest_xyz.empty() ? 1.0 : std::max(hi[0] - lo[0], hi[1] - lo[1]);
+  const double extent = any ? std::max(hi[0] - lo[0], hi[1] - lo[1]) : 1.0;
   return extent + std::max(0.25, 0.25 * extent);
 }
 

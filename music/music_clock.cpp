@@ -1,4 +1,4 @@
-#include "sim/realtime/music_clock.hpp"
+#include "music/music_clock.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "sim/audio/drum_track.hpp"
+#include "music/drum_track.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// Beat tracking for music-driven animation (issue 9, contact.md section 4): band energies, an
+// Beat tracking for music-driven animation (issue 9, docs/contact.md section 4): band energies, an
 // onset envelope, a global tempo and beat times that follow tempo changes. Our own analysis on an
 // STFT (Eigen's FFT); no aubio.
 //
@@ -23,7 +23,7 @@
 #include <array>
 #include <vector>
 
-#include "sim/audio/audio_clip.hpp"
+#include "music/audio_clip.hpp"
 
 namespace clothlab {
 

@@ -8,7 +8,6 @@
 #include <string>
 
 #include "sim/scene/scene.hpp"
-#include "sim/solver.hpp"
 
 namespace clothlab {
 
@@ -20,10 +19,10 @@ std::string copies_unsupported_reason(const Scene& scene);
 // ceil(sqrt(copies)), col = k % cols, row = k / cols.
 Vec3d copy_offset(int k, int copies, double spacing);
 
-// The spacing the window and `render --copies` use: the original's horizontal extent (the larger
-// of x and z over the rest positions of `original`, a solver built from the scene alone) plus a
-// quarter of it, at least 0.25 m.
-double copy_spacing(const Solver& original);
+// The spacing the window and `render --copies` use: the scene's horizontal extent (the larger of
+// x and z over its cloths' rest positions, as the solver stores them in float) plus a quarter
+// of it, at least 0.25 m. The scene must be loaded (a mesh cloth's OBJ read).
+double copy_spacing(const Scene& scene);
 
 // `scene` with `copies` (>= 1) copies of its cloths and non-plane colliders; copies == 1 gives
 // `scene` itself. Cloth c of copy k becomes cloth k * cloths + c (traces and pins of the original

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "sim/audio/audio_clip.hpp"
-#include "sim/audio/beat_tracker.hpp"
+#include "music/audio_clip.hpp"
+#include "music/beat_tracker.hpp"
 
 namespace clothlab {
 
@@ -19,7 +19,7 @@ struct MusicTrack {
 
 // Reads and analyses a sound file (libsndfile: WAV, FLAC, OGG, MP3). Throws AudioError.
 MusicTrack load_music(const std::string& path);
-// The project's own drum track (sim/audio/drum_track.hpp) at `bpm` for `seconds`, analysed like a
+// The project's own drum track (music/drum_track.hpp) at `bpm` for `seconds`, analysed like a
 // file would be (the dance follows what the tracker hears, not the tempo it was made at).
 MusicTrack generated_music(double bpm, double seconds);
 

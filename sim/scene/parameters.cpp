@@ -1,0 +1,314 @@
+// The parameter table: every key a scene file may hold, once. Its order is the order the parser
+// reads a table's keys in (the shape before the pins, the top-level springs before the cloths)
+// and the order of `clothlab params`. The README's "Scene keys" table is generated from it
+// (tests/parameter_table_test.cpp compares them).
+#include "sim/scene/parameters.hpp"
+
+#include <vector>
+
+#include "sim/scene/parameter_binding.hpp"
+#include "sim/scene/special_values.hpp"
+
+// Records are designated initializers that leave the fields they do not name at their
+// defaults; GCC 12's -Wextra warns about every such field.
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+
+namespace clothlab {
+namespace {
+
+using namespace binding;
+using S = Section;
+using W = Widget;
+
+constexpr double kInf = Range::kInf;
+
+constexpr std::array<std::pair<Precision, const char*>, 2> kPrecisionNames{
+    {{Precision::f32, "float"}, {Precision::f64, "double"}}};
+constexpr std::array<std::pair<Backend, const char*>, 2> kBackendNames{
+    {{Backend::cpu, "cpu"}, {Backend::gpu, "gpu"}}};
+
+std::vector<Parameter> top_and_cloth() {
+  return {
+      table_row<&Scene::springs, S::springs>(
+          {.name = "springs", .description = "the springs of every cloth without its own"}),
+      special_row<&Scene::cloths>(
+          &special::read_cloths,
+          {.name = "cloth",
+           .form = "[cloth] or [[cloth]]",
+           .child = S::cloth,
+           .description = "one cloth, or several (a skirt and a cape); at least one"}),
+      table_row<&Scene::forces, S::forces>({.name = "forces", .description = "external forces"}),
+      table_row<&Scene::solver, S::solver>({.name = "solver", .description = "the time step"}),
+      special_row<&Scene::trace>(
+          &special::read_trace,
+          {.name = "trace",
+           .form = "[trace]",
+           .child = S::trace,
+           .description = "what `clothlab trace` and the window's recorder write"}),
+      table_row<&Scene::render, S::render>(
+          {.name = "render", .description = "how the scene is shown (vis/ only)"}),
+      tables_row<&Scene::colliders, S::collider, " of tables ([[colliders]])">(
+          {.name = "colliders", .description = "[[colliders]]: the solid shapes the cloth meets"}),
+      special_row<&Scene::music>(
+          &special::read_music,
+          {.name = "music",
+           .form = "[music]",
+           .child = S::music,
+           .description = "what the mannequin dances to: a sound file or the drum track"}),
+      special_row<&Scene::mannequin>(
+          &special::read_mannequin,
+          {.name = "mannequin",
+           .form = "[mannequin]",
+           .child = S::mannequin,
+           .description = "the dancing figure; its parts become colliders mannequin.<part>"}),
+
+      row<&ClothSpec::shape>({.name = "shape",
+                              .fallback = "\"grid\"",
+                              .choices = "grid, tube, mesh",
+                              .description = "grid, tube (a cylinder or frustum) or mesh (OBJ)"}),
+      row<&ClothSpec::size>({.name = "size",
+                             .range = kPositive,
+                             .unit = "m",
+                             .fallback = "[2, 2]",
+                             .description = "grid: metres along u and v",
+                             .whole_key = true}),
+      row<&ClothSpec::resolution>({.name = "resolution",
+                                   .range = between(1, kInf),
+                                   .fallback = "[32, 32]",
+                                   .ui = between(2, 512),
+                                   .description = "vertices along u and v (at most 16 M in all)",
+                                   .whole_key = true}),
+      row<&ClothSpec::origin>({.name = "origin",
+                               .unit = "m",
+                               .fallback = "[-1, 2.5, 0]",
+                               .description = "world position of vertex (0, 0)"}),
+      row<&ClothSpec::u_axis>({.name = "u_axis",
+                               .fallback = "[1, 0, 0]",
+                               .description = "direction of increasing i (normalised; non-zero)"}),
+      row<&ClothSpec::v_axis>(
+          {.name = "v_axis",
+           .fallback = "[0, -1, 0]",
+           .description = "direction of increasing j (normalised; orthogonal to u_axis)"}),
+      row<&ClothSpec::mass>({.name = "mass",
+                             .range = kPositive,
+                             .unit = "kg",
+                             .fallback = "1",
+                             .description = "total mass, spread over the vertices"}),
+      special_row<&ClothSpec::pins>(
+          &special::read_pins,
+          {.name = "pins",
+           .form = "[[i, j], ...]; mesh: OBJ vertex numbers",
+           .description = "vertices held fixed (inside the grid, once each, one left free)"}),
+      row<&ClothSpec::release_at>({.name = "release_at",
+                                   .range = kNonNegative,
+                                   .unit = "s",
+                                   .description = "the pins let go at this time (a drop)"}),
+      special_row<&ClothSpec::radius>(&special::read_radius,
+                                      {.name = "radius",
+                                       .count = 2,
+                                       .range = kPositive,
+                                       .unit = "m",
+                                       .fallback = "0.3",
+                                       .form = "r or [first ring, last ring]",
+                                       .description = "tube: ring radii (one number: a cylinder)"},
+                                      &special::radius_values),
+      row<&ClothSpec::length>({.name = "length",
+                               .range = kPositive,
+                               .unit = "m",
+                               .fallback = "0.6",
+                               .description = "tube: first ring to last"}),
+      special_row<&ClothSpec::pins_follow>(
+          &special::read_pins_follow,
+          {.name = "pins_follow",
+           .form = "collider index or mannequin part name",
+           .description = "the pins move with that collider (\"pelvis\", \"chest\", ...)"}),
+      special_row<&ClothSpec::springs>(
+          &special::read_cloth_springs,
+          {.name = "springs",
+           .form = "a [springs] table",
+           .child = S::springs,
+           .description = "this cloth's springs; keys not given come from [springs]"}),
+      row<&ClothSpec::file>(
+          {.name = "file", .description = "mesh: the OBJ cloth (relative to the scene file)"}),
+      row<&ClothSpec::scale>({.name = "scale",
+                              .range = kPositive,
+                              .fallback = "1",
+                              .description = "mesh: scales the OBJ's coordinates"}),
+      row<&ClothSpec::rotation>({.name = "rotation",
+                                 .unit = "deg",
+                                 .fallback = "[0, 0, 0]",
+                                 .description = "mesh: turned about x, then y, then z"}),
+  };
+}
+
+std::vector<Parameter> dynamics() {
+  return {
+      row<&SpringSpec::rule>({.name = "rule",
+                              .fallback = "\"seed\"",
+                              .choices = "seed",
+                              .description = "seed: every vertex pair closer than 2 sqrt(2) edge"}),
+      row<&SpringSpec::stiffness>(
+          {.name = "stiffness",
+           .range = kNonNegative,
+           .unit = "N/m",
+           .fallback = "800",
+           .widget = W::log_slider,
+           .ui = between(1.0, 1e5),
+           .description = "for a spring one edge long: k = stiffness * edge / L"}),
+      row<&SpringSpec::damping>({.name = "damping",
+                                 .range = kNonNegative,
+                                 .unit = "N s/m",
+                                 .fallback = "0",
+                                 .widget = W::log_slider,
+                                 .ui = between(0.0, 10.0),
+                                 .description = "along the spring: F = -c ((v_a - v_b) . n) n"}),
+      row<&ForceSpec::gravity>(
+          {.name = "gravity", .unit = "m/s^2", .fallback = "[0, -9.81, 0]", .description = "g"}),
+      row<&ForceSpec::drag>({.name = "drag",
+                             .range = kNonNegative,
+                             .unit = "N s/m",
+                             .fallback = "0",
+                             .widget = W::log_slider,
+                             .ui = between(0.0, 1.0),
+                             .description = "linear drag per vertex, F = -drag v"}),
+      table_row<&ForceSpec::wind, S::wind>(
+          {.name = "wind", .description = "gusty wind on the surface normal (README \"Wind\")"}),
+      row<&WindSpec::velocity>({.name = "velocity",
+                                .unit = "m/s",
+                                .description = "the mean wind W",
+                                .required = "wind needs velocity = [x, y, z] in m/s"}),
+      row<&WindSpec::gust>({.name = "gust",
+                            .range = kNonNegative,
+                            .fallback = "0",
+                            .description = "relative gust amplitude (0.5 = +-50 %)"}),
+      special_row<&WindSpec::seed>(
+          &special::read_seed, {.name = "seed",
+                                .fallback = "0",
+                                .form = "an integer >= 0",
+                                .description = "noise seed: the same seed gives the same gusts"}),
+      row<&WindSpec::gust_period>({.name = "gust_period",
+                                   .range = kPositive,
+                                   .unit = "s",
+                                   .fallback = "1",
+                                   .description = "time scale of the gust noise"}),
+      row<&WindSpec::coefficient>({.name = "coefficient",
+                                   .range = kNonNegative,
+                                   .unit = "kg/(m^2 s)",
+                                   .fallback = "1",
+                                   .description = "F = coefficient A ((w - v) . n) n"}),
+  };
+}
+
+Parameter integrator_row() {
+  Parameter p = special_row<&SolverSpec::integrator>(
+      &special::read_integrator, {.name = "integrator",
+                                  .fallback = "\"symplectic_euler\"",
+                                  .form = "a name",
+                                  .choices = special::integrator_names(),
+                                  .widget = W::combo,
+                                  .description = "the time integrator (README \"The solver\")"});
+  p.choice_index = &special::integrator_index;
+  p.choose = &special::choose_integrator;
+  return p;
+}
+
+std::vector<Parameter> solver() {
+  return {
+      integrator_row(),
+      special_row<&SolverSpec::dt>(
+          &special::read_dt,
+          {.name = "dt",
+           .range = {0.0, 1.0, true, false},
+           .unit = "s",
+           .fallback = "0.001",
+           .form = "seconds or \"auto\"",
+           .widget = W::step,
+           .description = "the step, or auto: from the scene's highest frequency"},
+          &special::dt_values),
+      row<&SolverSpec::substeps>({.name = "substeps",
+                                  .range = between(1, 100000),
+                                  .fallback = "1",
+                                  .widget = W::input,
+                                  .description = "integrator steps of dt / substeps per step"}),
+      row<&SolverSpec::iterations>(
+          {.name = "iterations",
+           .range = between(0, 100000),
+           .range_text = "between 0 (the method's default) and 100000",
+           .fallback = "0",
+           .only_for = "xpbd, local_global",
+           .widget = W::input,
+           .description =
+               "xpbd: sweeps per substep (1); local_global: per step (10); 0 = default"}),
+      row<&SolverSpec::cg_tolerance>(
+          {.name = "cg_tolerance",
+           .range = {0.0, 1.0, true, true},
+           .fallback = "1e-6",
+           .only_for = "implicit_euler",
+           .widget = W::log_slider,
+           .ui = between(1e-10, 1e-1),
+           .description = "PCG stops at relative residual |r| / |b| below this"}),
+      row<&SolverSpec::cg_max_iterations>({.name = "cg_max_iterations",
+                                           .range = between(1, 100000),
+                                           .fallback = "500",
+                                           .only_for = "implicit_euler",
+                                           .widget = W::input,
+                                           .description = "PCG iteration cap per step"}),
+      row<&SolverSpec::threads>({.name = "threads",
+                                 .range = between(0, 1024),
+                                 .range_text = "between 0 (all cores) and 1024",
+                                 .fallback = "0",
+                                 .description = "OpenMP threads, 0 = all cores"}),
+      choice_row<&SolverSpec::precision, kPrecisionNames, "precision">(
+          {.name = "precision",
+           .fallback = "\"float\"",
+           .description = "float or double (double for reference runs)"}),
+      row<&SolverSpec::self_collision>(
+          {.name = "self_collision",
+           .fallback = "false",
+           .description = "the cloth keeps its layers self_thickness apart"}),
+      row<&SolverSpec::self_thickness>({.name = "self_thickness",
+                                        .range = kPositive,
+                                        .unit = "m",
+                                        .fallback = "0.005",
+                                        .description = "how far apart two layers stay"}),
+      choice_row<&SolverSpec::backend, kBackendNames, "backend">(
+          {.name = "backend",
+           .fallback = "\"cpu\"",
+           .widget = W::combo,
+           .description = "gpu: the step as OpenGL compute shaders where it can run"}),
+
+      special_row<&TraceSpec::vertices>(
+          &special::read_trace_vertices,
+          {.name = "vertices",
+           .form = "[[i, j], ...] or [[c, i, j], ...] with [[cloth]]",
+           .description = "vertices to record (default: the middle of the last row)"}),
+      special_row<&TraceSpec::position>(&special::read_trace_fields,
+                                        {.name = "fields",
+                                         .fallback = "all",
+                                         .form = "names",
+                                         .choices = "position, velocity, force, energy",
+                                         .description = "what each row holds"}),
+      row<&TraceSpec::every>({.name = "every",
+                              .range = between(1, kInf),
+                              .fallback = "1",
+                              .description = "write every N steps"}),
+  };
+}
+
+}  // namespace
+
+std::vector<Parameter> render_parameters();   // parameters_render.cpp
+std::vector<Parameter> contact_parameters();  // parameters_contact.cpp
+
+std::span<const Parameter> parameters() {
+  static const std::vector<Parameter> table = [] {
+    std::vector<Parameter> all;
+    for (auto part :
+         {top_and_cloth(), dynamics(), solver(), render_parameters(), contact_parameters()})
+      all.insert(all.end(), part.begin(), part.end());
+    return all;
+  }();
+  return table;
+}
+
+}  // namespace clothlab
