@@ -94,9 +94,9 @@ AdvanceResult SolverT<T>::advance(double duration) {
 }
 
 // The step loop of both backends: the CPU-side parts (release, contacts, moving pins, grab,
-// checks) run on state_, which the hooks keep current where the integrator runs elsewhere (the
-// GPU backend: sync_state() reads it back, mirror_written() and state_corrected() send it up);
-// on the CPU the hooks cost a call each.
+// checks) run on state_, which the helpers keep current where the integrator runs on a step
+// backend (sync_state() reads it back, mirror_written() and state_corrected() send it up); on
+// the CPU they cost a test of a null pointer.
 template <class T>
 AdvanceResult SolverT<T>::step(long count) {
   AdvanceResult result;
@@ -163,13 +163,44 @@ AdvanceResult SolverT<T>::step(long count) {
 
 template <class T>
 SolveStats SolverT<T>::integrate(const System<T>& sys, double t, double h) {
+  if (backend_) return backend_->integrate(t, h);
   integrator_->step(sys, state_, t, static_cast<T>(h));
   return integrator_->last_stats();
 }
 
 template <class T>
+void SolverT<T>::sync_state() const {
+  if (backend_ && backend_->ahead()) backend_->pull(const_cast<State<T>&>(state_));
+}
+
+template <class T>
+void SolverT<T>::mirror_written() {
+  if (backend_) backend_->push(state_);
+}
+
+template <class T>
 void SolverT<T>::state_corrected() {
-  integrator_->state_corrected();
+  if (backend_)
+    backend_->push(state_);  // forgets Verlet's stored force, as the CPU's integrator does
+  else
+    integrator_->state_corrected();
+}
+
+template <class T>
+void SolverT<T>::pins_changed() {
+  if (backend_) backend_->pins_changed(model_);
+}
+
+// Without CPU work between the substeps the mirror is read once per step() call: in the window,
+// once per frame.
+template <class T>
+bool SolverT<T>::check_after(long k, long count) const {
+  return !backend_ || !backend_->ahead() || k + 1 == count;
+}
+
+template <class T>
+void SolverT<T>::set_step_backend(std::unique_ptr<StepBackend<T>> backend) {
+  backend_ = std::move(backend);
 }
 
 template <class T>
@@ -187,20 +218,33 @@ int SolverT<T>::vertex_index(const VertexRef& v) const {
   return c.offset + v.i + v.j * c.nu;
 }
 
+// The total force comes from the backend's own force pass where it has one; a single source
+// (springs, gravity, drag, wind) from the CPU's code on the mirror.
 template <class T>
 void SolverT<T>::update_force_field(ForceSource source) {
+  force_source_ = source;
+  if (backend_ && source == ForceSource::total && backend_->total_force(time(), force_field_))
+    return;
+  sync_state();
   compute_force_source(model_, time(), state_.pos, state_.vel, force_field_, workspace_, threads_,
                        source);
-  force_source_ = source;
 }
 
 template <class T>
 Energy SolverT<T>::energy() {
+  sync_state();
   return compute_energy(model_, state_, energy_partials_, threads_);
 }
 
 template <class T>
 void SolverT<T>::apply_impulse(const Vec3d& center, double radius, const Vec3d& impulse) {
+  sync_state();
+  add_impulse(center, radius, impulse);
+  mirror_written();
+}
+
+template <class T>
+void SolverT<T>::add_impulse(const Vec3d& center, double radius, const Vec3d& impulse) {
   auto distance2 = [&](std::size_t i) {
     const Vec3d p = get(state_.pos, static_cast<int>(i));
     return (p[0] - center[0]) * (p[0] - center[0]) + (p[1] - center[1]) * (p[1] - center[1]) +
@@ -249,6 +293,7 @@ template <class T>
 void SolverT<T>::load_state(const Solver& other) {
   if (other.vertex_count() != model_.n)
     throw std::invalid_argument("load_state: the solvers have different vertex counts");
+  sync_state();  // so that nothing pulls the backend's old state over what is written here
   for (std::size_t i = 0; i < model_.n; ++i) {
     const Vec3d p = other.position(static_cast<int>(i)), v = other.velocity(static_cast<int>(i));
     for (int a = 0; a < 3; ++a) {
@@ -262,10 +307,12 @@ void SolverT<T>::load_state(const Solver& other) {
   pending_ = 0.0;
   diverged_.reset();
   state_changed();
+  mirror_written();
 }
 
 template <class T>
 void SolverT<T>::copy_normals(float* xyz) {
+  if (backend_ && backend_->normals(xyz)) return;
   compute_surface(model_, state_.pos, workspace_, threads_);
   copy(workspace_.normal, xyz);
 }
@@ -277,6 +324,7 @@ void SolverT<T>::set_threads(int threads) {
 
 template <class T>
 void SolverT<T>::reset() {
+  sync_state();  // the backend's state is about to be replaced: never pull it over the reset
   restore_pins();
   grab_.reset();
   release_at_ = built_release_at_;
@@ -286,6 +334,7 @@ void SolverT<T>::reset() {
   diverged_.reset();
   totals_ = {};
   integrator_->invalidate();
+  mirror_written();
 }
 
 template <class T>

@@ -14,6 +14,8 @@
 
 namespace clothlab {
 
+class DeviceCloth;  // sim/step_backend.hpp
+
 // Iterative work summed since the solver was built or reset (PCG iterations for
 // implicit_euler, sweeps for xpbd and local_global).
 struct SolveTotals {
@@ -98,7 +100,15 @@ class Solver {
   virtual std::optional<int> grabbed() const = 0;
   // The collision response of the last substep (zero without colliders).
   virtual ContactStats last_contacts() const = 0;
+  // Where the state lives in device buffers (the GPU backend): the renderer draws from them.
+  // Null on the CPU.
+  virtual DeviceCloth* device_cloth() const = 0;
 };
+
+// "GPU" when `solver` steps on the GPU backend, else "CPU".
+inline const char* backend_name(const Solver& solver) {
+  return solver.device_cloth() ? "GPU" : "CPU";
+}
 
 std::unique_ptr<Solver> make_solver(const Scene& scene);
 

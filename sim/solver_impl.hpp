@@ -1,7 +1,7 @@
 // SolverT<T>: the Solver for one scalar type. Exposed (rather than hidden in solver.cpp) so tests
-// and benchmarks can reach the state arrays directly, and so the GPU backend
-// (vis/gpu/gpu_solver.hpp) can keep this solver's model, pins, contacts and checks while its own
-// step() runs the integrator on the GPU.
+// and benchmarks can reach the state arrays directly. Its integrator substeps run on the CPU, or
+// on a step backend (sim/step_backend.hpp; the GPU's is gpu/gpu_step.hpp) that keeps the state
+// itself while this solver's model, pins, contacts and checks work on a mirror of it.
 #pragma once
 
 #include <vector>
@@ -10,6 +10,7 @@
 #include "sim/contact/kinematic_pins.hpp"
 #include "sim/contact/self_collision.hpp"
 #include "sim/solver.hpp"
+#include "sim/step_backend.hpp"
 
 namespace clothlab {
 
@@ -31,8 +32,14 @@ class SolverT : public Solver {
   std::size_t spring_count() const override { return model_.spring_count; }
   int vertex_index(const VertexRef& v) const override;
   VertexRef vertex_ref(int index) const override { return vertex_ref_of(model_.cloths, index); }
-  Vec3d position(int vertex) const override { return get(state_.pos, vertex); }
-  Vec3d velocity(int vertex) const override { return get(state_.vel, vertex); }
+  Vec3d position(int vertex) const override {
+    sync_state();
+    return get(state_.pos, vertex);
+  }
+  Vec3d velocity(int vertex) const override {
+    sync_state();
+    return get(state_.vel, vertex);
+  }
   bool pinned(int vertex) const override {
     return model_.inv_mass[static_cast<std::size_t>(vertex)] == T(0);
   }
@@ -41,7 +48,10 @@ class SolverT : public Solver {
   ForceSource force_field_source() const override { return force_source_; }
   Energy energy() override;
   void apply_impulse(const Vec3d& center, double radius, const Vec3d& impulse) override;
-  void copy_positions(float* xyz) const override { copy(state_.pos, xyz); }
+  void copy_positions(float* xyz) const override {
+    sync_state();
+    copy(state_.pos, xyz);
+  }
   void copy_rest_positions(float* xyz) const override { copy(model_.rest_positions, xyz); }
   void copy_normals(float* xyz) override;
   const std::vector<std::array<int, 3>>& triangles() const override { return model_.triangles; }
@@ -49,7 +59,10 @@ class SolverT : public Solver {
     return clothlab::spring_pairs(model_);
   }
   const std::vector<ClothRange>& cloths() const override { return model_.cloths; }
-  void copy_velocities(float* xyz) const override { copy(state_.vel, xyz); }
+  void copy_velocities(float* xyz) const override {
+    sync_state();
+    copy(state_.vel, xyz);
+  }
   void load_state(const Solver& other) override;
   void set_threads(int threads) override;
   int threads() const override { return threads_; }
@@ -64,6 +77,13 @@ class SolverT : public Solver {
   ContactStats last_contacts() const override {
     return contacts_ ? contacts_->last() : ContactStats{};
   }
+  DeviceCloth* device_cloth() const override {
+    return backend_ ? backend_->device_cloth() : nullptr;
+  }
+
+  // Moves the integrator to `backend`, which takes over the current state (the solver's own
+  // integrator is kept for nothing but its statistics' type).
+  void set_step_backend(std::unique_ptr<StepBackend<T>> backend);
 
   // The self-collision response (solver.self_collision), or null when it is off.
   const SelfCollision<T>* self_collision() const { return self_.get(); }
@@ -74,21 +94,22 @@ class SolverT : public Solver {
   void state_changed();
 
  protected:
-  // Where the integrator runs and how the rest of the step reaches its state. The CPU integrates
-  // state_ in place and these are trivial; the GPU backend integrates its own copy and keeps
-  // state_ as a mirror of it.
+  // Where the integrator runs: in place on state_, or on the step backend with state_ as its
+  // mirror; on the CPU these cost a test of a null pointer.
   // One integrator substep of h seconds from time t; returns its statistics.
-  virtual SolveStats integrate(const System<T>& sys, double t, double h);
-  // Brings state_ up to date before CPU code reads it.
-  virtual void sync_state() const {}
+  SolveStats integrate(const System<T>& sys, double t, double h);
+  // Brings state_ up to date before CPU code reads it. Logically const: the mirror is a cache of
+  // the state the backend holds.
+  void sync_state() const;
   // CPU code wrote state_ (moving pins) where the integrator's cached force stays valid.
-  virtual void mirror_written() {}
+  void mirror_written();
   // CPU code corrected state_ after a substep (the grab, a collision response).
-  virtual void state_corrected();
+  void state_corrected();
   // The pinned set changed (a release, a reset).
-  virtual void pins_changed() {}
-  // Whether the divergence check runs after step k (0-based) of a step(count) call.
-  virtual bool check_after(long /*k*/, long /*count*/) const { return true; }
+  void pins_changed();
+  // Whether the divergence check runs after step k (0-based) of a step(count) call: after every
+  // step where the mirror is current anyway, else once at the end of the call.
+  bool check_after(long k, long count) const;
 
   static void copy(const Vec3Array<T>& a, float* xyz) {
     for (std::size_t i = 0; i < a.size(); ++i) {
@@ -98,6 +119,8 @@ class SolverT : public Solver {
     }
   }
   void record(const SolveStats& s);
+  // apply_impulse on state_.
+  void add_impulse(const Vec3d& center, double radius, const Vec3d& impulse);
   // Lets go of the pins of the cloths whose release time has come (all of them with `all`).
   void release_due(bool all);
   void restore_pins();
@@ -116,6 +139,7 @@ class SolverT : public Solver {
   double pending_ = 0.0;  // s of requested time not yet stepped (less than one dt)
   int threads_ = 1;
   std::unique_ptr<Integrator<T>> integrator_;
+  std::unique_ptr<StepBackend<T>> backend_;        // null: the integrator runs here, on state_
   std::unique_ptr<ContactResponse<T>> contacts_;   // only with colliders
   std::unique_ptr<SelfCollision<T>> self_;         // only with solver.self_collision
   std::unique_ptr<KinematicPins<T>> moving_pins_;  // only with cloth.pins_follow

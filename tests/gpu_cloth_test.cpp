@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "gl_context_fixture.hpp"
+#include "gpu/gpu_cloth.hpp"
 #include "sim/solver_impl.hpp"
 #include "test_scenes.hpp"
-#include "vis/gpu/gpu_cloth.hpp"
 
 namespace clothlab {
 namespace {
@@ -173,7 +173,7 @@ double max_distance(const std::vector<float>& a, const std::vector<float>& b) {
 struct Readback {
   std::vector<float> x, v;
 };
-Readback read(const vis::GpuCloth& gpu) {
+Readback read(const gpu::GpuCloth& gpu) {
   Readback r{std::vector<float>(3 * gpu.vertex_count()),
              std::vector<float>(3 * gpu.vertex_count())};
   gpu.read_positions(r.x.data());
@@ -191,7 +191,7 @@ class GpuClothTest : public testing::GlContextTest {
     ASSERT_EQ(cpu.substeps(), 1);
     const auto h = static_cast<float>(cpu.dt());
     ReferenceCloth reference(cpu.model(), cpu.state());
-    vis::GpuCloth gpu(cpu.model(), cpu.state().pos, cpu.state().vel);
+    gpu::GpuCloth gpu(cpu.model(), cpu.state().pos, cpu.state().vel);
     constexpr int kSteps = 200;
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
@@ -250,7 +250,7 @@ TEST_F(GpuClothTest, VerletFollowsTheCpuSolverFor200Steps) {
 TEST_F(GpuClothTest, NormalsMatchTheCpuSurface) {
   const IntegratorKind kind = IntegratorKind::symplectic_euler;
   SolverT<float> cpu(sheet_scene(kind), SpringKernel::neighbour_list);
-  vis::GpuCloth gpu(cpu.model(), cpu.state().pos, cpu.state().vel);
+  gpu::GpuCloth gpu(cpu.model(), cpu.state().pos, cpu.state().vel);
   ASSERT_TRUE(cpu.step(50).ok());
   gpu.step(50, static_cast<float>(cpu.dt()), kind);
   const std::size_t n = cpu.vertex_count();
@@ -289,7 +289,7 @@ TEST_F(GpuClothTest, DifferencesAfter2000StepsArePrinted) {
   for (IntegratorKind kind : {IntegratorKind::symplectic_euler, IntegratorKind::verlet}) {
     SolverT<float> cpu(sheet_scene(kind), SpringKernel::neighbour_list);
     ReferenceCloth reference(cpu.model(), cpu.state());
-    vis::GpuCloth gpu(cpu.model(), cpu.state().pos, cpu.state().vel);
+    gpu::GpuCloth gpu(cpu.model(), cpu.state().pos, cpu.state().vel);
     const auto h = static_cast<float>(cpu.dt());
     constexpr int kSteps = 2000;
     ASSERT_TRUE(cpu.step(kSteps).ok());
@@ -310,9 +310,9 @@ TEST_F(GpuClothTest, DifferencesAfter2000StepsArePrinted) {
 
 TEST_F(GpuClothTest, RefusesTheRowSweepModelAndOtherIntegrators) {
   SolverT<float> row(sheet_scene(IntegratorKind::symplectic_euler), SpringKernel::row_sweep);
-  EXPECT_THROW(vis::GpuCloth(row.model(), row.state().pos, row.state().vel), std::invalid_argument);
+  EXPECT_THROW(gpu::GpuCloth(row.model(), row.state().pos, row.state().vel), std::invalid_argument);
   SolverT<float> cpu(sheet_scene(IntegratorKind::symplectic_euler), SpringKernel::neighbour_list);
-  vis::GpuCloth gpu(cpu.model(), cpu.state().pos, cpu.state().vel);
+  gpu::GpuCloth gpu(cpu.model(), cpu.state().pos, cpu.state().vel);
   EXPECT_THROW(gpu.step(1, 1e-3f, IntegratorKind::rk4), std::invalid_argument);
 }
 

@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "gl_context_fixture.hpp"
+#include "gpu/backend_solver.hpp"
 #include "sim/cloth/scene_copies.hpp"
 #include "sim/solver_impl.hpp"
 #include "test_scenes.hpp"
-#include "vis/gpu/gpu_solver.hpp"
 #include "vis/render/headless_renderer.hpp"
 #include "vis/render/view_settings.hpp"
 #include "vis/window/sim_session.hpp"
@@ -77,7 +77,8 @@ class GpuSolverTest : public testing::GlContextTest {
   static void wind_follows_the_cpu(IntegratorKind kind) {
     const Scene scene = windy(kind);
     SolverT<float> cpu(scene, SpringKernel::neighbour_list);
-    vis::GpuSolver gpu(scene);
+    const auto gpu_owner = gpu::make_gpu_solver(scene);
+    Solver& gpu = *gpu_owner;
     ASSERT_EQ(gpu.dt(), cpu.dt());
     ASSERT_TRUE(cpu.step(200).ok());
     ASSERT_TRUE(gpu.step(200).ok());
@@ -106,7 +107,8 @@ TEST_F(GpuSolverTest, GustyWindFollowsTheCpuWithVerlet) {
 // noise hash is the CPU's to the bit pattern (a wrong lattice value changes a force by tens of %).
 TEST_F(GpuSolverTest, ForceFieldEqualsTheCpusAtTheSameState) {
   const Scene scene = windy(IntegratorKind::symplectic_euler);
-  vis::GpuSolver gpu(scene);
+  const auto gpu_owner = gpu::make_gpu_solver(scene);
+  Solver& gpu = *gpu_owner;
   ASSERT_TRUE(gpu.step(150).ok());
   SolverT<float> cpu(scene, SpringKernel::neighbour_list);
   cpu.load_state(gpu);
@@ -135,7 +137,8 @@ TEST_F(GpuSolverTest, ReleasePushAndGrabActAsOnTheCpu) {
   Scene scene = windy(IntegratorKind::symplectic_euler);
   scene.cloths[0].release_at = 0.05;
   SolverT<float> cpu(scene, SpringKernel::neighbour_list);
-  vis::GpuSolver gpu(scene);
+  const auto gpu_owner = gpu::make_gpu_solver(scene);
+  Solver& gpu = *gpu_owner;
   const auto steps_to = [&](double t) { return std::lround(t / cpu.dt()); };
   for (Solver* s : {static_cast<Solver*>(&cpu), static_cast<Solver*>(&gpu)}) {
     ASSERT_TRUE(s->step(steps_to(0.08)).ok());
@@ -178,7 +181,8 @@ TEST_F(GpuSolverTest, DropOntoASphereFollowsTheCpu) {
   ball.key = "colliders[0]";
   scene.colliders.push_back(ball);
   SolverT<float> cpu(scene, SpringKernel::neighbour_list);
-  vis::GpuSolver gpu(scene);
+  const auto gpu_owner = gpu::make_gpu_solver(scene);
+  Solver& gpu = *gpu_owner;
   long landed = -1;  // the step of the first contact
   long steps = 0;
   const long end = std::lround(0.6 / cpu.dt());
@@ -218,33 +222,33 @@ TEST_F(GpuSolverTest, DropOntoASphereFollowsTheCpu) {
 TEST_F(GpuSolverTest, ScenesTheGpuCannotRunStayOnTheCpuWithAReason) {
   std::string note;
   Scene scene = hanging(IntegratorKind::symplectic_euler);
-  EXPECT_EQ(dynamic_cast<vis::GpuSolver*>(vis::make_backend_solver(scene, note).get()), nullptr);
+  EXPECT_EQ(gpu::make_backend_solver(scene, note)->device_cloth(), nullptr);
   EXPECT_EQ(note, "");
   scene.solver.backend = Backend::gpu;
-  EXPECT_NE(dynamic_cast<vis::GpuSolver*>(vis::make_backend_solver(scene, note).get()), nullptr);
+  EXPECT_NE(gpu::make_backend_solver(scene, note)->device_cloth(), nullptr);
   EXPECT_EQ(note, "");
   scene.solver.integrator = IntegratorKind::rk4;
-  EXPECT_EQ(dynamic_cast<vis::GpuSolver*>(vis::make_backend_solver(scene, note).get()), nullptr);
+  EXPECT_EQ(gpu::make_backend_solver(scene, note)->device_cloth(), nullptr);
   EXPECT_EQ(note,
             "solver.backend = \"gpu\": the GPU step runs symplectic_euler and verlet, not rk4; the "
             "cloth steps on the CPU");
   scene.solver.integrator = IntegratorKind::verlet;
   scene.solver.precision = Precision::f64;
-  EXPECT_EQ(dynamic_cast<vis::GpuSolver*>(vis::make_backend_solver(scene, note).get()), nullptr);
+  EXPECT_EQ(gpu::make_backend_solver(scene, note)->device_cloth(), nullptr);
   EXPECT_NE(note.find("float, not double"), std::string::npos);
 }
 
 // The panel's CPU / GPU switch (SimSession::apply_dynamics with the window's factory) carries the
 // running motion over, both ways; a choice the GPU cannot run stays on the CPU with the reason.
 TEST_F(GpuSolverTest, PanelSwitchCarriesTheMotionOver) {
-  vis::SimSession session(windy(IntegratorKind::symplectic_euler), vis::make_backend_solver);
+  vis::SimSession session(windy(IntegratorKind::symplectic_euler), gpu::make_backend_solver);
   const FrameStepper stepper;
   for (int f = 0; f < 5; ++f) session.advance(stepper, 1.0 / 60.0);
   const double t = session.solver().time();
   const Vec3d p = session.solver().position(kRes * kRes - 1);
   session.draft().solver.backend = Backend::gpu;
   session.apply_dynamics();
-  ASSERT_NE(dynamic_cast<const vis::GpuSolver*>(&session.solver()), nullptr);
+  ASSERT_NE(session.solver().device_cloth(), nullptr);
   EXPECT_EQ(session.backend_note(), "");
   EXPECT_EQ(session.solver().time(), t);
   EXPECT_EQ(session.solver().position(kRes * kRes - 1), p);
@@ -253,12 +257,12 @@ TEST_F(GpuSolverTest, PanelSwitchCarriesTheMotionOver) {
   const Vec3d q = session.solver().position(kRes * kRes - 1);
   session.draft().solver.backend = Backend::cpu;
   session.apply_dynamics();
-  EXPECT_EQ(dynamic_cast<const vis::GpuSolver*>(&session.solver()), nullptr);
+  EXPECT_EQ(session.solver().device_cloth(), nullptr);
   EXPECT_EQ(session.solver().position(kRes * kRes - 1), q);
   session.draft().solver.backend = Backend::gpu;
   session.draft().solver.integrator = IntegratorKind::rk4;
   session.apply_dynamics();
-  EXPECT_EQ(dynamic_cast<const vis::GpuSolver*>(&session.solver()), nullptr);
+  EXPECT_EQ(session.solver().device_cloth(), nullptr);
   EXPECT_NE(session.backend_note().find("not rk4"), std::string::npos);
 }
 
@@ -267,7 +271,8 @@ TEST_F(GpuSolverTest, DivergenceIsCaught) {
   Scene scene = hanging(IntegratorKind::symplectic_euler);
   scene.solver.dt_auto = false;
   scene.solver.dt = 0.02;
-  vis::GpuSolver gpu(scene);
+  const auto gpu_owner = gpu::make_gpu_solver(scene);
+  Solver& gpu = *gpu_owner;
   AdvanceResult r;
   for (int k = 0; k < 50 && r.ok(); ++k) r = gpu.step(20);
   ASSERT_FALSE(r.ok());
@@ -288,7 +293,8 @@ TEST_F(GpuSolverTest, CopiesMoveAsTheOriginal) {
   scene.colliders.push_back(ball);
   constexpr int kCopies = 4;
   constexpr double kSpacing = 2.0;  // a power of two: the offsets add no rounding of their own
-  vis::GpuSolver gpu(with_copies(scene, kCopies, kSpacing));
+  const auto gpu_owner = gpu::make_gpu_solver(with_copies(scene, kCopies, kSpacing));
+  Solver& gpu = *gpu_owner;
   ASSERT_EQ(gpu.vertex_count(), std::size_t(kCopies * kRes * kRes));
   ASSERT_TRUE(gpu.step(300).ok());
   const int n = kRes * kRes;
@@ -318,7 +324,8 @@ namespace {
 TEST(GpuSolverRender, DrawsAndProbesTheGpuStateAsTheCpus) {
   vis::HeadlessRenderer renderer(320, 240);  // its context is current from here on
   const Scene scene = windy(IntegratorKind::symplectic_euler);
-  vis::GpuSolver gpu(scene);
+  const auto gpu_owner = gpu::make_gpu_solver(scene);
+  Solver& gpu = *gpu_owner;
   SolverT<float> cpu(scene, SpringKernel::neighbour_list);
   renderer.set_cloth(gpu);
   vis::ViewSettings view = vis::scene_view(scene, gpu);

@@ -10,12 +10,12 @@
 #include "apps/clothlab/commands.hpp"
 #include "apps/clothlab/progress_bar.hpp"
 #include "apps/clothlab/video_pipe.hpp"
+#include "gpu/backend_solver.hpp"
 #include "music/music_track.hpp"
 #include "sim/cloth/scene_copies.hpp"
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
 #include "vis/gl/gl_error.hpp"
-#include "vis/gpu/gpu_solver.hpp"
 #include "vis/render/headless_renderer.hpp"
 #include "vis/render/scalar_field.hpp"
 #include "vis/textures/image.hpp"
@@ -133,7 +133,7 @@ int run_render(const RenderArgs& args) {
       scene = with_copies(scene, args.copies, copy_spacing(scene));
     }
     std::string backend_note;
-    const auto solver = vis::make_backend_solver(scene, backend_note);
+    const auto solver = gpu::make_backend_solver(scene, backend_note);
     if (!backend_note.empty()) std::printf("clothlab render: %s\n", backend_note.c_str());
     renderer.set_cloth(*solver);
     renderer.set_scene(scene.render, *solver, scene.colliders);
@@ -189,7 +189,7 @@ int run_render(const RenderArgs& args) {
         "%g s on the %s), %.2f ms/frame rendering, %.2f ms/frame writing; %s%s%s%s%s\n",
         args.frames, args.width, args.height, static_cast<int>(view.mode),
         renderer.gl_renderer().c_str(), 1e3 * simulate / frames,
-        frames > 1 ? double(steps) / (frames - 1) : 0.0, solver->dt(), vis::backend_name(*solver),
+        frames > 1 ? double(steps) / (frames - 1) : 0.0, solver->dt(), backend_name(*solver),
         1e3 * draw / frames, 1e3 * output / frames, args.out.c_str(), video ? " and " : "",
         args.video.c_str(), music ? " with music: " : "", music ? music->source.c_str() : "");
     print_views(renderer.diagnostics(), view);

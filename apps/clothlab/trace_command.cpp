@@ -5,12 +5,12 @@
 #include <string>
 
 #include "apps/clothlab/commands.hpp"
+#include "gpu/backend_solver.hpp"
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
 #include "sim/trace/trace_run.hpp"
 #include "vis/gl/gl_error.hpp"
 #include "vis/gl/headless_context.hpp"
-#include "vis/gpu/gpu_solver.hpp"
 
 namespace clothlab::app {
 
@@ -34,12 +34,12 @@ int run_trace_command(const TraceArgs& args) {
     try {
       context.emplace();
     } catch (const vis::GlUnavailable& e) {
-      no_context = vis::cpu_fallback_note(e.what());
+      no_context = gpu::cpu_fallback_note(e.what());
       scene.solver.backend = Backend::cpu;
     }
   }
   std::string backend_note;
-  const auto solver = vis::make_backend_solver(scene, backend_note);
+  const auto solver = gpu::make_backend_solver(scene, backend_note);
   if (backend_note.empty()) backend_note = no_context;
   if (!backend_note.empty()) std::printf("clothlab trace: %s\n", backend_note.c_str());
   const TraceSpec spec = scene.trace ? *scene.trace : default_trace(scene);
@@ -68,7 +68,7 @@ int run_trace_command(const TraceArgs& args) {
       "(%ld steps)\n",
       r.simulated_time, r.steps, solver->dt(), scene.solver.dt_auto ? " (auto)" : "", substeps,
       ms_per_step, to_string(scene.solver.integrator), doubles ? "double" : "float",
-      vis::backend_name(*solver), solver->threads(), solver->vertex_count(), r.final_energy.total(),
+      backend_name(*solver), solver->threads(), solver->vertex_count(), r.final_energy.total(),
       r.final_energy.kinetic, r.final_energy.elastic, r.final_energy.gravity, args.out.c_str(),
       r.rows);
   // The iterative methods' work: PCG iterations (implicit_euler) or sweeps per substep.

@@ -16,10 +16,10 @@
 #include "bench/bench_scenes.hpp"
 #include "bench/suites/step_timing.hpp"
 #include "bench/suites/suites.hpp"
+#include "gpu/backend_solver.hpp"
 #include "sim/cloth/scene_copies.hpp"
 #include "sim/solver_impl.hpp"
 #include "vis/gl/headless_context.hpp"
-#include "vis/gpu/gpu_solver.hpp"
 
 namespace clothlab::bench {
 namespace {
@@ -55,7 +55,8 @@ std::vector<Table> backends_suite(const SuiteOptions& o) {
     }
     Scene scene = sheets(res, copies, 1);
     scene.solver.backend = Backend::gpu;
-    vis::GpuSolver gpu(scene);
+    const auto gpu_solver = gpu::make_gpu_solver(scene);
+    Solver& gpu = *gpu_solver;
     const double s = median_seconds_per_step(
         [&](long steps) {
           if (!gpu.step(steps).ok()) throw std::runtime_error("the GPU backend diverged");

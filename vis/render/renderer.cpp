@@ -7,9 +7,9 @@
 #include <stdexcept>
 
 #include "sim/solver.hpp"
+#include "sim/step_backend.hpp"
 #include "vis/colormap/colormap_texture.hpp"
 #include "vis/gl/program.hpp"
-#include "vis/gpu/gpu_solver.hpp"
 #include "vis/passes/diffusion_pass.hpp"
 #include "vis/passes/shadow_pass.hpp"
 #include "vis/passes/sky_pass.hpp"
@@ -295,8 +295,8 @@ void Renderer::set_cloth(Solver& solver) {
 }
 
 void Renderer::update_cloth(Solver& solver) {
-  GpuSolver* gpu = dynamic_cast<GpuSolver*>(&solver);
-  gpu_source_ = gpu ? &gpu->gpu() : nullptr;
+  DeviceCloth* gpu = solver.device_cloth();  // the GPU backend's buffers, or null
+  gpu_source_ = gpu;
   solver.copy_positions(staging_.data());
   // The cloth's current bounds: the light's frustum follows the cloth, so the shadow map spends
   // its texels on it wherever it has moved.
@@ -313,8 +313,8 @@ void Renderer::update_cloth(Solver& solver) {
   tangents_stale_ = true;
   if (colliders_) colliders_->update(solver.time());  // where the moving ones are now
   if (gpu) {
-    gpu->gpu().compute_normals();
-    pack_from_gpu(gpu->gpu());
+    gpu->update_normals();
+    pack_from_gpu(*gpu);
     return;
   }
   const std::size_t rn = render_vertex_count();
@@ -332,7 +332,7 @@ void Renderer::update_cloth(Solver& solver) {
                        static_cast<GLsizeiptr>(staging_.size() * sizeof(float)), staging_.data());
 }
 
-void Renderer::pack_from_gpu(const GpuCloth& gpu) {
+void Renderer::pack_from_gpu(const DeviceCloth& gpu) {
   const std::size_t rn = render_vertex_count();
   if (!pack_program_) pack_program_ = build_program({"cloth_pack.comp"});
   if (!seam_source_) {  // after each set_cloth

@@ -16,13 +16,12 @@
 #include "vis/render/view_settings.hpp"
 
 namespace clothlab {
+class DeviceCloth;
 class Solver;
 struct Image;
 }  // namespace clothlab
 
 namespace clothlab::vis {
-
-class GpuCloth;
 
 class ColliderScenery;
 class DiffusionPass;
@@ -92,7 +91,7 @@ class Renderer {
   void draw_shadow_map(const ViewSettings& view, bool translucent);
   void draw_sky(const ViewSettings& view, const glm::mat4& view_proj, glm::vec3 centre);
   void update_tangents();
-  void pack_from_gpu(const GpuCloth& gpu);  // update_cloth's vertex buffer with the GPU backend
+  void pack_from_gpu(const DeviceCloth& gpu);  // update_cloth's vertex buffer with the GPU backend
   void set_thread_fraction(double fraction);
   void set_weave_bump(double strength);
   void upload_normal_map(const Image& map);
@@ -134,7 +133,7 @@ class Renderer {
   std::size_t vertices_ = 0;           // the solver's
   // The GPU backend's cloth the last update_cloth() packed from (normals for the tangents are
   // read back from it only when a mode needs them), else null.
-  const GpuCloth* gpu_source_ = nullptr;
+  const DeviceCloth* gpu_source_ = nullptr;  // the solver's device_cloth() at update_cloth
   Program pack_program_;          // cloth_pack.comp, built on the first GPU-backend frame
   Buffer seam_source_;            // seam_copies_ for cloth_pack.comp
   std::vector<int> seam_copies_;  // render vertex vertices_ + k copies solver vertex [k]

@@ -11,10 +11,10 @@
 #include <sstream>
 #include <utility>
 
+#include "gpu/backend_solver.hpp"
 #include "sim/solver.hpp"
 #include "sim/trace/trace_run.hpp"
 #include "vis/gl/gl.hpp"
-#include "vis/gpu/gpu_solver.hpp"
 #include "vis/render/diagnostics.hpp"
 #include "vis/render/field_pass.hpp"
 #include "vis/render/renderer.hpp"
@@ -90,7 +90,7 @@ ViewHooks ViewHooks::from_environment() {
 ViewApp::ViewApp(Scene scene, ViewHooks hooks)
     : scene_name_(std::filesystem::path(scene.file).filename().string()),
       window_("ClothLab — " + scene_name_, kInitialWidth, kInitialHeight),
-      session_(std::move(scene), make_backend_solver),
+      session_(std::move(scene), gpu::make_backend_solver),
       hooks_(std::move(hooks)),
       music_(hooks_.no_audio),
       renderer_(std::make_unique<Renderer>()),

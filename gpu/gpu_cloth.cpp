@@ -1,4 +1,4 @@
-#include "vis/gpu/gpu_cloth.hpp"
+#include "gpu/gpu_cloth.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -10,7 +10,10 @@
 #include "vis/gl/gl_error.hpp"
 #include "vis/gl/program.hpp"
 
-namespace clothlab::vis {
+namespace clothlab::gpu {
+
+using namespace clothlab::vis;
+
 namespace {
 
 constexpr unsigned kLocalSize = 64;  // local_size_x of every cloth compute shader
@@ -302,4 +305,4 @@ void GpuCloth::finish() const {
   glFinish();
 }
 
-}  // namespace clothlab::vis
+}  // namespace clothlab::gpu

@@ -18,11 +18,16 @@
 
 #include "sim/model/model.hpp"
 #include "sim/scene/scene.hpp"
+#include "sim/step_backend.hpp"
 #include "vis/gl/objects.hpp"
 
-namespace clothlab::vis {
+namespace clothlab::gpu {
 
-class GpuCloth {
+using vis::Buffer;
+using vis::Program;
+using vis::Texture;
+
+class GpuCloth final : public DeviceCloth {
  public:
   // Uploads the model (kernel neighbour_list, else std::invalid_argument) and the state (n
   // positions and velocities, m and m/s). Throws GlUnavailable without compute shaders (GL 4.3)
@@ -47,8 +52,8 @@ class GpuCloth {
 
   // The buffers the renderer draws from: positions of the current state and the normals of the
   // last compute_normals(), both vec4 per vertex (normal.w is the vertex area).
-  GLuint position_buffer() const { return x_[current_].buffer.get(); }
-  GLuint normal_buffer() const { return normals_.get(); }
+  GLuint position_buffer() const override { return x_[current_].buffer.get(); }
+  GLuint normal_buffer() const override { return normals_.get(); }
 
   // Replaces the state (n positions and velocities).
   void set_state(const Vec3Array<float>& positions, const Vec3Array<float>& velocities);
@@ -60,7 +65,8 @@ class GpuCloth {
   // Unit area-weighted normals of the current positions (the CPU's compute_surface_from_triangles)
   // into the normal buffer; read_normals copies them out, 3 floats per vertex.
   void compute_normals();
-  void read_normals(float* xyz) const;
+  void read_normals(float* xyz) const override;
+  void update_normals() override { compute_normals(); }
 
   std::size_t vertex_count() const { return n_; }
   // Waits until every queued pass has finished (for timing).
@@ -105,4 +111,4 @@ class GpuCloth {
   mutable std::vector<float> staging_;  // 4 n floats for uploads and read-backs
 };
 
-}  // namespace clothlab::vis
+}  // namespace clothlab::gpu

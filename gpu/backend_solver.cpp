@@ -1,0 +1,47 @@
+#include "gpu/backend_solver.hpp"
+
+#include <stdexcept>
+
+#include "gpu/gpu_step.hpp"
+#include "sim/solver_impl.hpp"
+#include "vis/gl/gl_error.hpp"
+
+namespace clothlab::gpu {
+
+std::string gpu_unsupported_reason(const Scene& scene) {
+  const IntegratorKind k = scene.solver.integrator;
+  if (k != IntegratorKind::symplectic_euler && k != IntegratorKind::verlet)
+    return std::string("the GPU step runs symplectic_euler and verlet, not ") + to_string(k);
+  if (scene.solver.precision == Precision::f64) return "the GPU step computes in float, not double";
+  return {};
+}
+
+std::unique_ptr<Solver> make_gpu_solver(const Scene& scene) {
+  if (const std::string why = gpu_unsupported_reason(scene); !why.empty())
+    throw std::invalid_argument(why);
+  auto solver = std::make_unique<SolverT<float>>(scene, SpringKernel::neighbour_list);
+  solver->set_step_backend(
+      std::make_unique<GpuStep>(solver->model(), solver->state(), scene.solver.integrator));
+  return solver;
+}
+
+std::string cpu_fallback_note(const std::string& why) {
+  return "solver.backend = \"gpu\": " + why + "; the cloth steps on the CPU";
+}
+
+std::unique_ptr<Solver> make_backend_solver(const Scene& scene, std::string& note) {
+  note.clear();
+  if (scene.solver.backend != Backend::gpu) return make_solver(scene);
+  std::string why = gpu_unsupported_reason(scene);
+  if (why.empty()) {
+    try {
+      return make_gpu_solver(scene);
+    } catch (const vis::GlUnavailable& e) {
+      why = e.what();
+    }
+  }
+  note = cpu_fallback_note(why);
+  return make_solver(scene);
+}
+
+}  // namespace clothlab::gpu

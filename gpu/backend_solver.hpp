@@ -1,0 +1,33 @@
+// solver.backend = "gpu": the CPU solver (SolverT<float> over the neighbour list) with its
+// integrator on the GPU step backend (gpu_step.hpp). Everything but the integrator is the CPU's
+// own code: the step loop, the model, pins and their release, the grab, pushes, colliders,
+// self-collision, moving pins and the divergence checks, on a mirror of the GPU's state
+// refreshed only when something on the CPU reads it (docs/gpu-backend.md). The renderer draws
+// from the solver's device_cloth(). Needs the GL context current on the calling thread for the
+// solver's whole life.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "sim/solver.hpp"
+
+namespace clothlab::gpu {
+
+// Why the GPU backend cannot run `scene` (one line), or empty when it can.
+std::string gpu_unsupported_reason(const Scene& scene);
+
+// The solver for `scene` stepping on the GPU. Throws GlUnavailable without compute shaders,
+// std::invalid_argument when gpu_unsupported_reason(scene) is not empty, SceneError as the CPU
+// solver does.
+std::unique_ptr<Solver> make_gpu_solver(const Scene& scene);
+
+// The line said when solver.backend = "gpu" cannot be honoured for reason `why`.
+std::string cpu_fallback_note(const std::string& why);
+
+// The solver for `scene`: on the GPU when scene.solver.backend is gpu and the scene and the
+// current GL context allow it, else the CPU solver, with `note` set to one line saying why the
+// GPU was not used (left empty otherwise). Needs a current GL context when backend is gpu.
+std::unique_ptr<Solver> make_backend_solver(const Scene& scene, std::string& note);
+
+}  // namespace clothlab::gpu
