@@ -34,19 +34,10 @@ void prefer_passive_openmp(int argc, char** argv) {
   ::execv("/proc/self/exe", argv);  // returns only on failure: then run as we are
 }
 
-}  // namespace
+using namespace clothlab::app;
 
-int main(int argc, char** argv) {
-  prefer_passive_openmp(argc, argv);
-  using namespace clothlab::app;
-  CLI::App app{"ClothLab: a laboratory for simulating cloth and looking at it scientifically."};
-  app.require_subcommand(1);
-
-  CheckArgs check;
-  auto* check_cmd = app.add_subcommand("check", "parse and validate a scene, then exit");
-  add_scene_options(*check_cmd, check.scene, check.overrides);
-
-  TraceArgs trace;
+// `trace`: run a scene headless and write a CSV trace.
+CLI::App* add_trace(CLI::App& app, TraceArgs& trace) {
   auto* trace_cmd = app.add_subcommand("trace", "run a scene headless and write a CSV trace");
   add_scene_options(*trace_cmd, trace.scene, trace.overrides);
   trace_cmd->add_option("--duration", trace.duration, "simulated seconds to run")
@@ -61,48 +52,19 @@ int main(int argc, char** argv) {
           "SECONDS"));
   trace_cmd->add_option("--out", trace.out, "CSV file to write")->required();
 
-  RenderArgs render;
-  auto* render_cmd = app.add_subcommand("render", "render a scene headless (EGL) to PNGs or MP4");
-  add_scene_options(*render_cmd, render.scene, render.overrides);
-  render_cmd->add_option("--frames", render.frames, "frames to render")
-      ->check(CLI::Range(1, 1000000));
-  render_cmd
-      ->add_option(
-          "--mode", render.mode,
-          "1 springs, 2 normals, 3 Lambert + texture, 4 cloth BRDF + gold threads, 5 translucent "
-          "cloth with coloured shadows, 6 normal-mapped weave, 7 the "
-          "light's depth map "
-          "(default: the scene's render.mode)")
-      ->check(CLI::Range(1, 7));
-  std::string size = "1280x720";
-  render_cmd->add_option("--size", size, "image size WxH")
-      ->check(CLI::Validator(
-          [](std::string& s) {
-            int w = 0, h = 0;
-            char x = 0;
-            return std::sscanf(s.c_str(), "%d%c%d", &w, &x, &h) == 3 && x == 'x' && w >= 16 &&
-                           h >= 16 && w <= 8192 && h <= 8192
-                       ? std::string()
-                       : std::string("must be WxH with 16 <= W, H <= 8192, e.g. 1280x720");
-          },
-          "WxH"));
-  render_cmd->add_option("--fps", render.fps, "frames per simulated second")
-      ->check(CLI::Range(1.0, 10000.0));
-  render_cmd->add_option("--out", render.out, "directory for the numbered PNGs")->required();
-  render_cmd->add_option("--video", render.video, "also write an MP4 (Debian's ffmpeg)");
-  render_cmd->add_option("--music-out", render.music_out,
-                         "also write the scene's [music] (e.g. its generated drum track) as WAV");
-  render_cmd->add_flag("--quiet", render.quiet, "no progress bar");
-  render_cmd
-      ->add_option("--copies", render.copies,
-                   "copies of the scene's cloth side by side, each simulated (as the window's ])")
-      ->check(CLI::Range(1, 64));
-  std::string probe;
-  auto* probe_opt = render_cmd->add_option(
-      "--probe", probe, "after the last frame, print the field under pixel PX,PY as JSON");
-  render_cmd->add_option("--field", render.field, "probed field: force, velocity or position")
-      ->check(CLI::IsMember({"force", "velocity", "position"}));
+  return trace_cmd;
+}
 
+// The command line of `render` as parsed, before the size and the probe are checked.
+struct RenderCli {
+  RenderArgs args;
+  std::string size = "1280x720";
+  std::string probe;
+  CLI::Option* probe_opt = nullptr;
+};
+
+// `render`'s scientific views: colour maps, arrows, legends.
+void add_render_views(CLI::App* render_cmd, RenderArgs& render) {
   render_cmd->add_option("--color-by", render.color_by, "colour the cloth by a scalar (modes 2, 3)")
       ->check(CLI::IsMember({"force", "speed", "strain", "height"}));
   render_cmd->add_option("--colormap", render.colormap, "colour map for --color-by and arrows")
@@ -137,8 +99,77 @@ int main(int argc, char** argv) {
 
   render_cmd->add_flag("--no-legend", render.no_legend,
                        "no colour bars (they show with --color-by and force arrows)");
+}
 
-  ViewArgs view;
+// `render`: a scene headless (EGL) to PNGs or MP4.
+CLI::App* add_render(CLI::App& app, RenderCli& cli) {
+  RenderArgs& render = cli.args;
+  auto* render_cmd = app.add_subcommand("render", "render a scene headless (EGL) to PNGs or MP4");
+  add_scene_options(*render_cmd, render.scene, render.overrides);
+  render_cmd->add_option("--frames", render.frames, "frames to render")
+      ->check(CLI::Range(1, 1000000));
+  render_cmd
+      ->add_option(
+          "--mode", render.mode,
+          "1 springs, 2 normals, 3 Lambert + texture, 4 cloth BRDF + gold threads, 5 translucent "
+          "cloth with coloured shadows, 6 normal-mapped weave, 7 the "
+          "light's depth map "
+          "(default: the scene's render.mode)")
+      ->check(CLI::Range(1, 7));
+  render_cmd->add_option("--size", cli.size, "image size WxH")
+      ->check(CLI::Validator(
+          [](std::string& s) {
+            int w = 0, h = 0;
+            char x = 0;
+            return std::sscanf(s.c_str(), "%d%c%d", &w, &x, &h) == 3 && x == 'x' && w >= 16 &&
+                           h >= 16 && w <= 8192 && h <= 8192
+                       ? std::string()
+                       : std::string("must be WxH with 16 <= W, H <= 8192, e.g. 1280x720");
+          },
+          "WxH"));
+  render_cmd->add_option("--fps", render.fps, "frames per simulated second")
+      ->check(CLI::Range(1.0, 10000.0));
+  render_cmd->add_option("--out", render.out, "directory for the numbered PNGs")->required();
+  render_cmd->add_option("--video", render.video, "also write an MP4 (Debian's ffmpeg)");
+  render_cmd->add_option("--music-out", render.music_out,
+                         "also write the scene's [music] (e.g. its generated drum track) as WAV");
+  render_cmd->add_flag("--quiet", render.quiet, "no progress bar");
+  render_cmd
+      ->add_option("--copies", render.copies,
+                   "copies of the scene's cloth side by side, each simulated (as the window's ])")
+      ->check(CLI::Range(1, 64));
+  cli.probe_opt = render_cmd->add_option(
+      "--probe", cli.probe, "after the last frame, print the field under pixel PX,PY as JSON");
+  render_cmd->add_option("--field", render.field, "probed field: force, velocity or position")
+      ->check(CLI::IsMember({"force", "velocity", "position"}));
+
+  add_render_views(render_cmd, render);
+  return render_cmd;
+}
+
+// The image size, and --probe checked against it (known only once --size is parsed).
+int run_render_cli(RenderCli& cli) {
+  RenderArgs& render = cli.args;
+  std::sscanf(cli.size.c_str(), "%dx%d", &render.width, &render.height);
+  // --probe is checked against the image size, known only once --size is parsed.
+  if (*cli.probe_opt) {
+    int px = -1, py = -1;
+    char comma = 0, rest = 0;
+    if (std::sscanf(cli.probe.c_str(), "%d%c%d%c", &px, &comma, &py, &rest) != 3 || comma != ',' ||
+        px < 0 || py < 0 || px >= render.width || py >= render.height) {
+      std::fprintf(stderr,
+                   "clothlab render: --probe %s: must be PX,PY, a pixel inside the %dx%d image "
+                   "(0 <= PX < %d, 0 <= PY < %d)\n",
+                   cli.probe.c_str(), render.width, render.height, render.width, render.height);
+      return kBadInput;
+    }
+    render.probe = std::array<int, 2>{px, py};
+  }
+  return run_render(render);
+}
+
+// `view`: a window on a scene (the default scene if none).
+CLI::App* add_view(CLI::App& app, ViewArgs& view) {
   auto* view_cmd = app.add_subcommand("view", "open a window on a scene (default scene if none)");
   add_scene_options(*view_cmd, view.scene, view.overrides, false);
   view_cmd
@@ -146,10 +177,11 @@ int main(int argc, char** argv) {
                    "start with this many copies of the cloth side by side ([ and ] change it)")
       ->check(CLI::Range(1, 64));
 
-  auto* params_cmd = app.add_subcommand(
-      "params", "print every scene key: type, range, default, unit and meaning (Markdown)");
+  return view_cmd;
+}
 
-  BenchArgs bench;
+// `bench`: run time against error, stability, scaling, feature, view and render costs.
+CLI::App* add_bench(CLI::App& app, BenchArgs& bench) {
   auto* bench_cmd = app.add_subcommand(
       "bench",
       "run time against error, stability, scaling, feature, view and render costs (tables + CSV)");
@@ -165,6 +197,31 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1024));
   bench_cmd->add_flag("--verbose", bench.verbose, "progress lines on stderr");
 
+  return bench_cmd;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  prefer_passive_openmp(argc, argv);
+  using namespace clothlab::app;
+  CLI::App app{"ClothLab: a laboratory for simulating cloth and looking at it scientifically."};
+  app.require_subcommand(1);
+
+  CheckArgs check;
+  auto* check_cmd = app.add_subcommand("check", "parse and validate a scene, then exit");
+  add_scene_options(*check_cmd, check.scene, check.overrides);
+  auto* params_cmd = app.add_subcommand(
+      "params", "print every scene key: type, range, default, unit and meaning (Markdown)");
+  TraceArgs trace;
+  auto* trace_cmd = add_trace(app, trace);
+  RenderCli render;
+  auto* render_cmd = add_render(app, render);
+  ViewArgs view;
+  auto* view_cmd = add_view(app, view);
+  BenchArgs bench;
+  auto* bench_cmd = add_bench(app, bench);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -174,24 +231,7 @@ int main(int argc, char** argv) {
   if (*check_cmd) return run_check(check);
   if (*params_cmd) return run_params();
   if (*trace_cmd) return run_trace_command(trace);
-  if (*render_cmd) {
-    std::sscanf(size.c_str(), "%dx%d", &render.width, &render.height);
-    // --probe is checked against the image size, known only once --size is parsed.
-    if (*probe_opt) {
-      int px = -1, py = -1;
-      char comma = 0, rest = 0;
-      if (std::sscanf(probe.c_str(), "%d%c%d%c", &px, &comma, &py, &rest) != 3 || comma != ',' ||
-          px < 0 || py < 0 || px >= render.width || py >= render.height) {
-        std::fprintf(stderr,
-                     "clothlab render: --probe %s: must be PX,PY, a pixel inside the %dx%d image "
-                     "(0 <= PX < %d, 0 <= PY < %d)\n",
-                     probe.c_str(), render.width, render.height, render.width, render.height);
-        return kBadInput;
-      }
-      render.probe = std::array<int, 2>{px, py};
-    }
-    return run_render(render);
-  }
+  if (*render_cmd) return run_render_cli(render);
   if (*view_cmd) return run_view(view);
   if (*bench_cmd) return run_bench(bench);
   return 2;

@@ -8,6 +8,7 @@
 
 #include "sim/solver.hpp"
 #include "vis/gl/program.hpp"
+#include "vis/gl/uploads.hpp"
 #include "vis/render/renderer.hpp"
 
 namespace clothlab::vis {
@@ -53,11 +54,7 @@ FieldPass::FieldPass(int width, int height)
     throw std::runtime_error("field framebuffer incomplete (status " + std::to_string(status) +
                              ")");
   glObjectLabel(GL_FRAMEBUFFER, fbo_.get(), -1, "field pass");
-  for (GLuint a = 0; a < 3; ++a) {
-    glEnableVertexArrayAttrib(vao_.get(), a);
-    glVertexArrayAttribFormat(vao_.get(), a, 3, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(vao_.get(), a, a);
-  }
+  for (GLuint a = 0; a < 3; ++a) float_attribute(vao_.get(), a, a, 3);
 }
 
 void FieldPass::draw(const Renderer& renderer, const std::vector<float>& force,

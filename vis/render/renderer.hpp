@@ -1,6 +1,8 @@
-// The render passes shared by the window and headless rendering: floor, shaded cloth (modes 2
-// and 3) and springs as lines (mode 1). Draws into whatever framebuffer is bound; only context
-// creation differs between window and headless. Needs a current OpenGL 4.5 core context.
+// The frame shared by the window and headless rendering: the shadow map, mode 6's diffusion,
+// then the floor, the scenery, the colliders, the cloth (vis/passes/cloth_pass, springs_pass)
+// and the sky, in that order, over the cloth's buffers (vis/render/cloth_geometry). Draws into
+// whatever framebuffer is bound; only context creation differs between window and headless.
+// Needs a current OpenGL 4.5 core context.
 #pragma once
 
 #include <array>
@@ -12,11 +14,14 @@
 #include "sim/scene/collider_spec.hpp"
 #include "vis/gl/objects.hpp"
 #include "vis/gl/pass_timer.hpp"
+#include "vis/passes/cloth_pass.hpp"
+#include "vis/passes/floor_pass.hpp"
+#include "vis/passes/springs_pass.hpp"
+#include "vis/render/cloth_geometry.hpp"
 #include "vis/render/light_rig.hpp"
 #include "vis/render/view_settings.hpp"
 
 namespace clothlab {
-class DeviceCloth;
 class Solver;
 struct Image;
 }  // namespace clothlab
@@ -45,9 +50,9 @@ class Renderer {
   // Uploads the current positions and smooth normals (computed in parallel by the solver) into
   // the vertex buffer, in place, and poses moving colliders at the solver's time(). Call once
   // per frame before draw().
-  // With the GPU backend (vis/gpu/gpu_solver.hpp) the positions and normals go from the solver's
-  // buffers into the vertex buffer by a compute pass (shaders/cloth_pack.comp), never through the
-  // CPU; the CPU reads only the state mirror the solver keeps anyway, for the cloth's bounds.
+  // With the GPU backend (Solver::device_cloth()) the positions and normals go from the solver's
+  // buffers into the vertex buffer by a compute pass (ClothGeometry), never through the CPU; the
+  // CPU reads only the state mirror the solver keeps anyway, for the cloth's bounds.
   void update_cloth(Solver& solver);
   // The colour-by scalar, one per vertex (vertex_count() values), and the range the colour map
   // spans, for draws while view.color.field is not none.
@@ -71,73 +76,47 @@ class Renderer {
   // For passes that draw the same cloth (FieldPass): the buffer whose first 3 floats per render
   // vertex are the positions of the last update_cloth(), and the triangles' index buffer (the
   // solver's triangles in their order, indexing render vertices).
-  GLuint position_buffer() const { return dynamic_vbo_.get(); }
-  GLuint triangle_buffer() const { return triangle_ebo_.get(); }
-  GLsizei triangle_index_count() const { return triangle_indices_; }
+  GLuint position_buffer() const { return cloth_.position_buffer(); }
+  GLuint triangle_buffer() const { return cloth_.triangle_buffer(); }
+  GLsizei triangle_index_count() const { return cloth_.triangle_indices(); }
   // The solver's vertices (what set_scalars and FieldPass::draw take values for).
-  std::size_t vertex_count() const { return vertices_; }
-  std::size_t render_vertex_count() const { return vertices_ + seam_copies_.size(); }
+  std::size_t vertex_count() const { return cloth_.vertex_count(); }
+  std::size_t render_vertex_count() const { return cloth_.render_vertex_count(); }
   // The solver vertex render vertex vertex_count() + k copies.
-  const std::vector<int>& seam_copies() const { return seam_copies_; }
+  const std::vector<int>& seam_copies() const { return cloth_.seam_copies(); }
   // The solver vertex behind any render vertex.
   int physics_vertex(std::size_t render_vertex) const {
-    return render_vertex < vertices_ ? static_cast<int>(render_vertex)
-                                     : seam_copies_[render_vertex - vertices_];
+    const std::size_t n = vertex_count();
+    return render_vertex < n ? static_cast<int>(render_vertex) : seam_copies()[render_vertex - n];
   }
   // The 256 x 1 sRGB table of a colour map (for the arrows and legends that share it).
   GLuint colormap_texture(ColorMap map) const { return colormaps_[static_cast<int>(map)].get(); }
 
  private:
+  glm::vec3 fit_light_to_casters(const ViewSettings& view);
+  glm::mat4 upload_frame(const ViewSettings& view, int width, int height, bool translucent);
+  bool run_diffusion(const ViewSettings& view);
+  void draw_depth_view(int width, int height);
   void draw_shadow_map(const ViewSettings& view, bool translucent);
+  void draw_shadow_casters();
   void draw_sky(const ViewSettings& view, const glm::mat4& view_proj, glm::vec3 centre);
-  void update_tangents();
-  void pack_from_gpu(const DeviceCloth& gpu);  // update_cloth's vertex buffer with the GPU backend
-  void set_thread_fraction(double fraction);
-  void set_weave_bump(double strength);
-  void upload_normal_map(const Image& map);
 
-  Program cloth_program_, floor_program_, springs_program_, depth_view_program_;
+  ClothGeometry cloth_;
+  FloorPass floor_;
+  ClothPass cloth_pass_;
+  SpringsPass springs_;
+  Program depth_view_program_;
   std::unique_ptr<PassTimer> timer_;          // only while a benchmark times the passes
   std::unique_ptr<ShadowPass> shadow_;        // only while shadows or the depth view are on
   std::unique_ptr<SkyPass> sky_;              // only while the sky is shown
   std::unique_ptr<DiffusionPass> diffusion_;  // only while mode 6 shows subsurface light
-  glm::vec2 atlas_per_metre_{1.0f};           // UV-atlas units per metre of cloth (u, v)
   std::unique_ptr<Scenery> scenery_;
   std::unique_ptr<ColliderScenery> colliders_;  // only while the scene has colliders
   LightRig light_;
-  // The box around the cloth's current positions (update_cloth): a caster the light must see.
-  glm::vec3 cloth_lo_{0.0f}, cloth_hi_{0.0f};
-  Texture fabric_, tiles_;
   Buffer frame_ubo_;
-  // One vertex buffer for what changes every frame (positions, then normals) and one for what
-  // does not (UVs, then rest positions); triangles and spring lines index the same vertices.
-  Buffer dynamic_vbo_, static_vbo_, triangle_ebo_, line_ebo_;
-  Buffer scalar_vbo_;   // the colour-by scalar per vertex
-  Buffer tangent_vbo_;  // modes 4-6: per-vertex tangent frame (xyz, handedness)
-  bool tangents_stale_ = true;
-  std::vector<float> tangents_;
-  std::vector<ClothRange> grids_;  // the cloths' grids, for the tangents
-  // Mesh cloths' tangents come from their triangles and UVs (empty without a mesh cloth).
-  std::vector<float> mesh_uvs_, tangent_scratch_;
-  std::vector<std::array<int, 3>> mesh_triangles_;
-  Texture threads_;  // r: metal thread mask, g: weft on top
-  double thread_fraction_ = -1.0;
-  Texture weave_normals_;  // mode 6: the weave's tangent-space normal map
-  double weave_bump_ = -1.0;
-  bool custom_normals_ = false;  // set_normal_map gave the map
   ScalarRange scalar_range_;
   std::array<Texture, kAllColorMaps.size()> colormaps_;
-  VertexArray cloth_vao_, line_vao_, empty_vao_;
-  std::vector<float> staging_;         // positions, then normals, per render vertex
-  std::vector<float> scalar_staging_;  // the colour-by scalar per render vertex
-  std::size_t vertices_ = 0;           // the solver's
-  // The GPU backend's cloth the last update_cloth() packed from (normals for the tangents are
-  // read back from it only when a mode needs them), else null.
-  const DeviceCloth* gpu_source_ = nullptr;  // the solver's device_cloth() at update_cloth
-  Program pack_program_;          // cloth_pack.comp, built on the first GPU-backend frame
-  Buffer seam_source_;            // seam_copies_ for cloth_pack.comp
-  std::vector<int> seam_copies_;  // render vertex vertices_ + k copies solver vertex [k]
-  GLsizei triangle_indices_ = 0, line_indices_ = 0;
+  VertexArray empty_vao_;
 };
 
 }  // namespace clothlab::vis

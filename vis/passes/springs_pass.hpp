@@ -1,0 +1,20 @@
+// Mode 1: every spring as a line, coloured by its strain on Moreland's cool-warm map
+// (shaders/springs.*), over the cloth's own vertex buffer. Needs a current GL 4.5 context.
+#pragma once
+
+#include "vis/gl/objects.hpp"
+
+namespace clothlab::vis {
+
+class ClothGeometry;
+
+class SpringsPass {
+ public:
+  SpringsPass();
+  void draw(const ClothGeometry& cloth) const;
+
+ private:
+  Program program_;
+};
+
+}  // namespace clothlab::vis

@@ -1,0 +1,164 @@
+#include "vis/render/cloth_geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+
+#include "sim/solver.hpp"
+#include "sim/step_backend.hpp"
+#include "vis/gl/program.hpp"
+#include "vis/gl/uploads.hpp"
+#include "vis/textures/cloth_tangents.hpp"
+
+namespace clothlab::vis {
+
+void ClothGeometry::build(const Solver& solver) {
+  layout_ = make_cloth_layout(solver);
+  const std::size_t rn = layout_.render_vertices();
+  triangle_indices_ = static_cast<GLsizei>(layout_.triangles.size());
+  line_indices_ = static_cast<GLsizei>(layout_.lines.size());
+  dynamic_vbo_ = dynamic_float_buffer(6 * rn);
+  seam_source_ = Buffer();
+  static_vbo_ = static_buffer(layout_.fixed);
+  scalar_vbo_ = dynamic_float_buffer(rn);
+  tangent_vbo_ = dynamic_float_buffer(4 * rn);
+  triangle_ebo_ = static_buffer(layout_.triangles);
+  line_ebo_ = static_buffer(layout_.lines);
+  tangents_.assign(4 * rn, 0.0f);
+  tangents_stale_ = true;
+  make_vertex_arrays();
+  staging_.resize(6 * rn);
+  scalar_staging_.resize(rn);
+}
+
+// Two vertex arrays over the same vertex buffers: triangles and spring lines. Attributes:
+// 0 position, 1 normal, 2 uv, 3 rest position (both); 4 scalar, 5 tangent, 6 atlas place
+// (triangles).
+void ClothGeometry::make_vertex_arrays() {
+  const std::size_t rn = layout_.render_vertices();
+  cloth_vao_ = make_vertex_array();
+  line_vao_ = make_vertex_array();
+  for (GLuint vao : {cloth_vao_.get(), line_vao_.get()}) {
+    const auto n_bytes = static_cast<GLintptr>(3 * rn * sizeof(float));
+    glVertexArrayVertexBuffer(vao, 0, dynamic_vbo_.get(), 0, 3 * sizeof(float));
+    glVertexArrayVertexBuffer(vao, 1, dynamic_vbo_.get(), n_bytes, 3 * sizeof(float));
+    glVertexArrayVertexBuffer(vao, 2, static_vbo_.get(), 0, 2 * sizeof(float));
+    glVertexArrayVertexBuffer(vao, 3, static_vbo_.get(),
+                              static_cast<GLintptr>(2 * rn * sizeof(float)), 3 * sizeof(float));
+    for (GLuint a = 0; a < 4; ++a) float_attribute(vao, a, a, a == 2 ? 2 : 3);
+  }
+  const GLuint vao = cloth_vao_.get();
+  glVertexArrayVertexBuffer(vao, 4, scalar_vbo_.get(), 0, sizeof(float));
+  float_attribute(vao, 4, 4, 1);
+  glVertexArrayVertexBuffer(vao, 5, tangent_vbo_.get(), 0, 4 * sizeof(float));
+  float_attribute(vao, 5, 5, 4);
+  glVertexArrayVertexBuffer(vao, 6, static_vbo_.get(),
+                            static_cast<GLintptr>(5 * rn * sizeof(float)), 2 * sizeof(float));
+  float_attribute(vao, 6, 6, 2);
+  glVertexArrayElementBuffer(vao, triangle_ebo_.get());
+  glVertexArrayElementBuffer(line_vao_.get(), line_ebo_.get());
+}
+
+void ClothGeometry::update(Solver& solver) {
+  DeviceCloth* device = solver.device_cloth();  // the GPU backend's buffers, or null
+  device_ = device;
+  solver.copy_positions(staging_.data());
+  update_bounds();
+  tangents_stale_ = true;
+  if (device) {
+    device->update_normals();
+    pack_from_device(*device);
+    return;
+  }
+  const std::size_t rn = layout_.render_vertices();
+  solver.copy_normals(staging_.data() + 3 * rn);
+  // The seam copies take their solver vertex's position and normal.
+  copy_seams(staging_.data(), 3, 0);
+  copy_seams(staging_.data(), 3, 3 * rn);
+  glNamedBufferSubData(dynamic_vbo_.get(), 0,
+                       static_cast<GLsizeiptr>(staging_.size() * sizeof(float)), staging_.data());
+}
+
+// values[offset + stride * (vertices + k) + d] = values[offset + stride * seam_copies[k] + d].
+void ClothGeometry::copy_seams(float* values, std::size_t stride, std::size_t offset) const {
+  for (std::size_t k = 0; k < layout_.seam_copies.size(); ++k) {
+    const std::size_t from = offset + stride * static_cast<std::size_t>(layout_.seam_copies[k]),
+                      to = offset + stride * (layout_.vertices + k);
+    for (std::size_t d = 0; d < stride; ++d) values[to + d] = values[from + d];
+  }
+}
+
+// The cloth's current bounds: the light's frustum follows the cloth, so the shadow map spends
+// its texels on it wherever it has moved.
+void ClothGeometry::update_bounds() {
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (std::size_t v = 0; v < layout_.vertices; ++v) {
+    const glm::vec3 p(staging_[3 * v], staging_[3 * v + 1], staging_[3 * v + 2]);
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  if (layout_.vertices == 0 || !std::isfinite(lo.x + hi.x + lo.y + hi.y + lo.z + hi.z))
+    lo = hi = glm::vec3(0.0f);
+  lo_ = lo;
+  hi_ = hi;
+}
+
+void ClothGeometry::pack_from_device(const DeviceCloth& device) {
+  const std::size_t rn = layout_.render_vertices();
+  if (!pack_program_) pack_program_ = build_program({"cloth_pack.comp"});
+  if (!seam_source_) {  // after each build
+    const std::vector<std::int32_t> seams(layout_.seam_copies.begin(), layout_.seam_copies.end());
+    seam_source_ = static_buffer(seams);
+  }
+  const GLuint p = pack_program_.get();
+  glProgramUniform1ui(p, glGetUniformLocation(p, "n"), static_cast<GLuint>(layout_.vertices));
+  glProgramUniform1ui(p, glGetUniformLocation(p, "render_n"), static_cast<GLuint>(rn));
+  glUseProgram(p);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, device.position_buffer());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, device.normal_buffer());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, seam_source_.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, dynamic_vbo_.get());
+  glDispatchCompute(static_cast<GLuint>((rn + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
+                  GL_BUFFER_UPDATE_BARRIER_BIT);
+  glUseProgram(0);
+}
+
+void ClothGeometry::set_scalars(const std::vector<float>& values) {
+  if (values.size() != layout_.vertices)
+    throw std::invalid_argument("Renderer::set_scalars: one value per vertex expected");
+  // Through the staging copy (sized by build: no allocation per frame), seam copies filled.
+  std::copy(values.begin(), values.end(), scalar_staging_.begin());
+  copy_seams(scalar_staging_.data(), 1, 0);
+  glNamedBufferSubData(scalar_vbo_.get(), 0,
+                       static_cast<GLsizeiptr>(scalar_staging_.size() * sizeof(float)),
+                       scalar_staging_.data());
+}
+
+// The tangent frame of every cloth from the positions and normals of the last update(), only
+// when a mode that needs it is drawn.
+void ClothGeometry::update_tangents() {
+  if (!tangents_stale_ || layout_.vertices == 0) return;
+  const std::size_t rn = layout_.render_vertices();
+  if (device_) device_->read_normals(staging_.data() + 3 * rn);  // the normals stayed there
+  const float* positions = staging_.data();
+  const float* normals = staging_.data() + 3 * rn;
+  for (const ClothRange& c : layout_.cloths) {
+    const std::size_t o = static_cast<std::size_t>(c.offset);
+    if (c.mesh) {
+      compute_mesh_tangents(c.offset, c.offset + c.nu, layout_.mesh_triangles, positions, normals,
+                            layout_.mesh_uvs.data(), tangents_.data(), tangent_scratch_);
+      continue;
+    }
+    compute_grid_tangents(c.nu, c.nv, positions + 3 * o, normals + 3 * o, tangents_.data() + 4 * o,
+                          c.wrap_u);
+  }
+  // A seam copy has column 0's frame: the ring's dP/du is continuous there, so is the frame.
+  copy_seams(tangents_.data(), 4, 0);
+  glNamedBufferSubData(tangent_vbo_.get(), 0,
+                       static_cast<GLsizeiptr>(tangents_.size() * sizeof(float)), tangents_.data());
+  tangents_stale_ = false;
+}
+
+}  // namespace clothlab::vis

@@ -1,0 +1,73 @@
+// The cloth on the GPU for drawing: its vertex buffers (what changes every frame: positions,
+// then normals; what does not: UVs, rest positions, the atlas place), the triangle and spring
+// line indices, the colour-by scalars and the tangent frame, and the vertex arrays over them.
+// Filled from the solver's CPU arrays, or with the GPU backend from its device buffers by a
+// compute pass (shaders/cloth_pack.comp) without a trip through the CPU. Needs a current GL 4.5
+// context.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "vis/gl/objects.hpp"
+#include "vis/render/cloth_layout.hpp"
+#include "vis/render/view_settings.hpp"
+
+namespace clothlab {
+class DeviceCloth;
+class Solver;
+}  // namespace clothlab
+
+namespace clothlab::vis {
+
+class ClothGeometry {
+ public:
+  // (Re)builds every buffer for `solver`'s cloths (after building or resizing the solver).
+  void build(const Solver& solver);
+  // The current positions and smooth normals into the vertex buffer, in place, and the box
+  // around the positions (the light's frustum follows the cloth).
+  void update(Solver& solver);
+  // The colour-by scalar, one per solver vertex.
+  void set_scalars(const std::vector<float>& values);
+  // The tangent frame of the last update(), computed only when a mode needs it.
+  void update_tangents();
+
+  GLuint cloth_vao() const { return cloth_vao_.get(); }
+  GLuint line_vao() const { return line_vao_.get(); }
+  GLsizei triangle_indices() const { return triangle_indices_; }
+  GLsizei line_indices() const { return line_indices_; }
+  GLuint position_buffer() const { return dynamic_vbo_.get(); }
+  GLuint triangle_buffer() const { return triangle_ebo_.get(); }
+  std::size_t vertex_count() const { return layout_.vertices; }
+  std::size_t render_vertex_count() const { return layout_.render_vertices(); }
+  const std::vector<int>& seam_copies() const { return layout_.seam_copies; }
+  glm::vec2 atlas_per_metre() const { return layout_.atlas_per_metre; }
+  glm::vec3 lo() const { return lo_; }
+  glm::vec3 hi() const { return hi_; }
+
+ private:
+  void make_vertex_arrays();
+  void update_bounds();
+  void pack_from_device(const DeviceCloth& device);
+  void copy_seams(float* values, std::size_t stride, std::size_t offset) const;
+
+  ClothLayout layout_;
+  Buffer dynamic_vbo_, static_vbo_, triangle_ebo_, line_ebo_;
+  Buffer scalar_vbo_;   // the colour-by scalar per render vertex
+  Buffer tangent_vbo_;  // modes 4-6: per-vertex tangent frame (xyz, handedness)
+  VertexArray cloth_vao_, line_vao_;
+  GLsizei triangle_indices_ = 0, line_indices_ = 0;
+  std::vector<float> staging_;         // positions, then normals, per render vertex
+  std::vector<float> scalar_staging_;  // the colour-by scalar per render vertex
+  std::vector<float> tangents_, tangent_scratch_;
+  bool tangents_stale_ = true;
+  glm::vec3 lo_{0.0f}, hi_{0.0f};
+  // The GPU backend's cloth the last update() packed from (the tangents read its normals back
+  // only when a mode needs them), else null.
+  const DeviceCloth* device_ = nullptr;
+  Program pack_program_;  // cloth_pack.comp, built on the first GPU-backend frame
+  Buffer seam_source_;    // the seam copies for cloth_pack.comp
+};
+
+}  // namespace clothlab::vis
