@@ -1,4 +1,4 @@
-// The GPU cloth step (vis/gpu/gpu_cloth.hpp) follows the CPU solver: after 200 steps of a 64 x 64
+// The GPU cloth step (gpu/gpu_cloth.hpp) follows the CPU solver: after 200 steps of a 64 x 64
 // sheet pinned at two corners (springs with damping, drag, gravity) the positions agree within
 // 1e-5 m and the velocities within 1e-4 m/s, pins exactly, for symplectic Euler and Verlet; the
 // smoothed normals agree within 1e-6. The project builds with -march=native, where g++ fuses

@@ -1,4 +1,4 @@
-// solver.backend = "gpu" (vis/gpu/gpu_solver.hpp) runs the same physics as the CPU solver: wind
+// solver.backend = "gpu" (gpu/backend_solver.hpp) runs the same physics as the CPU solver: wind
 // with gusts, pins that let go, a grab, a push and a sphere to land on all give the CPU's motion
 // within float round-off (the library's CPU kernel fuses multiply-adds under -march=native, the
 // shaders do not, so the comparison has a tolerance; tests/gpu_cloth_test.cpp shows the two are

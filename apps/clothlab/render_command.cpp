@@ -111,12 +111,108 @@ void print_views(const vis::Diagnostics& d, const vis::ViewSettings& view) {
   if (!line.empty()) std::printf("views: %s\n", line.c_str());
 }
 
+// Seconds per part of all frames, and the steps taken; `diverged` when the run stopped.
+struct FrameTimes {
+  double simulate = 0.0, draw = 0.0, output = 0.0;
+  long steps = 0;
+  bool diverged = false;
+};
+
+// Frame 0 shows the initial state; each later frame 1 / fps of simulated time more. Every frame
+// goes to a PNG and, with --video, to the video.
+FrameTimes render_frames(const RenderArgs& args, Solver& solver, vis::HeadlessRenderer& renderer,
+                         const vis::ViewSettings& view, VideoPipe* video) {
+  FrameTimes t;
+  ProgressBar progress(args.frames, !args.quiet);
+  Image image(args.width, args.height);
+  for (int frame = 0; frame < args.frames; ++frame) {
+    auto t0 = Clock::now();
+    if (frame > 0) {
+      const AdvanceResult r = solver.advance(1.0 / args.fps);
+      t.steps += r.steps;
+      if (r.divergence) {
+        std::fprintf(stderr, "\nclothlab render: %s (frame %d)\n", r.divergence->message().c_str(),
+                     frame);
+        t.diverged = true;
+        return t;
+      }
+    }
+    t.simulate += seconds_since(t0);
+    t0 = Clock::now();
+    image.rgba = renderer.render(solver, view);
+    t.draw += seconds_since(t0);
+    t0 = Clock::now();
+    write_png(image, frame_path(args.out, frame));
+    if (video) video->write(image.rgba);
+    t.output += seconds_since(t0);
+    progress.update(frame + 1);
+  }
+  return t;
+}
+
+// --music-out, and the video (with the scene's music from frame 0, cut to the frames' length).
+std::unique_ptr<VideoPipe> open_outputs(const RenderArgs& args, const Scene& scene,
+                                        const MusicTrack*& music) {
+  if (!args.music_out.empty()) {
+    if (!scene.music || !scene.music->track)
+      throw std::runtime_error("--music-out: the scene has no [music]");
+    write_wav(args.music_out, scene.music->track->clip);
+  }
+  music =
+      scene.music && scene.music->track && !args.video.empty() ? scene.music->track.get() : nullptr;
+  if (args.video.empty()) return nullptr;
+  return std::make_unique<VideoPipe>(
+      args.video, args.width, args.height, args.fps,
+      VideoMusic{music ? &music->clip : nullptr, args.frames / args.fps});
+}
+
+void print_summary(const RenderArgs& args, const FrameTimes& t, const Solver& solver,
+                   const vis::HeadlessRenderer& renderer, const vis::ViewSettings& view,
+                   const MusicTrack* music) {
+  const double frames = args.frames;
+  std::printf(
+      "render: %d frames of %dx%d (mode %d) on %s: %.2f ms/frame simulation (%.1f steps of "
+      "%g s on the %s), %.2f ms/frame rendering, %.2f ms/frame writing; %s%s%s%s%s\n",
+      args.frames, args.width, args.height, static_cast<int>(view.mode),
+      renderer.gl_renderer().c_str(), 1e3 * t.simulate / frames,
+      frames > 1 ? double(t.steps) / (frames - 1) : 0.0, solver.dt(), backend_name(solver),
+      1e3 * t.draw / frames, 1e3 * t.output / frames, args.out.c_str(),
+      args.video.empty() ? "" : " and ", args.video.c_str(), music ? " with music: " : "",
+      music ? music->source.c_str() : "");
+}
+
+int render_scene(const RenderArgs& args, Scene& scene) {
+  vis::HeadlessRenderer renderer(args.width, args.height);
+  // After the context: solver.backend = "gpu" steps the cloth in it.
+  if (args.copies > 1) {
+    if (const std::string why = copies_unsupported_reason(scene); !why.empty())
+      throw std::runtime_error("--copies: " + why);
+    scene = with_copies(scene, args.copies, copy_spacing(scene));
+  }
+  std::string backend_note;
+  const auto solver = gpu::make_backend_solver(scene, backend_note);
+  if (!backend_note.empty()) std::printf("clothlab render: %s\n", backend_note.c_str());
+  renderer.set_cloth(*solver);
+  renderer.set_scene(scene.render, *solver, scene.colliders);
+  vis::ViewSettings view = vis::scene_view(scene, *solver);
+  if (args.mode != 0) view.mode = static_cast<vis::DisplayMode>(args.mode);
+  apply_view_options(args, view);
+  const MusicTrack* music = nullptr;
+  const std::unique_ptr<VideoPipe> video = open_outputs(args, scene, music);
+  const FrameTimes t = render_frames(args, *solver, renderer, view, video.get());
+  if (t.diverged) return 1;
+  if (video) video->finish();
+  if (args.probe) print_probe(*solver, renderer, view, args);
+  print_summary(args, t, *solver, renderer, view, music);
+  print_views(renderer.diagnostics(), view);
+  return 0;
+}
+
 }  // namespace
 
 int run_render(const RenderArgs& args) {
   std::optional<Scene> loaded = load_scene("render", args.scene, args.overrides);
   if (!loaded) return kBadInput;
-  Scene& scene = *loaded;
   std::error_code ec;
   std::filesystem::create_directories(args.out, ec);
   if (ec || !std::filesystem::is_directory(args.out)) {
@@ -125,75 +221,7 @@ int run_render(const RenderArgs& args) {
     return 2;
   }
   try {
-    vis::HeadlessRenderer renderer(args.width, args.height);
-    // After the context: solver.backend = "gpu" steps the cloth in it.
-    if (args.copies > 1) {
-      if (const std::string why = copies_unsupported_reason(scene); !why.empty())
-        throw std::runtime_error("--copies: " + why);
-      scene = with_copies(scene, args.copies, copy_spacing(scene));
-    }
-    std::string backend_note;
-    const auto solver = gpu::make_backend_solver(scene, backend_note);
-    if (!backend_note.empty()) std::printf("clothlab render: %s\n", backend_note.c_str());
-    renderer.set_cloth(*solver);
-    renderer.set_scene(scene.render, *solver, scene.colliders);
-    vis::ViewSettings view = vis::scene_view(scene, *solver);
-    if (args.mode != 0) view.mode = static_cast<vis::DisplayMode>(args.mode);
-    apply_view_options(args, view);
-    if (!args.music_out.empty()) {
-      if (!scene.music || !scene.music->track)
-        throw std::runtime_error("--music-out: the scene has no [music]");
-      write_wav(args.music_out, scene.music->track->clip);
-    }
-    // The scene's music goes into the video from frame 0, cut to the frames' length.
-    const MusicTrack* music = scene.music && scene.music->track && !args.video.empty()
-                                  ? scene.music->track.get()
-                                  : nullptr;
-    std::unique_ptr<VideoPipe> video;
-    if (!args.video.empty())
-      video = std::make_unique<VideoPipe>(
-          args.video, args.width, args.height, args.fps,
-          VideoMusic{music ? &music->clip : nullptr, args.frames / args.fps});
-
-    ProgressBar progress(args.frames, !args.quiet);
-    double simulate = 0.0, draw = 0.0, output = 0.0;
-    long steps = 0;
-    Image image(args.width, args.height);
-    for (int frame = 0; frame < args.frames; ++frame) {
-      // Frame 0 shows the initial state; each later frame 1 / fps of simulated time more.
-      auto t0 = Clock::now();
-      if (frame > 0) {
-        const AdvanceResult r = solver->advance(1.0 / args.fps);
-        steps += r.steps;
-        if (r.divergence) {
-          std::fprintf(stderr, "\nclothlab render: %s (frame %d)\n",
-                       r.divergence->message().c_str(), frame);
-          return 1;
-        }
-      }
-      simulate += seconds_since(t0);
-      t0 = Clock::now();
-      image.rgba = renderer.render(*solver, view);
-      draw += seconds_since(t0);
-      t0 = Clock::now();
-      write_png(image, frame_path(args.out, frame));
-      if (video) video->write(image.rgba);
-      output += seconds_since(t0);
-      progress.update(frame + 1);
-    }
-    if (video) video->finish();
-    if (args.probe) print_probe(*solver, renderer, view, args);
-    const double frames = args.frames;
-    std::printf(
-        "render: %d frames of %dx%d (mode %d) on %s: %.2f ms/frame simulation (%.1f steps of "
-        "%g s on the %s), %.2f ms/frame rendering, %.2f ms/frame writing; %s%s%s%s%s\n",
-        args.frames, args.width, args.height, static_cast<int>(view.mode),
-        renderer.gl_renderer().c_str(), 1e3 * simulate / frames,
-        frames > 1 ? double(steps) / (frames - 1) : 0.0, solver->dt(), backend_name(*solver),
-        1e3 * draw / frames, 1e3 * output / frames, args.out.c_str(), video ? " and " : "",
-        args.video.c_str(), music ? " with music: " : "", music ? music->source.c_str() : "");
-    print_views(renderer.diagnostics(), view);
-    return 0;
+    return render_scene(args, *loaded);
   } catch (const vis::GlUnavailable& e) {
     std::fprintf(stderr, "clothlab render: %s\n", e.what());
     return 1;

@@ -1,5 +1,5 @@
 // `clothlab bench --suite backends`: the CPU solver against solver.backend = "gpu"
-// (vis/gpu/gpu_solver.hpp) on the benchmark sheet (bench/bench_scenes.hpp, no wind), symplectic
+// (gpu/backend_solver.hpp) on the benchmark sheet (bench/bench_scenes.hpp, no wind), symplectic
 // Euler in float, from 64x64 to 512x512 and with 1 to 16 copies of a 64x64 sheet side by side
 // (sim/cloth/scene_copies.hpp, as the window's ]). Per step, the median of batches of about 20 ms;
 // a GPU batch is one step() call, which ends with the read-back its divergence check needs, so its

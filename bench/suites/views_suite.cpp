@@ -49,16 +49,8 @@ Scene default_scene(int res, int threads) {
   return read_scene_file(CLOTHLAB_DEFAULT_SCENE, overrides);
 }
 
-}  // namespace
-
-std::vector<Table> views_suite(const SuiteOptions& o) {
-  const int width = o.quick ? 320 : 1280, height = o.quick ? 240 : 720;
-  const std::vector<int> resolutions = o.quick ? std::vector<int>{32} : std::vector<int>{32, 128};
-  const int rounds = o.quick ? 2 : 5;
-  const int frames = o.quick ? 2 : 3;  // timed frames per variant, round and path
-  const double frame_seconds = 1.0 / 60.0;
-
-  const std::vector<Variant> variants = {
+std::vector<Variant> view_variants() {
+  return {
       {"all off", [](vis::ViewSettings&) {}},
       {"colour by |force|", [](vis::ViewSettings& v) { v.color.field = vis::ScalarField::force; }},
       {"colour by strain", [](vis::ViewSettings& v) { v.color.field = vis::ScalarField::strain; }},
@@ -80,15 +72,14 @@ std::vector<Table> views_suite(const SuiteOptions& o) {
       // Right after "everything on" in every round, on the same renderer: the "removes" claim.
       {"all off again (after everything on)", [](vis::ViewSettings&) {}},
   };
+}
 
-  vis::HeadlessRenderer renderer(width, height);
-  const std::string gl = renderer.gl_renderer();
-  if (o.log) *o.log << "views: GL renderer " << gl << "\n";
-
+Table views_table(int width, int height, const std::string& gl, int threads, int frames,
+                  int rounds) {
   Table table;
   table.title =
       "Scientific view costs per frame: scenes/default.toml, headless " + std::to_string(width) +
-      "x" + std::to_string(height) + " (4x MSAA) on " + gl + ", " + std::to_string(o.threads) +
+      "x" + std::to_string(height) + " (4x MSAA) on " + gl + ", " + std::to_string(threads) +
       " solver thread(s); frame = advance 1/60 s + render (+ probe); render includes "
       "colour bars and the probe; w/o readback = same draw, glFinish instead of resolve + read; "
       "mean of " +
@@ -104,99 +95,119 @@ std::vector<Table> views_suite(const SuiteOptions& o) {
                    "w/o readback / all off",
                    "diagnostics active",
                    "verdict"};
+  return table;
+}
 
+// One variant's frames of one round: `frames` timed frames (after one untimed, which builds or
+// drops the views' state) through render() and as many through draw() + glFinish; the mean
+// seconds per frame of simulation, render and draw.
+struct Timing {
+  double simulate = 0.0, render = 0.0, draw = 0.0;
+};
+
+Timing time_variant(vis::HeadlessRenderer& renderer, Solver& solver, const vis::ViewSettings& view,
+                    bool probing, int frames, Series& s) {
+  const int width = renderer.width(), height = renderer.height();
+  auto advance = [&] {
+    const AdvanceResult r = solver.advance(1.0 / 60.0);
+    if (r.divergence) throw std::runtime_error("views: " + r.divergence->message());
+  };
+  auto probe = [&] {
+    if (!probing) return;
+    const auto sample = renderer.probe(solver, view, width / 2, height / 2);
+    ++s.probes;
+    if (sample) ++s.probe_hits;
+  };
+  Timing t;
+  for (int path = 0; path < 2; ++path) {
+    for (int f = 0; f <= frames; ++f) {
+      Stopwatch sim_clock;
+      advance();
+      const double t_sim = sim_clock.seconds();
+      Stopwatch clock;
+      if (path == 0) {
+        (void)renderer.render(solver, view);
+      } else {
+        renderer.draw(solver, view);  // render() without the resolve and readback
+        glFinish();                   // count the GPU's work
+      }
+      probe();
+      if (f == 0) continue;
+      t.simulate += t_sim;
+      (path == 0 ? t.render : t.draw) += clock.seconds();
+    }
+  }
+  t.simulate /= 2.0 * frames;
+  t.render /= frames;
+  t.draw /= frames;
+  return t;
+}
+
+// The rows of one scene: medians over rounds, and the verdicts.
+void add_rows(Table& table, const std::string& scene_name, const std::vector<Variant>& variants,
+              const std::vector<Series>& series) {
+  for (std::size_t v = 0; v < variants.size(); ++v) {
+    const Series& s = series[v];
+    const double sim = median(s.simulate), ren = median(s.render);
+    const double tr = median(s.total_ratio);
+    std::string verdict = "-";
+    if (v == 0) verdict = "reference";
+    if (variants[v].probe)
+      verdict =
+          "probe hit the cloth " + std::to_string(s.probe_hits) + "/" + std::to_string(s.probes);
+    if (v + 1 == variants.size())
+      verdict = (!s.active && std::abs(tr - 1.0) <= kAgainLimit)
+                    ? "ok: back to reference (within 5 %), no state held"
+                    : "FAIL: " + pct(tr - 1.0) + (s.active ? ", state still held" : "");
+    table.add({scene_name, variants[v].name, fixed(1e3 * sim, 2), fixed(1e3 * ren, 2),
+               fixed(1e3 * median(s.draw), 2), fixed(1e3 * (sim + ren), 2), fixed(tr, 3),
+               fixed(median(s.render_ratio), 3), fixed(median(s.draw_ratio), 3),
+               s.active ? "yes" : "no", verdict});
+  }
+}
+
+}  // namespace
+
+std::vector<Table> views_suite(const SuiteOptions& o) {
+  const int width = o.quick ? 320 : 1280, height = o.quick ? 240 : 720;
+  const std::vector<int> resolutions = o.quick ? std::vector<int>{32} : std::vector<int>{32, 128};
+  const int rounds = o.quick ? 2 : 5;
+  const int frames = o.quick ? 2 : 3;  // timed frames per variant, round and path
+  const std::vector<Variant> variants = view_variants();
+  vis::HeadlessRenderer renderer(width, height);
+  const std::string gl = renderer.gl_renderer();
+  if (o.log) *o.log << "views: GL renderer " << gl << "\n";
+  Table table = views_table(width, height, gl, o.threads, frames, rounds);
   for (const int res : resolutions) {
-    const Scene scene = default_scene(res, o.threads);
-    auto solver = make_solver(scene);
-    const long steps_per_frame = std::max(1L, std::lround(frame_seconds / solver->dt()));
+    auto solver = make_solver(default_scene(res, o.threads));
+    const long steps_per_frame = std::max(1L, std::lround(1.0 / 60.0 / solver->dt()));
     const vis::ViewSettings base = vis::default_view(*solver);
     renderer.set_cloth(*solver);
     std::vector<Series> series(variants.size());
-
-    auto advance = [&] {
-      const AdvanceResult r = solver->advance(frame_seconds);
-      if (r.divergence) throw std::runtime_error("views: " + r.divergence->message());
-    };
     for (int round = 0; round < rounds; ++round) {
-      double ref_total = NAN, ref_render = NAN, ref_draw = NAN;
+      Timing ref;
       for (std::size_t v = 0; v < variants.size(); ++v) {
         vis::ViewSettings view = base;
         variants[v].edit(view);
         Series& s = series[v];
-        double simulate = 0.0, render = 0.0, draw = 0.0;
-        auto probe = [&] {
-          if (!variants[v].probe) return;
-          const auto sample = renderer.probe(*solver, view, width / 2, height / 2);
-          ++s.probes;
-          if (sample) ++s.probe_hits;
-        };
-        // One untimed frame per path first: building or dropping the views' state on a switch.
-        for (int f = 0; f <= frames; ++f) {
-          Stopwatch sim_clock;
-          advance();
-          const double t_sim = sim_clock.seconds();
-          Stopwatch render_clock;
-          (void)renderer.render(*solver, view);
-          probe();
-          if (f > 0) {
-            simulate += t_sim;
-            render += render_clock.seconds();
-          }
-        }
-        for (int f = 0; f <= frames; ++f) {
-          Stopwatch sim_clock;
-          advance();
-          const double t_sim = sim_clock.seconds();
-          Stopwatch draw_clock;
-          renderer.draw(*solver, view);  // render() without the resolve and readback
-          glFinish();                    // count the GPU's work
-          probe();
-          if (f > 0) {
-            simulate += t_sim;
-            draw += draw_clock.seconds();
-          }
-        }
-        simulate /= 2.0 * frames;
-        render /= frames;
-        draw /= frames;
-        if (v == 0) {
-          ref_total = simulate + render;
-          ref_render = render;
-          ref_draw = draw;
-        }
-        s.simulate.push_back(simulate);
-        s.render.push_back(render);
-        s.draw.push_back(draw);
-        s.total_ratio.push_back((simulate + render) / ref_total);
-        s.render_ratio.push_back(render / ref_render);
-        s.draw_ratio.push_back(draw / ref_draw);
+        const Timing t = time_variant(renderer, *solver, view, variants[v].probe, frames, s);
+        if (v == 0) ref = t;
+        s.simulate.push_back(t.simulate);
+        s.render.push_back(t.render);
+        s.draw.push_back(t.draw);
+        s.total_ratio.push_back((t.simulate + t.render) / (ref.simulate + ref.render));
+        s.render_ratio.push_back(t.render / ref.render);
+        s.draw_ratio.push_back(t.draw / ref.draw);
         s.active = renderer.diagnostics().active();
       }
       if (o.log)
         *o.log << "views: " << res << "x" << res << " round " << round + 1 << " of " << rounds
                << " done\n";
     }
-
-    const std::string scene_name = std::to_string(res) + "x" + std::to_string(res) + " (" +
-                                   std::to_string(steps_per_frame) + " steps/frame)";
-    for (std::size_t v = 0; v < variants.size(); ++v) {
-      const Series& s = series[v];
-      const double sim = median(s.simulate), ren = median(s.render);
-      const double tr = median(s.total_ratio);
-      std::string verdict = "-";
-      if (v == 0) verdict = "reference";
-      if (variants[v].probe)
-        verdict =
-            "probe hit the cloth " + std::to_string(s.probe_hits) + "/" + std::to_string(s.probes);
-      if (v + 1 == variants.size())
-        verdict = (!s.active && std::abs(tr - 1.0) <= kAgainLimit)
-                      ? "ok: back to reference (within 5 %), no state held"
-                      : "FAIL: " + pct(tr - 1.0) + (s.active ? ", state still held" : "");
-      table.add({scene_name, variants[v].name, fixed(1e3 * sim, 2), fixed(1e3 * ren, 2),
-                 fixed(1e3 * median(s.draw), 2), fixed(1e3 * (sim + ren), 2), fixed(tr, 3),
-                 fixed(median(s.render_ratio), 3), fixed(median(s.draw_ratio), 3),
-                 s.active ? "yes" : "no", verdict});
-    }
+    add_rows(table,
+             std::to_string(res) + "x" + std::to_string(res) + " (" +
+                 std::to_string(steps_per_frame) + " steps/frame)",
+             variants, series);
   }
   return {table};
 }

@@ -27,7 +27,7 @@ constexpr std::array<std::pair<Precision, const char*>, 2> kPrecisionNames{
 constexpr std::array<std::pair<Backend, const char*>, 2> kBackendNames{
     {{Backend::cpu, "cpu"}, {Backend::gpu, "gpu"}}};
 
-std::vector<Parameter> top_and_cloth() {
+std::vector<Parameter> top_level() {
   return {
       table_row<&Scene::springs, S::springs>(
           {.name = "springs", .description = "the springs of every cloth without its own"}),
@@ -62,6 +62,11 @@ std::vector<Parameter> top_and_cloth() {
            .child = S::mannequin,
            .description = "the dancing figure; its parts become colliders mannequin.<part>"}),
 
+  };
+}
+
+std::vector<Parameter> cloth() {
+  return {
       row<&ClothSpec::shape>({.name = "shape",
                               .fallback = "\"grid\"",
                               .choices = "grid, tube, mesh",
@@ -94,6 +99,12 @@ std::vector<Parameter> top_and_cloth() {
                              .unit = "kg",
                              .fallback = "1",
                              .description = "total mass, spread over the vertices"}),
+  };
+}
+
+// Pins, tube and mesh keys of a cloth, and its own springs.
+std::vector<Parameter> cloth_more() {
+  return {
       special_row<&ClothSpec::pins>(
           &special::read_pins,
           {.name = "pins",
@@ -253,6 +264,11 @@ std::vector<Parameter> solver() {
                                            .only_for = "implicit_euler",
                                            .widget = W::input,
                                            .description = "PCG iteration cap per step"}),
+  };
+}
+
+std::vector<Parameter> solver_more() {
+  return {
       row<&SolverSpec::threads>({.name = "threads",
                                  .range = between(0, 1024),
                                  .range_text = "between 0 (all cores) and 1024",
@@ -277,6 +293,11 @@ std::vector<Parameter> solver() {
            .widget = W::combo,
            .description = "gpu: the step as OpenGL compute shaders where it can run"}),
 
+  };
+}
+
+std::vector<Parameter> trace() {
+  return {
       special_row<&TraceSpec::vertices>(
           &special::read_trace_vertices,
           {.name = "vertices",
@@ -303,8 +324,8 @@ std::vector<Parameter> contact_parameters();  // parameters_contact.cpp
 std::span<const Parameter> parameters() {
   static const std::vector<Parameter> table = [] {
     std::vector<Parameter> all;
-    for (auto part :
-         {top_and_cloth(), dynamics(), solver(), render_parameters(), contact_parameters()})
+    for (auto part : {top_level(), cloth(), cloth_more(), dynamics(), solver(), solver_more(),
+                      trace(), render_parameters(), contact_parameters()})
       all.insert(all.end(), part.begin(), part.end());
     return all;
   }();

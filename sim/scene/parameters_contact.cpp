@@ -56,6 +56,12 @@ std::vector<Parameter> collider_shape() {
                              .unit = "m",
                              .fallback = "[0.5, 0.5, 0]",
                              .description = "capsule: the other end (not a)"}),
+  };
+}
+
+// Contact, motion and mesh keys of a collider.
+std::vector<Parameter> collider_contact() {
+  return {
       row<&ColliderSpec::thickness>({.name = "thickness",
                                      .range = kNonNegative,
                                      .unit = "m",
@@ -175,7 +181,8 @@ std::vector<Parameter> music_and_mannequin() {
 
 std::vector<Parameter> contact_parameters() {
   std::vector<Parameter> all;
-  for (auto part : {collider_shape(), friction_and_motion(), music_and_mannequin()})
+  for (auto part :
+       {collider_shape(), collider_contact(), friction_and_motion(), music_and_mannequin()})
     all.insert(all.end(), part.begin(), part.end());
   return all;
 }

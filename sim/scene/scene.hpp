@@ -113,7 +113,7 @@ struct SolverSpec {
   bool self_collision = false;    // the cloth keeps its layers apart (sim/contact/self_collision)
   double self_thickness = 0.005;  // m: how far apart two layers stay
   Precision precision = Precision::f32;
-  // Where the cloth step runs: gpu asks for the OpenGL compute backend (vis/gpu/gpu_solver.hpp),
+  // Where the cloth step runs: gpu asks for the OpenGL compute backend (gpu/backend_solver.hpp),
   // which only a program with a GL context can give; everything else steps on the CPU.
   Backend backend = Backend::cpu;
 };

@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <sstream>
 #include <utility>
 
 #include "gpu/backend_solver.hpp"
@@ -19,6 +18,7 @@
 #include "vis/render/field_pass.hpp"
 #include "vis/render/renderer.hpp"
 #include "vis/window/imgui_layer.hpp"
+#include "vis/window/probe_readout.hpp"
 #include "vis/window/scene_edit.hpp"
 #include "vis/window/screenshot.hpp"
 #include "vis/window/views_panel.hpp"
@@ -31,7 +31,6 @@ namespace {
 constexpr int kInitialWidth = 1280, kInitialHeight = 800;
 constexpr double kResolutionFactor = 1.25;  // per + / - press
 constexpr double kTitleRefreshSeconds = 0.25;
-constexpr long kDefaultHookFrames = 60;
 constexpr long kMaxStepsPerFrame = 400;     // FrameStepper's default cap
 constexpr double kStepBudgetSeconds = 0.1;  // of solver time per frame: >= ~8 fps
 constexpr double kClickSlopPixels = 4.0;    // a press and release closer than this is a click
@@ -41,51 +40,7 @@ ViewApp& app_of(GLFWwindow* window) {
   return *static_cast<ViewApp*>(glfwGetWindowUserPointer(window));
 }
 
-std::vector<std::string> split_commas(const std::string& text) {
-  std::vector<std::string> parts;
-  std::string part;
-  std::istringstream in(text);
-  while (std::getline(in, part, ',')) parts.push_back(part);
-  return parts;
-}
-
 }  // namespace
-
-ViewHooks ViewHooks::from_environment() {
-  ViewHooks hooks;
-  if (const char* n = std::getenv("CLOTHLAB_VIEW_EXIT_AFTER_FRAMES"))
-    hooks.exit_after_frames = std::max(0L, std::atol(n));
-  if (const char* path = std::getenv("CLOTHLAB_VIEW_SCREENSHOT")) {
-    hooks.screenshot = path;
-    if (hooks.exit_after_frames == 0) hooks.exit_after_frames = kDefaultHookFrames;
-  }
-  if (const char* keys = std::getenv("CLOTHLAB_VIEW_KEYS")) hooks.keys = split_commas(keys);
-  if (const char* cursor = std::getenv("CLOTHLAB_VIEW_CURSOR")) {
-    const std::vector<std::string> xy = split_commas(cursor);
-    if (xy.size() == 2) hooks.cursor = {std::atof(xy[0].c_str()), std::atof(xy[1].c_str())};
-  }
-  if (const char* n = std::getenv("CLOTHLAB_VIEW_CLICK")) hooks.click_frame = std::atol(n);
-  if (const char* path = std::getenv("CLOTHLAB_VIEW_RECORD")) hooks.record = path;
-  if (const char* open = std::getenv("CLOTHLAB_VIEW_OPEN")) {
-    const std::string text(open);
-    const auto colon = text.find(':');
-    if (colon != std::string::npos) {
-      hooks.open_frame = std::atol(text.substr(0, colon).c_str());
-      hooks.open_scene = text.substr(colon + 1);
-    }
-  }
-  if (const char* off = std::getenv("CLOTHLAB_VIEW_NO_AUDIO"))
-    hooks.no_audio = std::string(off) == "1";
-  if (const char* drag = std::getenv("CLOTHLAB_VIEW_DRAG")) {
-    const std::vector<std::string> v = split_commas(drag);
-    if (v.size() == 6) {
-      std::array<double, 6> d{};
-      for (std::size_t k = 0; k < 6; ++k) d[k] = std::atof(v[k].c_str());
-      hooks.drag = d;
-    }
-  }
-  return hooks;
-}
 
 ViewApp::ViewApp(Scene scene, ViewHooks hooks)
     : scene_name_(std::filesystem::path(scene.file).filename().string()),
@@ -303,6 +258,12 @@ void ViewApp::simulate(double wall_seconds) {
 }
 
 void ViewApp::dispatch(Action action) {
+  if (!dispatch_view(action)) dispatch_session(action);
+}
+
+// What only changes the view (modes, probes, arrows, the help, a screenshot, quitting); false
+// for the session's actions.
+bool ViewApp::dispatch_view(Action action) {
   switch (action) {
     case Action::mode_springs:
     case Action::mode_normals:
@@ -312,22 +273,40 @@ void ViewApp::dispatch(Action action) {
     case Action::mode_weave:
     case Action::mode_light_depth:
       select_mode(view_, last_shaded_, action);
-      break;
+      return true;
     case Action::probe_force:
       toggle_probe(Field::force);
-      break;
+      return true;
     case Action::probe_velocity:
       toggle_probe(Field::velocity);
-      break;
+      return true;
     case Action::probe_position:
       toggle_probe(Field::position);
-      break;
+      return true;
     case Action::toggle_force_arrows:
       view_.arrows.force = !view_.arrows.force;
-      break;
+      return true;
     case Action::toggle_normal_arrows:
       view_.arrows.normals = !view_.arrows.normals;
-      break;
+      return true;
+    case Action::toggle_help:
+      panel_.show_help = !panel_.show_help;
+      return true;
+    case Action::screenshot:
+      screenshot_requested_ = true;
+      return true;
+    case Action::quit:
+      window_.request_close();
+      return true;
+    default:
+      return false;
+  }
+}
+
+// What acts on the simulation: pushes, wind, pins, pause and steps, reset, resolution, copies,
+// threads, recording.
+void ViewApp::dispatch_session(Action action) {
+  switch (action) {
     case Action::toggle_record:
       toggle_record();
       break;
@@ -352,12 +331,10 @@ void ViewApp::dispatch(Action action) {
       session_.reset();
       break;
     case Action::more_vertices:
-      stop_recording();  // the traced vertices change with the resolution
-      session_.scale_resolution(kResolutionFactor);
-      break;
     case Action::fewer_vertices:
-      stop_recording();
-      session_.scale_resolution(1.0 / kResolutionFactor);
+      stop_recording();  // the traced vertices change with the resolution
+      session_.scale_resolution(action == Action::more_vertices ? kResolutionFactor
+                                                                : 1.0 / kResolutionFactor);
       break;
     case Action::more_copies:
       change_copies(2 * session_.copies());
@@ -368,14 +345,7 @@ void ViewApp::dispatch(Action action) {
     case Action::toggle_parallel:
       session_.toggle_parallel();
       break;
-    case Action::toggle_help:
-      panel_.show_help = !panel_.show_help;
-      break;
-    case Action::screenshot:
-      screenshot_requested_ = true;
-      break;
-    case Action::quit:
-      window_.request_close();
+    default:
       break;
   }
 }
@@ -467,151 +437,6 @@ void ViewApp::draw(int width, int height) {
   // The UI's colours are sRGB already: no second encoding.
   glDisable(GL_FRAMEBUFFER_SRGB);
   imgui_->end_frame();
-}
-
-// Pressing the active probe's key again turns probing off, and with it the field pass (and the
-// force field, computed only while something probes).
-void ViewApp::toggle_probe(Field field) {
-  if (panel_.probe == field) {
-    panel_.probe.reset();
-    field_pass_.reset();
-    probe_title_.clear();
-    pinned_vertex_ = -1;
-  } else {
-    panel_.probe = field;
-  }
-  last_title_time_ = -1.0;  // show the change at once
-}
-
-// The field pass at the framebuffer's size, the pixel under the cursor (or under the pinned
-// vertex) and its nearest vertex: a readout next to the cursor and, shorter, in the title.
-void ViewApp::probe_under_cursor(int width, int height) {
-  const Field field = *panel_.probe;
-  double x = 0.0, y = 0.0;
-  if (hooks_.cursor) {
-    x = (*hooks_.cursor)[0];
-    y = (*hooks_.cursor)[1];
-  } else {
-    glfwGetCursorPos(window_.handle(), &x, &y);
-  }
-  // Cursor positions are in window (screen) coordinates; the framebuffer has more pixels where
-  // the content scale is above 1.
-  int window_width = 0, window_height = 0;
-  glfwGetWindowSize(window_.handle(), &window_width, &window_height);
-  if (window_width <= 0 || window_height <= 0) return;
-  Solver& solver = session_.solver();
-  const glm::mat4 view_proj = view_projection(view_.camera, width, height);
-  const std::optional<std::array<double, 2>> clicked = std::exchange(pending_click_, std::nullopt);
-  if (clicked) {
-    x = (*clicked)[0];
-    y = (*clicked)[1];
-  } else if (pinned_vertex_ >= 0) {
-    // A pinned probe reads at its vertex's pixel, wherever the vertex has moved.
-    const Vec3d p = solver.position(pinned_vertex_);
-    const glm::vec4 c = view_proj * glm::vec4(float(p[0]), float(p[1]), float(p[2]), 1.0f);
-    if (c.w > 0.0f) {
-      x = (c.x / c.w * 0.5 + 0.5) * window_width;
-      y = (0.5 - c.y / c.w * 0.5) * window_height;
-    }
-  }
-  const int px = static_cast<int>(std::floor(x * width / window_width));
-  const int py = static_cast<int>(std::floor(y * height / window_height));
-
-  const char* name = field_name(field);
-  const char* unit = field == Field::force ? "N" : field == Field::velocity ? "m/s" : "m";
-  std::string text;
-  char line[160];
-  std::optional<ProbeSample> s;
-  if (session_.divergence()) {
-    text = std::string(name) + ": simulation diverged";
-    probe_title_ = text;
-    draw_probe_overlay(text, static_cast<float>(x), static_cast<float>(y));
-    return;
-  }
-  if (!field_pass_ || field_pass_->width() != width || field_pass_->height() != height)
-    field_pass_ = std::make_unique<FieldPass>(width, height);
-  s = probe_fields(solver, *renderer_, *field_pass_, view_proj, px, py);
-  if (clicked) pinned_vertex_ = s ? s->vertex : -1;  // a click off the cloth unpins
-  const int vertex = pinned_vertex_ >= 0 ? pinned_vertex_ : s ? s->vertex : -1;
-  if (vertex < 0) {
-    text = std::string(name) + ": no cloth under the cursor (click the cloth to pin)";
-    probe_title_ = std::string(name) + ": no cloth under the cursor";
-    draw_probe_overlay(text, static_cast<float>(x), static_cast<float>(y));
-    return;
-  }
-  // The pinned vertex may be hidden or off screen: its nodal value still holds (probe_fields
-  // computed the force field whenever it drew; without a draw, compute it here).
-  if (!s && field == Field::force) solver.update_force_field();
-  const Vec3d n = field == Field::force      ? solver.force(vertex)
-                  : field == Field::velocity ? solver.velocity(vertex)
-                                             : solver.position(vertex);
-  const VertexRef ref = solver.vertex_ref(vertex);
-  char vertex_name[64];
-  if (solver.cloths().size() > 1)
-    std::snprintf(vertex_name, sizeof vertex_name, "cloth %d (%d, %d)", ref.cloth, ref.i, ref.j);
-  else
-    std::snprintf(vertex_name, sizeof vertex_name, "(%d, %d)", ref.i, ref.j);
-  double magnitude = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  if (s) {
-    const glm::vec3 v = s->value(field);
-    magnitude = std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z);
-    std::snprintf(line, sizeof line, "%s (%s) at pixel (%d, %d)\n", name, unit, px, py);
-    text = line;
-    std::snprintf(line, sizeof line, "  x %+.4e\n  y %+.4e\n  z %+.4e\n  magnitude %.4e %s\n", v.x,
-                  v.y, v.z, magnitude, unit);
-    text += line;
-  } else {
-    text = std::string(name) + " (" + unit + "): pinned vertex hidden or off screen\n";
-  }
-  std::snprintf(line, sizeof line, "%s vertex %s\n",
-                pinned_vertex_ >= 0 ? "pinned (click off the cloth unpins)" : "nearest",
-                vertex_name);
-  text += line;
-  std::snprintf(line, sizeof line, "  nodal (%+.4e, %+.4e, %+.4e) %s", n[0], n[1], n[2], unit);
-  text += line;
-  std::snprintf(line, sizeof line, "%s %.3e %s at %s%s", name, magnitude, unit, vertex_name,
-                pinned_vertex_ >= 0 ? " (pinned)" : "");
-  probe_title_ = line;
-  draw_probe_overlay(text, static_cast<float>(x), static_cast<float>(y));
-}
-
-// With a probe on, a click on the cloth pins the probe to the vertex nearest the clicked point
-// (it then follows that vertex); a click off the cloth unpins it.
-void ViewApp::click(double x, double y) {
-  if (panel_.probe) pending_click_ = std::array<double, 2>{x, y};
-}
-
-// What Record writes: the pinned probe's vertex, else the scene's [trace] vertices, else the
-// documented default vertex; all fields (the scene's choice of fields and `every` where it has
-// a [trace] table).
-TraceSpec ViewApp::record_spec() const {
-  TraceSpec spec =
-      session_.scene().trace ? *session_.scene().trace : default_trace(session_.scene());
-  if (pinned_vertex_ >= 0) {
-    const VertexRef v = session_.solver().vertex_ref(pinned_vertex_);
-    spec.vertices = {{v.cloth, v.i, v.j}};
-  }
-  return spec;
-}
-
-void ViewApp::toggle_record() {
-  if (session_.recording()) {
-    stop_recording();
-    return;
-  }
-  const std::string path = record_file_name();
-  try {
-    session_.start_recording(path, record_spec());
-    panel_.message = "recording to " + path + " (Stop finishes the file)";
-  } catch (const std::exception& e) {
-    panel_.message = e.what();
-  }
-}
-
-void ViewApp::stop_recording() {
-  if (!session_.recording()) return;
-  panel_.message = session_.stop_recording();
-  std::printf("clothlab view: %s\n", panel_.message.c_str());
 }
 
 void ViewApp::take_screenshot(const std::string& path, int width, int height) {

@@ -84,6 +84,8 @@ class ViewApp {
   void frame();
   void simulate(double wall_seconds);
   void dispatch(Action action);
+  bool dispatch_view(Action action);
+  void dispatch_session(Action action);
   void draw(int width, int height);
   void toggle_probe(Field field);
   void probe_under_cursor(int width, int height);
