@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "gpu/gpu_step.hpp"
+#include "sim/scene/parameter_keys.hpp"
 #include "sim/solver_impl.hpp"
 #include "vis/gl/gl_error.hpp"
 
@@ -26,7 +27,8 @@ std::unique_ptr<Solver> make_gpu_solver(const Scene& scene) {
 }
 
 std::string cpu_fallback_note(const std::string& why) {
-  return "solver.backend = \"gpu\": " + why + "; the cloth steps on the CPU";
+  const Parameter& backend = *find_parameter(Section::solver, key_of<&SolverSpec::backend>());
+  return parameter_path(backend) + " = \"gpu\": " + why + "; the cloth steps on the CPU";
 }
 
 std::unique_ptr<Solver> make_backend_solver(const Scene& scene, std::string& note) {

@@ -32,9 +32,15 @@ struct AdvanceResult {
   bool ok() const { return !divergence; }
 };
 
-class Solver {
+// The solver's roles, each an interface of its own, so that code asks for only the role it
+// needs: renderers, probes and exporters read the state (SolverState), the window's hand acts on
+// the cloth (SolverInteraction), clocks and benchmarks step it (SolverStepping). A Solver is all
+// three.
+
+// Advancing in simulated time, and what that costs.
+class SolverStepping {
  public:
-  virtual ~Solver() = default;
+  virtual ~SolverStepping() = default;
 
   // Runs every whole step that fits into the time asked for plus the remainder carried from the
   // previous call, and carries the new remainder: calling advance(1/30) thirty times and
@@ -49,6 +55,18 @@ class Solver {
   virtual int substeps() const = 0;           // integrator steps of dt / substeps per step
   virtual SolveStats last_solve() const = 0;  // the integrator's last substep
   virtual const SolveTotals& solve_totals() const = 0;
+
+  virtual void set_threads(int threads) = 0;  // 0 = all cores
+  virtual int threads() const = 0;
+  virtual void reset() = 0;  // back to the built state at t = 0, pins held again
+};
+
+// The state and what is computed from it, for renderers, probes, traces and checks.
+// (Read-only views: vis/ reads the state, never changes the physics.)
+class SolverState {
+ public:
+  virtual ~SolverState() = default;
+
   virtual std::size_t vertex_count() const = 0;
   virtual std::size_t spring_count() const = 0;
   virtual int vertex_index(const VertexRef& v) const = 0;
@@ -67,12 +85,6 @@ class Solver {
   virtual ForceSource force_field_source() const = 0;
   virtual Energy energy() = 0;
 
-  // A push (the window's P key): adds momentum `impulse` (N*s) to the free vertices within
-  // `radius` of `center`, weighted by (1 - r^2/R^2)^2 and normalised so the total momentum
-  // change is exactly `impulse`; with no free vertex in reach the nearest free vertex takes it.
-  virtual void apply_impulse(const Vec3d& center, double radius, const Vec3d& impulse) = 0;
-
-  // Read-only views for renderers and exporters (vis/ reads the state, never changes physics).
   virtual void copy_positions(float* xyz) const = 0;       // 3 floats per vertex
   virtual void copy_rest_positions(float* xyz) const = 0;  // the built positions
   virtual void copy_normals(float* xyz) = 0;  // unit area-weighted normals of the current state
@@ -80,13 +92,24 @@ class Solver {
   virtual std::vector<std::array<int, 2>> spring_pairs() const = 0;  // every spring once
   virtual const std::vector<ClothRange>& cloths() const = 0;
   virtual void copy_velocities(float* xyz) const = 0;
-  // Takes over another solver's positions, velocities, time and step count (same vertex
-  // count), e.g. when a view changes a parameter without restarting the motion.
-  virtual void load_state(const Solver& other) = 0;
+  // The collision response of the last substep (zero without colliders).
+  virtual ContactStats last_contacts() const = 0;
+  // Where the state lives in device buffers (the GPU backend): the renderer draws from them.
+  // Null on the CPU.
+  virtual DeviceCloth* device_cloth() const = 0;
+};
 
-  virtual void set_threads(int threads) = 0;  // 0 = all cores
-  virtual int threads() const = 0;
-  virtual void reset() = 0;  // back to the built state at t = 0, pins held again
+class Solver;
+
+// What a user does to the cloth: push it, drop it, pull it, or hand it another solver's motion.
+class SolverInteraction {
+ public:
+  virtual ~SolverInteraction() = default;
+
+  // A push (the window's P key): adds momentum `impulse` (N*s) to the free vertices within
+  // `radius` of `center`, weighted by (1 - r^2/R^2)^2 and normalised so the total momentum
+  // change is exactly `impulse`; with no free vertex in reach the nearest free vertex takes it.
+  virtual void apply_impulse(const Vec3d& center, double radius, const Vec3d& impulse) = 0;
   // Lets every cloth go of its pins now (the window's D: drop onto the colliders below); a
   // cloth with release_at lets go by itself at that time. reset() pins them again.
   virtual void release_pins() = 0;
@@ -98,15 +121,19 @@ class Solver {
   virtual bool grab(int vertex, const Vec3d& target) = 0;
   virtual void release_grab() = 0;
   virtual std::optional<int> grabbed() const = 0;
-  // The collision response of the last substep (zero without colliders).
-  virtual ContactStats last_contacts() const = 0;
-  // Where the state lives in device buffers (the GPU backend): the renderer draws from them.
-  // Null on the CPU.
-  virtual DeviceCloth* device_cloth() const = 0;
+  // Takes over another solver's positions, velocities, time and step count (same vertex
+  // count), e.g. when a view changes a parameter without restarting the motion.
+  virtual void load_state(const Solver& other) = 0;
+};
+
+// Built from a validated, loaded Scene; every role in one object.
+class Solver : public SolverStepping, public SolverState, public SolverInteraction {
+ public:
+  ~Solver() override = default;
 };
 
 // "GPU" when `solver` steps on the GPU backend, else "CPU".
-inline const char* backend_name(const Solver& solver) {
+inline const char* backend_name(const SolverState& solver) {
   return solver.device_cloth() ? "GPU" : "CPU";
 }
 

@@ -1,5 +1,7 @@
 #include "bench/suites/lab_scenes.hpp"
 
+#include "sim/scene/parameter_keys.hpp"
+
 namespace clothlab::bench {
 
 namespace {
@@ -25,7 +27,7 @@ Scene hanging_sheet(const SheetParams& p, IntegratorKind integrator, double dt) 
   c.v_axis = {0.0, 0.0, 1.0};
   c.mass = p.mass;
   c.pins = {{0, 0}, {p.resolution - 1, 0}};
-  c.key = "cloth";
+  c.key = key_of<&Scene::cloths>();
   s.cloths.push_back(c);
   s.springs.stiffness = p.stiffness;
   s.springs.damping = p.damping;
@@ -42,7 +44,7 @@ Scene steady_flag(IntegratorKind integrator, double dt) {
   c.v_axis = {0.0, -1.0, 0.0};
   c.mass = 0.2;
   for (int j = 0; j < 16; ++j) c.pins.push_back({0, j});
-  c.key = "cloth";
+  c.key = key_of<&Scene::cloths>();
   s.cloths.push_back(c);
   s.springs.stiffness = 1000.0;
   s.springs.damping = 0.05;
@@ -62,7 +64,7 @@ Scene single_spring(IntegratorKind integrator, double dt) {
   c.v_axis = {0.0, -1.0, 0.0};
   c.mass = 0.2;
   c.pins = {{0, 0}};
-  c.key = "cloth";
+  c.key = key_of<&Scene::cloths>();
   s.cloths.push_back(c);
   s.springs.stiffness = 100.0;
   s.springs.damping = 0.0;

@@ -38,8 +38,8 @@ MeshSpec mesh(MeshKind kind, Vec3d centre, double radius, Vec3d colour) {
 std::vector<Table> rendering_suite(const SuiteOptions& o) {
   const int width = o.quick ? 320 : 1280, height = o.quick ? 240 : 720;
   const int rounds = o.quick ? 1 : 5, frames = o.quick ? 1 : 3;
-  Scene scene =
-      read_scene_file(CLOTHLAB_DEFAULT_SCENE, {"solver.threads=" + std::to_string(o.threads)});
+  Scene scene = read_scene_file(CLOTHLAB_DEFAULT_SCENE);
+  scene.solver.threads = o.threads;
   scene.render.meshes = {mesh(MeshKind::sphere, {-1.4, 0.4, 0.8}, 0.4, {0.8, 0.3, 0.2}),
                          mesh(MeshKind::box, {1.5, 0.3, 0.6}, 0.3, {0.3, 0.5, 0.8}),
                          mesh(MeshKind::torus_knot, {0.0, 0.5, 1.4}, 0.45, {0.85, 0.75, 0.3})};

@@ -15,6 +15,7 @@
 
 #include "bench/suites/suites.hpp"
 #include "load/scene_load.hpp"
+#include "sim/scene/validate.hpp"
 #include "sim/solver.hpp"
 #include "vis/gl/gl.hpp"
 #include "vis/render/headless_renderer.hpp"
@@ -39,14 +40,16 @@ struct Series {
 
 constexpr double kAgainLimit = 0.05;  // "all off again" within 5 % of "all off"
 
+// The default scene on `threads` threads at res x res, its top corners still pinned.
 Scene default_scene(int res, int threads) {
-  std::vector<std::string> overrides = {"solver.threads=" + std::to_string(threads)};
+  Scene scene = read_scene_file(CLOTHLAB_DEFAULT_SCENE);
+  scene.solver.threads = threads;
   if (res != 32) {
-    const std::string r = std::to_string(res), last = std::to_string(res - 1);
-    overrides.push_back("cloth.resolution=[" + r + "," + r + "]");
-    overrides.push_back("cloth.pins=[[0,0],[" + last + ",0]]");
+    scene.cloths[0].resolution = {res, res};
+    scene.cloths[0].pins = {{0, 0}, {res - 1, 0}};
   }
-  return read_scene_file(CLOTHLAB_DEFAULT_SCENE, overrides);
+  validate_scene(scene);
+  return scene;
 }
 
 std::vector<Variant> view_variants() {

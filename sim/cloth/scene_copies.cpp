@@ -1,6 +1,7 @@
 #include "sim/cloth/scene_copies.hpp"
 
 #include "sim/cloth/build_cloth.hpp"
+#include "sim/scene/parameter_keys.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +20,9 @@ Vec3d plus(const Vec3d& a, const Vec3d& b) {
 std::string copies_unsupported_reason(const Scene& scene) {
   if (scene.mannequin) return "the mannequin is one body: a scene with a mannequin is not copied";
   for (const ClothSpec& c : scene.cloths)
-    if (c.pins_follow) return c.key + ".pins_follow: a cloth whose pins follow a collider";
+    if (c.pins_follow)
+      return c.key + "." + std::string(key_of<&ClothSpec::pins_follow>()) +
+             ": a cloth whose pins follow a collider";
   return {};
 }
 

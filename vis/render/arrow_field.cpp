@@ -23,7 +23,7 @@ std::vector<int> sampled(int n, int stride) {
 
 }  // namespace
 
-int arrow_stride(const Solver& solver, int stride) {
+int arrow_stride(const SolverState& solver, int stride) {
   if (stride > 0) return stride;
   int s = 1;
   for (const ClothRange& c : solver.cloths()) {
@@ -35,7 +35,7 @@ int arrow_stride(const Solver& solver, int stride) {
   return s;
 }
 
-ArrowLayout arrow_layout(const Solver& solver, int stride) {
+ArrowLayout arrow_layout(const SolverState& solver, int stride) {
   ArrowLayout layout;
   layout.stride = arrow_stride(solver, stride);
   std::vector<float> rest(3 * solver.vertex_count());
@@ -71,7 +71,7 @@ ArrowLayout arrow_layout(const Solver& solver, int stride) {
   return layout;
 }
 
-ScalarRange arrow_range(const Solver& solver, const ArrowLayout& layout,
+ScalarRange arrow_range(const SolverState& solver, const ArrowLayout& layout,
                         const std::vector<float>& vectors, RangeMode mode, ScalarRange fixed) {
   if (mode == RangeMode::fixed && fixed.max > fixed.min) return fixed;
   double top = 0.0;

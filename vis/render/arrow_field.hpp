@@ -9,7 +9,7 @@
 #include "vis/render/view_settings.hpp"
 
 namespace clothlab {
-class Solver;
+class SolverState;
 }
 
 namespace clothlab::vis {
@@ -33,17 +33,17 @@ struct ArrowLayout {
 
 // The stride `stride` > 0 asks for, or (0) the smallest one that keeps both sides of every
 // grid cloth at or below kAutoArrowsPerSide arrows.
-int arrow_stride(const Solver& solver, int stride);
+int arrow_stride(const SolverState& solver, int stride);
 // Every stride-th vertex along i and j of each cloth, starting at (0, 0), plus the last row and
 // column so the free edges show.
-ArrowLayout arrow_layout(const Solver& solver, int stride);
+ArrowLayout arrow_layout(const SolverState& solver, int stride);
 
 // The range force arrows are sized and coloured by: [0, largest magnitude over the shown free
 // vertices] (automatic and symmetric: magnitudes are never negative), or `fixed`. Pinned
 // vertices are left out of the automatic range: their force is the support's reaction, often
 // a hundred times the rest, which would shrink every other arrow to nothing; their arrows
 // saturate at the longest length instead. Never empty.
-ScalarRange arrow_range(const Solver& solver, const ArrowLayout& layout,
+ScalarRange arrow_range(const SolverState& solver, const ArrowLayout& layout,
                         const std::vector<float>& vectors, RangeMode mode, ScalarRange fixed);
 
 // Length of a force arrow of magnitude m for the longest length `max_length` at range.max:

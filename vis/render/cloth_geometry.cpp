@@ -13,7 +13,7 @@
 
 namespace clothlab::vis {
 
-void ClothGeometry::build(const Solver& solver) {
+void ClothGeometry::build(const SolverState& solver) {
   layout_ = make_cloth_layout(solver);
   const std::size_t rn = layout_.render_vertices();
   triangle_indices_ = static_cast<GLsizei>(layout_.triangles.size());
@@ -60,7 +60,7 @@ void ClothGeometry::make_vertex_arrays() {
   glVertexArrayElementBuffer(line_vao_.get(), line_ebo_.get());
 }
 
-void ClothGeometry::update(Solver& solver) {
+void ClothGeometry::update(SolverState& solver) {
   DeviceCloth* device = solver.device_cloth();  // the GPU backend's buffers, or null
   device_ = device;
   solver.copy_positions(staging_.data());

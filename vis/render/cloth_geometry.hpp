@@ -16,7 +16,7 @@
 
 namespace clothlab {
 class DeviceCloth;
-class Solver;
+class SolverState;
 }  // namespace clothlab
 
 namespace clothlab::vis {
@@ -24,10 +24,10 @@ namespace clothlab::vis {
 class ClothGeometry {
  public:
   // (Re)builds every buffer for `solver`'s cloths (after building or resizing the solver).
-  void build(const Solver& solver);
+  void build(const SolverState& solver);
   // The current positions and smooth normals into the vertex buffer, in place, and the box
   // around the positions (the light's frustum follows the cloth).
-  void update(Solver& solver);
+  void update(SolverState& solver);
   // The colour-by scalar, one per solver vertex.
   void set_scalars(const std::vector<float>& values);
   // The tangent frame of the last update(), computed only when a mode needs it.

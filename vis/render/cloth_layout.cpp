@@ -135,7 +135,7 @@ void set_triangles(ClothLayout& l, const std::vector<std::array<int, 3>>& solver
 
 }  // namespace
 
-ClothLayout make_cloth_layout(const Solver& solver) {
+ClothLayout make_cloth_layout(const SolverState& solver) {
   ClothLayout l;
   l.vertices = solver.vertex_count();
   l.cloths = solver.cloths();

@@ -13,7 +13,7 @@
 #include "sim/model/model.hpp"
 
 namespace clothlab {
-class Solver;
+class SolverState;
 }  // namespace clothlab
 
 namespace clothlab::vis {
@@ -36,6 +36,6 @@ struct ClothLayout {
   std::size_t render_vertices() const { return vertices + seam_copies.size(); }
 };
 
-ClothLayout make_cloth_layout(const Solver& solver);
+ClothLayout make_cloth_layout(const SolverState& solver);
 
 }  // namespace clothlab::vis

@@ -25,7 +25,7 @@ class HeadlessRenderer {
   HeadlessRenderer(int width, int height);
   ~HeadlessRenderer();
 
-  void set_cloth(Solver& solver) {
+  void set_cloth(const SolverState& solver) {
     renderer_.set_cloth(solver);
     diagnostics_.set_cloth();
   }

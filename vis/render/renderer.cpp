@@ -75,7 +75,7 @@ void Renderer::set_scene(const RenderSpec& spec, const Solver& solver,
   colliders_->set_colliders(colliders, solver);
 }
 
-void Renderer::set_cloth(Solver& solver) {
+void Renderer::set_cloth(const SolverState& solver) {
   cloth_.build(solver);
 }
 

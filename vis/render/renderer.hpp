@@ -23,6 +23,7 @@
 
 namespace clothlab {
 class Solver;
+class SolverState;
 struct Image;
 }  // namespace clothlab
 
@@ -41,7 +42,7 @@ class Renderer {
 
   // (Re)builds the cloth's static buffers: UVs, rest positions, triangle and spring indices.
   // Call after building or resizing the solver.
-  void set_cloth(Solver& solver);
+  void set_cloth(const SolverState& solver);
   // (Re)builds the scenery of the scene's [render] table (the pole from the solver's pins and
   // the extra meshes) and of its [[colliders]] (vis/render/collider_scenery.hpp; a horizontal
   // plane is the floor, which scene_view() places). Call after set_cloth.

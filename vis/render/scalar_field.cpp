@@ -49,7 +49,7 @@ std::optional<ScalarField> parse_scalar_field(std::string_view name) {
   return std::nullopt;
 }
 
-ScalarFieldSampler::ScalarFieldSampler(const Solver& solver)
+ScalarFieldSampler::ScalarFieldSampler(const SolverState& solver)
     : springs_(solver.spring_pairs()),
       rest_length_(springs_.size()),
       inv_degree_(solver.vertex_count(), 0.0f),
@@ -66,7 +66,7 @@ ScalarFieldSampler::ScalarFieldSampler(const Solver& solver)
   for (float& d : inv_degree_) d = d > 0.0f ? 1.0f / d : 0.0f;
 }
 
-void ScalarFieldSampler::compute(Solver& solver, ScalarField field, ForceSource source,
+void ScalarFieldSampler::compute(SolverState& solver, ScalarField field, ForceSource source,
                                  std::vector<float>& out) {
   const std::size_t n = solver.vertex_count();
   out.resize(n);

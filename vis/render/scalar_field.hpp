@@ -11,7 +11,7 @@
 #include "vis/render/view_settings.hpp"
 
 namespace clothlab {
-class Solver;
+class SolverState;
 }
 
 namespace clothlab::vis {
@@ -27,12 +27,12 @@ bool scalar_field_signed(ScalarField field);
 // change it); compute() never allocates once `out` has the vertex count.
 class ScalarFieldSampler {
  public:
-  explicit ScalarFieldSampler(const Solver& solver);
+  explicit ScalarFieldSampler(const SolverState& solver);
 
   // |force| (of `source`, after solver.update_force_field(source)), |velocity|, strain or height
   // (world y). Strain at a vertex is the mean engineering strain (l - l0) / l0 of the springs
   // that end there, l0 the spring's built length (the seed rule's rest length).
-  void compute(Solver& solver, ScalarField field, ForceSource source, std::vector<float>& out);
+  void compute(SolverState& solver, ScalarField field, ForceSource source, std::vector<float>& out);
 
  private:
   std::vector<std::array<int, 2>> springs_;

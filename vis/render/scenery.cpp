@@ -49,7 +49,7 @@ void Scenery::add(const Mesh& mesh, const glm::mat4& model, glm::vec3 color) {
   objects_.push_back({upload_mesh(mesh), model, color});
 }
 
-void Scenery::set_scene(const RenderSpec& spec, const Solver& solver) {
+void Scenery::set_scene(const RenderSpec& spec, const SolverState& solver) {
   objects_.clear();
   if (spec.pole.enabled) {
     std::vector<float> rest(3 * solver.vertex_count());

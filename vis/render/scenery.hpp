@@ -11,7 +11,7 @@
 #include "vis/render/gpu_mesh.hpp"
 
 namespace clothlab {
-class Solver;
+class SolverState;
 }
 
 namespace clothlab::vis {
@@ -25,7 +25,7 @@ class Scenery {
 
   // Builds the pole (from the solver's pinned vertices at rest, when at least two of a cloth's
   // pins lie on a line) and the meshes of `spec`.
-  void set_scene(const RenderSpec& spec, const Solver& solver);
+  void set_scene(const RenderSpec& spec, const SolverState& solver);
   // Main pass (the Frame block and the shadow map bound).
   void draw() const;
   void draw_shadow(ShadowPass& pass) const;

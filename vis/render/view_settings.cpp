@@ -70,7 +70,7 @@ void frame_box(ViewSettings& s, glm::vec3 lo, glm::vec3 hi) {
   s.floor_tile_size = std::max(2.0f, 1.5f * radius);    // 4 x 4 stone tiles per repeat
 }
 
-void cloth_bounds(const Solver& solver, glm::vec3& lo, glm::vec3& hi) {
+void cloth_bounds(const SolverState& solver, glm::vec3& lo, glm::vec3& hi) {
   std::vector<float> xyz(3 * solver.vertex_count());
   solver.copy_positions(xyz.data());
   lo = glm::vec3(INFINITY);
@@ -84,7 +84,7 @@ void cloth_bounds(const Solver& solver, glm::vec3& lo, glm::vec3& hi) {
 
 }  // namespace
 
-ViewSettings default_view(const Solver& solver) {
+ViewSettings default_view(const SolverState& solver) {
   ViewSettings s;
   glm::vec3 lo, hi;
   cloth_bounds(solver, lo, hi);
@@ -92,7 +92,7 @@ ViewSettings default_view(const Solver& solver) {
   return s;
 }
 
-ViewSettings scene_view(const Scene& scene, const Solver& solver) {
+ViewSettings scene_view(const Scene& scene, const SolverState& solver) {
   ViewSettings s = default_view(solver);
   // The cloth lands on its colliders: frame them too (where they are at t = 0; planes have no
   // bounds and are left out).

@@ -12,7 +12,7 @@
 #include "vis/colormap/colormap.hpp"
 
 namespace clothlab {
-class Solver;
+class SolverState;
 struct Scene;
 }  // namespace clothlab
 
@@ -111,11 +111,11 @@ glm::mat4 view_projection(const OrbitCamera& camera, int width, int height);
 
 // Settings framing the solver's cloth: camera on its bounding box, floor below its lowest point
 // (at 0 when the cloth is above 0), light above and in front.
-ViewSettings default_view(const Solver& solver);
+ViewSettings default_view(const SolverState& solver);
 
 // default_view with the scene's [render] choices: display mode, shadows, light, sky; framing the
 // colliders (other than planes) as well as the cloth, and the floor at the height of a ground
 // plane collider where the scene has one (floor_collider.hpp).
-ViewSettings scene_view(const Scene& scene, const Solver& solver);
+ViewSettings scene_view(const Scene& scene, const SolverState& solver);
 
 }  // namespace clothlab::vis

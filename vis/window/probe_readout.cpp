@@ -10,7 +10,7 @@ const char* unit_of(Field field) {
   return field == Field::force ? "N" : field == Field::velocity ? "m/s" : "m";
 }
 
-std::string vertex_name(const Solver& solver, int vertex) {
+std::string vertex_name(const SolverState& solver, int vertex) {
   const VertexRef ref = solver.vertex_ref(vertex);
   char name[64];
   if (solver.cloths().size() > 1)
@@ -22,7 +22,7 @@ std::string vertex_name(const Solver& solver, int vertex) {
 
 }  // namespace
 
-ProbeReadout probe_readout(Field field, Solver& solver, const std::optional<ProbeSample>& s,
+ProbeReadout probe_readout(Field field, SolverState& solver, const std::optional<ProbeSample>& s,
                            int vertex, bool pinned, int px, int py) {
   const char* name = field_name(field);
   const char* unit = unit_of(field);

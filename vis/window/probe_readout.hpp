@@ -19,7 +19,8 @@ struct ProbeReadout {
 
 // `sample`: the field pass's reading at pixel (px, py), or none (off the cloth, or a pinned
 // vertex hidden); `vertex`: the vertex the readout names (>= 0); `pinned`: the probe follows it.
-ProbeReadout probe_readout(Field field, Solver& solver, const std::optional<ProbeSample>& sample,
-                           int vertex, bool pinned, int px, int py);
+ProbeReadout probe_readout(Field field, SolverState& solver,
+                           const std::optional<ProbeSample>& sample, int vertex, bool pinned,
+                           int px, int py);
 
 }  // namespace clothlab::vis
