@@ -53,7 +53,7 @@ struct ColliderSpec {
   std::string file;                          // mesh: OBJ path (relative to the scene file's folder)
   double scale = 1.0;                        // mesh: applied to the OBJ's coordinates
   int sdf_resolution = 64;                   // mesh: distance-grid cells along its longest side
-  std::shared_ptr<const TriangleMesh> mesh;  // mesh: read by the parser (closed surface)
+  std::shared_ptr<const TriangleMesh> mesh;  // mesh: read by the load step (closed surface)
   double static_friction = 0.6;              // Coulomb: sticks while |v_t| <= mu_s dv_n
   double kinetic_friction = 0.4;             // Coulomb: sliding loses mu_k dv_n
   double thickness = 0.005;                  // m: the cloth stays this far outside

@@ -57,7 +57,7 @@ struct MeshSpec {
   std::string file;
   double scale = 1.0;
   bool smooth = false;
-  std::shared_ptr<const TriangleMesh> obj;  // read by the parser
+  std::shared_ptr<const TriangleMesh> obj;  // read by the load step (load/)
   std::string key;                          // "render.meshes[2]", for messages
 };
 

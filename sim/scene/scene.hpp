@@ -55,7 +55,7 @@ struct ClothSpec {
   std::string file;
   double scale = 1.0;
   Vec3d rotation{0.0, 0.0, 0.0};
-  std::shared_ptr<const TriangleMesh> mesh;  // read by the parser
+  std::shared_ptr<const TriangleMesh> mesh;  // read by the load step (load/)
   std::string key;                           // key path prefix for messages: "cloth" or "cloth[1]"
 };
 
@@ -137,7 +137,7 @@ struct TraceSpec {
 struct MusicTrack;
 
 // [music]: what the mannequin dances to (issue 9). A sound file, or without one the project's own
-// drum track at `tempo`; decoded and analysed by the parser.
+// drum track at `tempo`; decoded and analysed by the load step (load/).
 struct MusicSpec {
   std::string file;       // relative to the scene file; empty: the generated track
   double tempo = 120.0;   // BPM of the generated track

@@ -78,10 +78,6 @@ bool edit_section(Section section, void* object, IntegratorKind integrator, cons
       case Widget::input:
         edited |= input(p, p.address(object));
         break;
-      case Widget::checkbox:
-        edited |=
-            committed(ImGui::Checkbox(label(p).c_str(), static_cast<bool*>(p.address(object))));
-        break;
       case Widget::combo:
         edited |= combo(p, object);
         break;
