@@ -130,7 +130,7 @@ endforeach()
 clothlab_cli_test(trace.auto_dt 0 "steps of 0\\.00043 s \\(auto\\)"
   trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.05 --out ${CLOTHLAB_TRACE_OUT}/auto.csv
   --set solver.integrator=verlet)
-foreach(kind implicit_euler xpbd local_global)
+foreach(kind implicit_euler xpbd local_global vbd bdf2)
   clothlab_cli_test(trace.large_step.${kind} 0
     "trace: 0\\.5 s simulated .*solver: [0-9.e+]+ iterations per substep"
     trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.5 --out ${CLOTHLAB_TRACE_OUT}/${kind}.csv

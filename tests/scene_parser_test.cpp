@@ -404,7 +404,7 @@ TEST(SceneParser, ObjSceneryIsReadWithTheScene) {
 TEST(SceneParser, UnknownIntegratorListsValidNames) {
   expect_error(kMinimal + "integrator = \"leapfrog\"\n", "solver.integrator", 9,
                "unknown integrator \"leapfrog\" (valid: explicit_euler, symplectic_euler, "
-               "seed_hack, verlet, rk4, implicit_euler, xpbd, local_global)");
+               "seed_hack, verlet, rk4, implicit_euler, xpbd, local_global, vbd, bdf2)");
 }
 
 TEST(SceneParser, FileErrors) {

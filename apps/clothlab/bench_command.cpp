@@ -12,6 +12,7 @@ namespace {
 
 std::vector<bench::Table> run_suite(const std::string& name, const bench::SuiteOptions& o) {
   if (name == "accuracy") return bench::accuracy_suite(o);
+  if (name == "largestep") return bench::large_step_suite(o);
   if (name == "stability") return bench::stability_suite(o);
   if (name == "scaling") return bench::scaling_suite(o);
   if (name == "views") return bench::views_suite(o);

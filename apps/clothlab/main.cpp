@@ -8,6 +8,7 @@
 #include <string>
 
 #include "apps/clothlab/commands.hpp"
+#include "bench/suites/suites.hpp"
 
 namespace {
 
@@ -185,11 +186,12 @@ CLI::App* add_bench(CLI::App& app, BenchArgs& bench) {
   auto* bench_cmd = app.add_subcommand(
       "bench",
       "run time against error, stability, scaling, feature, view and render costs (tables + CSV)");
-  bench_cmd
-      ->add_option("--suite", bench.suite,
-                   "accuracy, stability, scaling, features, views, rendering, backends or all")
-      ->check(CLI::IsMember({"accuracy", "stability", "scaling", "features", "views", "rendering",
-                             "backends", "all"}));
+  std::vector<std::string> suites(std::begin(clothlab::bench::kSuiteNames),
+                                  std::end(clothlab::bench::kSuiteNames));
+  std::string listed;
+  for (const std::string& name : suites) listed += name + ", ";
+  suites.push_back("all");
+  bench_cmd->add_option("--suite", bench.suite, listed + "or all")->check(CLI::IsMember(suites));
   bench_cmd->add_option("--out", bench.out,
                         "CSV file (one suite) or directory (all); default out/bench/SUITE.csv");
   bench_cmd->add_flag("--quick", bench.quick, "reduced sweeps (seconds instead of minutes)");

@@ -19,6 +19,8 @@ struct SuiteOptions {
 
 std::vector<Table> accuracy_suite(const SuiteOptions& options);
 std::vector<Table> stability_suite(const SuiteOptions& options);
+// The large-step methods at 1/60 s against RK4 over a stiffness sweep, and a 256 x 256 frame.
+std::vector<Table> large_step_suite(const SuiteOptions& options);
 std::vector<Table> scaling_suite(const SuiteOptions& options);
 std::vector<Table> features_suite(const SuiteOptions& options);
 // Needs EGL / OpenGL 4.5 (throws vis::GlUnavailable without): headless rendering.
@@ -27,7 +29,7 @@ std::vector<Table> rendering_suite(const SuiteOptions& options);
 // Needs EGL / OpenGL 4.3 compute: the CPU solver against the GPU compute backend.
 std::vector<Table> backends_suite(const SuiteOptions& options);
 
-inline constexpr const char* kSuiteNames[] = {"accuracy", "stability", "scaling", "features",
-                                              "views",    "rendering", "backends"};
+inline constexpr const char* kSuiteNames[] = {"accuracy", "largestep", "stability", "scaling",
+                                              "features", "views",     "rendering", "backends"};
 
 }  // namespace clothlab::bench

@@ -96,16 +96,17 @@ template <class T>
 void ContactResponse<T>::begin(const State<T>& s, double t, double h, int threads) {
   if (colliders_.empty()) return;
   // The cheap test first: the cloth's box now, grown by twice the fastest vertex's move over the
-  // next kWindow substeps and a centimetre (no spring accelerates a vertex that far meanwhile),
-  // against every collider over those substeps. When nothing can be reached, the answer holds
-  // for the whole window: no start is kept, respond() does nothing, and a collider far from the
-  // cloth costs one pass over the state every kWindow substeps.
+  // next window_substeps(h) substeps and a centimetre (no spring accelerates a vertex that far
+  // meanwhile), against every collider over those substeps. When nothing can be reached, the answer
+  // holds for the whole window: no start is kept, respond() does nothing, and a collider far from
+  // the cloth costs one pass over the state every kWindow substeps.
   if (!active_ && quiet_substeps_ > 0) {
     --quiet_substeps_;
     return;
   }
   active_ = false;
-  const double window = kWindow * h;
+  const int substeps = window_substeps(h);
+  const double window = substeps * h;
   const std::size_t n = s.pos.size();
   T lo[3], hi[3], speed2 = T(0);
   for (int a = 0; a < 3; ++a) {
@@ -146,7 +147,7 @@ void ContactResponse<T>::begin(const State<T>& s, double t, double h, int thread
     if (collider.spec().kind != ColliderKind::plane) active_ = active_ || cloth.overlaps(swept);
   }
   if (!active_) {
-    quiet_substeps_ = kWindow - 1;
+    quiet_substeps_ = substeps - 1;
     return;
   }
   for_each_block(n, threads, [&](std::size_t b, std::size_t e) {

@@ -21,6 +21,10 @@ std::unique_ptr<Integrator<T>> make_integrator(const Model<T>& m, const SolverSp
       return make_xpbd<T>(m, spec);
     case IntegratorKind::local_global:
       return make_local_global<T>(m, spec);
+    case IntegratorKind::vbd:
+      return make_vbd<T>(m, spec);
+    case IntegratorKind::bdf2:
+      return make_bdf2<T>(m, spec);
   }
   return nullptr;
 }

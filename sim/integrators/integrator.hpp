@@ -71,6 +71,10 @@ template <class T>
 std::unique_ptr<Integrator<T>> make_xpbd(const Model<T>& m, const SolverSpec& spec);
 template <class T>
 std::unique_ptr<Integrator<T>> make_local_global(const Model<T>& m, const SolverSpec& spec);
+template <class T>
+std::unique_ptr<Integrator<T>> make_vbd(const Model<T>& m, const SolverSpec& spec);
+template <class T>
+std::unique_ptr<Integrator<T>> make_bdf2(const Model<T>& m, const SolverSpec& spec);
 
 }  // namespace clothlab
 

@@ -24,6 +24,8 @@ constexpr double kInf = Range::kInf;
 
 constexpr std::array<std::pair<Precision, const char*>, 2> kPrecisionNames{
     {{Precision::f32, "float"}, {Precision::f64, "double"}}};
+constexpr std::array<std::pair<StepSolver, const char*>, 2> kStepSolverNames{
+    {{StepSolver::newton, "newton"}, {StepSolver::vbd, "vbd"}}};
 constexpr std::array<std::pair<Backend, const char*>, 2> kBackendNames{
     {{Backend::cpu, "cpu"}, {Backend::gpu, "gpu"}}};
 
@@ -246,22 +248,45 @@ std::vector<Parameter> solver() {
            .range = between(0, 100000),
            .range_text = "between 0 (the method's default) and 100000",
            .fallback = "0",
-           .only_for = "xpbd, local_global",
+           .only_for = "xpbd, local_global, vbd, bdf2",
            .widget = W::input,
-           .description =
-               "xpbd: sweeps per substep (1); local_global: per step (10); 0 = default"}),
+           .description = "xpbd: sweeps per substep (1); local_global: per step (10); vbd and bdf2 "
+                          "with bdf2_solver = vbd: per step (30); 0 = default"}),
       row<&SolverSpec::cg_tolerance>(
           {.name = "cg_tolerance",
            .range = {0.0, 1.0, true, true},
            .fallback = "1e-6",
-           .only_for = "implicit_euler",
+           .only_for = "implicit_euler, bdf2",
            .widget = W::log_slider,
            .ui = between(1e-10, 1e-1),
            .description = "PCG stops at relative residual |r| / |b| below this"}),
+      row<&SolverSpec::newton_iterations>(
+          {.name = "newton_iterations",
+           .range = between(0, 100),
+           .range_text = "between 0 (the method's default) and 100",
+           .fallback = "0",
+           .only_for = "implicit_euler, bdf2",
+           .widget = W::input,
+           .description = "Newton iterations per step at most (8); 1 = Baraff-Witkin's step"}),
+      row<&SolverSpec::newton_tolerance>(
+          {.name = "newton_tolerance",
+           .range = {0.0, 1.0, true, false},
+           .fallback = "0.01",
+           .only_for = "implicit_euler, bdf2",
+           .widget = W::log_slider,
+           .ui = between(1e-6, 0.5),
+           .description = "Newton stops once its correction is below this part of the step's "
+                          "change of velocity (mass-weighted)"}),
+      choice_row<&SolverSpec::bdf2_solver, kStepSolverNames, "bdf2 solver">(
+          {.name = "bdf2_solver",
+           .fallback = "\"newton\"",
+           .only_for = "bdf2",
+           .widget = W::combo,
+           .description = "what solves each bdf2 step: newton (PCG) or vbd (iterations)"}),
       row<&SolverSpec::cg_max_iterations>({.name = "cg_max_iterations",
                                            .range = between(1, 100000),
                                            .fallback = "500",
-                                           .only_for = "implicit_euler",
+                                           .only_for = "implicit_euler, bdf2",
                                            .widget = W::input,
                                            .description = "PCG iteration cap per step"}),
   };

@@ -84,6 +84,8 @@ enum class IntegratorKind {
   implicit_euler,  // linearised backward Euler, Baraff & Witkin 1998, PCG solve
   xpbd,            // extended position-based dynamics, Macklin et al. 2016/2019 (small steps)
   local_global,    // fast mass-spring local/global solve, Liu et al. 2013
+  vbd,             // vertex block descent on backward Euler, Chen et al. 2024
+  bdf2,            // second-order backward differentiation, each step a backward-Euler solve
 };
 inline constexpr IntegratorKind kAllIntegrators[] = {IntegratorKind::explicit_euler,
                                                      IntegratorKind::symplectic_euler,
@@ -92,7 +94,9 @@ inline constexpr IntegratorKind kAllIntegrators[] = {IntegratorKind::explicit_eu
                                                      IntegratorKind::rk4,
                                                      IntegratorKind::implicit_euler,
                                                      IntegratorKind::xpbd,
-                                                     IntegratorKind::local_global};
+                                                     IntegratorKind::local_global,
+                                                     IntegratorKind::vbd,
+                                                     IntegratorKind::bdf2};
 // True for the methods with a step-size stability limit (explicit_euler ... rk4).
 inline bool is_explicit(IntegratorKind k) {
   return k <= IntegratorKind::rk4;
@@ -101,15 +105,21 @@ enum class Precision { f32, f64 };
 
 enum class Backend { cpu, gpu };
 
+// What solves the backward-Euler problem of each bdf2 step.
+enum class StepSolver { newton, vbd };
+
 struct SolverSpec {
   IntegratorKind integrator = IntegratorKind::symplectic_euler;
-  double dt = 0.001;           // s, fixed step, > 0 (ignored when dt_auto)
-  bool dt_auto = false;        // dt = "auto": step and substeps chosen from the highest frequency
-  int substeps = 1;            // integrator steps of dt / substeps per step, >= 1
-  int iterations = 0;          // xpbd: per substep (default 1); local_global: per step (default 10)
-  double cg_tolerance = 1e-6;  // implicit_euler: relative residual |r| / |b| that ends PCG
-  int cg_max_iterations = 500;    // implicit_euler: PCG iteration cap per step
-  int threads = 0;                // 0 = all cores
+  double dt = 0.001;            // s, fixed step, > 0 (ignored when dt_auto)
+  bool dt_auto = false;         // dt = "auto": step and substeps chosen from the highest frequency
+  int substeps = 1;             // integrator steps of dt / substeps per step, >= 1
+  int iterations = 0;           // xpbd: per substep (1); local_global: per step (10); vbd: (30)
+  double cg_tolerance = 1e-6;   // implicit_euler: relative residual |r| / |b| that ends PCG
+  int cg_max_iterations = 500;  // implicit_euler: PCG iteration cap per step
+  int newton_iterations = 0;    // implicit_euler, bdf2: Newton iterations per step at most (0: 8)
+  double newton_tolerance = 0.01;  // implicit_euler, bdf2: stop at |delta v| <= this |v1 - v0|
+  StepSolver bdf2_solver = StepSolver::newton;  // bdf2: newton (PCG) or vbd iterations
+  int threads = 0;                              // 0 = all cores
   bool self_collision = false;    // the cloth keeps its layers apart (sim/contact/self_collision)
   double self_thickness = 0.005;  // m: how far apart two layers stay
   Precision precision = Precision::f32;

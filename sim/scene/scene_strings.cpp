@@ -8,7 +8,7 @@ namespace clothlab {
 
 namespace {
 
-constexpr std::array<std::pair<IntegratorKind, const char*>, 8> kIntegratorNames{{
+constexpr std::array<std::pair<IntegratorKind, const char*>, 10> kIntegratorNames{{
     {IntegratorKind::explicit_euler, "explicit_euler"},
     {IntegratorKind::symplectic_euler, "symplectic_euler"},
     {IntegratorKind::seed_hack, "seed_hack"},
@@ -17,6 +17,8 @@ constexpr std::array<std::pair<IntegratorKind, const char*>, 8> kIntegratorNames
     {IntegratorKind::implicit_euler, "implicit_euler"},
     {IntegratorKind::xpbd, "xpbd"},
     {IntegratorKind::local_global, "local_global"},
+    {IntegratorKind::vbd, "vbd"},
+    {IntegratorKind::bdf2, "bdf2"},
 }};
 
 template <class E, std::size_t N>

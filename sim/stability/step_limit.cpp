@@ -143,6 +143,12 @@ StepChoice choose_step(IntegratorKind kind, const Spectrum& spectrum) {
       c.substeps =
           std::max(1, static_cast<int>(std::ceil(kDisplayStep / (kXpbdSubstepLimits * c.limit))));
       return c;
+    case IntegratorKind::vbd:
+    case IntegratorKind::bdf2:
+      // Vertex block descent is built for one display-rate step per frame (Chen et al. 2024);
+      // BDF2 is second order, so it keeps its accuracy at that step too.
+      c.dt = kDisplayStep;
+      return c;
     default:  // implicit_euler, local_global: unconditionally stable; two steps per frame
       c.dt = kImplicitStep;
       return c;

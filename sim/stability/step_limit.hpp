@@ -29,7 +29,7 @@ struct StepChoice {
 //    fixed multiple of the explicit limit.
 inline constexpr double kAutoSafety = 0.8;
 inline constexpr double kXpbdSubstepLimits = 2.0;     // xpbd substep in explicit limits
-inline constexpr double kImplicitStep = 1.0 / 120.0;  // s, implicit_euler and local_global
+inline constexpr double kImplicitStep = 1.0 / 120.0;  // s, implicit_euler and local_global (vbd, bdf2: 1/60)
 StepChoice choose_step(IntegratorKind kind, const Spectrum& spectrum);
 
 }  // namespace clothlab

@@ -1,0 +1,199 @@
+// `clothlab bench --suite largestep`: the large-step methods at the display step 1/60 s on the
+// accuracy sheet (docs/design.md, "Accuracy benchmark scenes") at stiffness k0 = 1e3, 1e4 and
+// 1e5, against a double-precision RK4 run of the same sheet, next to symplectic Euler at its
+// own automatic step; and one 1/60 s step of vbd on a 256 x 256 sheet against the explicit step
+// there (issue 22's targets; README "Large steps" has the measured tables).
+#include <algorithm>
+#include <cmath>
+#include <ostream>
+
+#include "bench/suites/lab_scenes.hpp"
+#include "bench/suites/suites.hpp"
+#include "sim/solver.hpp"
+
+namespace clothlab::bench {
+
+namespace {
+
+constexpr double kFrame = 1.0 / 60.0;
+
+// One configuration of a method: what the table calls it and how the scene is set.
+struct Variant {
+  IntegratorKind kind;
+  bool dt_auto = false;
+  int substeps = 1;
+  int iterations = 0;   // solver.iterations (xpbd, local_global, vbd)
+  int newton = 0;       // solver.newton_iterations (implicit_euler, bdf2)
+  bool by_vbd = false;  // bdf2: solver.bdf2_solver = "vbd"
+  std::string label() const {
+    std::string s = to_string(kind);
+    if (by_vbd) s += " by vbd";
+    if (dt_auto) s += " auto";
+    if (substeps > 1) s += " x" + std::to_string(substeps);
+    if (iterations > 0) s += " it" + std::to_string(iterations);
+    if (newton > 0) s += " newton" + std::to_string(newton);
+    return s;
+  }
+};
+
+// Each method at its defaults, and the settings around them that show what they cost.
+std::vector<Variant> variants(bool quick) {
+  using K = IntegratorKind;
+  if (quick) return {{K::symplectic_euler, true}, {K::implicit_euler}, {K::bdf2}, {K::vbd}};
+  return {{K::symplectic_euler, true},
+          {K::implicit_euler, false, 1, 0, 1},
+          {K::implicit_euler},
+          {K::bdf2},
+          {K::bdf2, false, 1, 0, 0, true},
+          {K::vbd, false, 1, 10},
+          {K::vbd},
+          {K::vbd, false, 1, 100},
+          {K::xpbd, true},
+          {K::xpbd, false, 10},
+          {K::local_global}};
+}
+
+struct Outcome {
+  std::vector<Vec3d> positions;
+  double cost = NAN;  // wall s per simulated s
+  std::string failure;
+};
+
+Outcome run(const Scene& scene, double horizon) {
+  Outcome o;
+  auto solver = make_solver(scene);
+  Stopwatch clock;
+  const AdvanceResult a = solver->step(std::lround(horizon / solver->dt()));
+  o.cost = clock.seconds() / horizon;
+  if (!a.ok()) o.failure = a.divergence->message();
+  o.positions.resize(solver->vertex_count());
+  for (std::size_t i = 0; i < o.positions.size(); ++i)
+    o.positions[i] = solver->position(static_cast<int>(i));
+  return o;
+}
+
+double rms(const std::vector<Vec3d>& a, const std::vector<Vec3d>& b) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (int c = 0; c < 3; ++c) sum += (a[i][c] - b[i][c]) * (a[i][c] - b[i][c]);
+  return std::sqrt(sum / double(a.size()));
+}
+
+Scene sheet(int resolution, double stiffness, const Variant& v, int threads) {
+  SheetParams p;
+  p.resolution = resolution;
+  p.stiffness = stiffness;
+  Scene s = hanging_sheet(p, v.kind, kFrame);
+  s.solver.dt_auto = v.dt_auto;
+  s.solver.substeps = v.substeps;
+  s.solver.iterations = v.iterations;
+  s.solver.newton_iterations = v.newton;
+  if (v.by_vbd) s.solver.bdf2_solver = StepSolver::vbd;
+  s.solver.threads = threads;
+  return s;
+}
+
+// Median wall time of one step over `steps` steps after `warmup` (ms).
+double ms_per_step(const Scene& scene, int warmup, int steps) {
+  auto solver = make_solver(scene);
+  solver->step(warmup);
+  std::vector<double> times;
+  for (int k = 0; k < steps; ++k) {
+    Stopwatch clock;
+    solver->step(1);
+    times.push_back(1e3 * clock.seconds());
+  }
+  return median(times);
+}
+
+Table frame_table(const SuiteOptions& o) {
+  const int res = o.quick ? 32 : 256;
+  Table t;
+  t.name = "frame";
+  t.title = "One frame (1/60 s) on the " + std::to_string(res) + "x" + std::to_string(res) +
+            " sheet, k0 = 1e3, 2 threads, float";
+  t.columns = {"method",          "dt (s)",       "ms per step",
+               "steps per frame", "ms per frame", "x one explicit step"};
+  const Variant explicit_step{IntegratorKind::symplectic_euler, true};
+  Scene se = sheet(res, 1e3, explicit_step, 2);
+  se.solver.precision = Precision::f32;
+  const double explicit_dt = make_solver(se)->dt();
+  const double e_ms = ms_per_step(se, 5, o.quick ? 5 : 50);
+  const double e_steps = std::ceil(kFrame / explicit_dt);
+  using K = IntegratorKind;
+  for (const Variant& v :
+       {Variant{K::vbd}, Variant{K::vbd, false, 1, 10}, Variant{K::xpbd}, Variant{K::bdf2}}) {
+    Scene sv = sheet(res, 1e3, v, 2);
+    sv.solver.precision = Precision::f32;
+    const double ms = ms_per_step(sv, 2, o.quick ? 3 : 5);
+    t.add({v.label(), num(kFrame), fixed(ms, 3), "1", fixed(ms, 3), fixed(ms / e_ms, 1)});
+    if (o.log) *o.log << "largestep: frame " << v.label() << " " << ms << " ms\n";
+  }
+  t.add({explicit_step.label(), num(explicit_dt), fixed(e_ms, 4), num(e_steps),
+         fixed(e_ms * e_steps, 1), "1"});
+  return t;
+}
+
+}  // namespace
+
+std::vector<Table> large_step_suite(const SuiteOptions& o) {
+  const int res = o.quick ? 12 : 32;
+  const double horizon = o.quick ? 0.1 : 0.5;
+  const double reference_dt = o.quick ? 4e-5 : 1e-5;
+  const std::vector<double> stiffnesses =
+      o.quick ? std::vector<double>{1e3} : std::vector<double>{1e3, 1e4, 1e5};
+  Table data;
+  data.title = "Large steps: RMS distance at t = " + num(horizon) + " s from double RK4 (dt " +
+               num(reference_dt) + " s), " + std::to_string(res) + "x" + std::to_string(res) +
+               " sheet, double, " + std::to_string(o.threads) + " thread(s)";
+  data.columns = {"k0 (N/m)", "method", "dt (s)", "substeps", "rms (m)", "cost (s/s)", "status"};
+  Table summary;
+  summary.name = "summary";
+  summary.title =
+      "Cheapest method within each error level at 1/60 s (cost = wall s per simulated "
+      "s), against symplectic Euler at its own step";
+  summary.columns = {"k0 (N/m)",
+                     "rms level (m)",
+                     "cheapest",
+                     "its rms (m)",
+                     "its cost (s/s)",
+                     "symplectic_euler cost (s/s)",
+                     "cost / symplectic_euler"};
+  for (double k0 : stiffnesses) {
+    Scene rs = sheet(res, k0, {IntegratorKind::rk4}, o.threads);
+    rs.solver.dt = reference_dt;
+    const Outcome reference = run(rs, horizon);
+    if (o.log) *o.log << "largestep: k0 " << k0 << " reference done\n";
+    struct Point {
+      std::string label;
+      double rms, cost;
+    };
+    std::vector<Point> points;
+    double explicit_cost = NAN;
+    for (const Variant& v : variants(o.quick)) {
+      const Scene s = sheet(res, k0, v, o.threads);
+      const Outcome r = run(s, horizon);
+      const double e = r.failure.empty() ? rms(r.positions, reference.positions) : NAN;
+      auto solver = make_solver(s);
+      data.add({num(k0), v.label(), num(solver->dt()), std::to_string(solver->substeps()), num(e),
+                num(r.cost), r.failure.empty() ? "ok" : "diverged: " + r.failure});
+      if (o.log) *o.log << "largestep: k0 " << k0 << " " << v.label() << ": rms " << e << " m\n";
+      if (v.kind == IntegratorKind::symplectic_euler) {
+        explicit_cost = r.cost;
+      } else if (r.failure.empty()) {
+        points.push_back({v.label(), e, r.cost});
+      }
+    }
+    for (double level : {0.025, 0.06}) {
+      const Point* best = nullptr;
+      for (const Point& p : points)
+        if (p.rms <= level && (!best || p.cost < best->cost)) best = &p;
+      summary.add({num(k0), num(level), best ? best->label : "none", best ? num(best->rms) : "-",
+                   best ? num(best->cost) : "-", num(explicit_cost),
+                   best ? fixed(best->cost / explicit_cost, 3) : "-"});
+    }
+  }
+  return {data, summary, frame_table(o)};
+}
+
+}  // namespace clothlab::bench
