@@ -17,6 +17,7 @@
 // 1 / (1 + (h w)^2): BDF2 damps the well-resolved modes far less (tests/bdf2_test.cpp checks
 // the factor over one period).
 #include <memory>
+#include <utility>
 
 #include "sim/core/parallel.hpp"
 #include "sim/integrators/integrator.hpp"

@@ -33,7 +33,6 @@
 // x^(k-2), omega_(S+1) = 2 / (2 - rho^2), omega_k = 4 / (4 - rho^2 omega_(k-1)), rho =
 // kChebyshevRho. Then v_(n+1) = (x - x_n) / h. Pinned vertices keep x and v.
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
