@@ -28,8 +28,9 @@ struct StepChoice {
 //  - large-step methods: a fixed display-rate step, subdivided (xpbd) so that each substep is a
 //    fixed multiple of the explicit limit.
 inline constexpr double kAutoSafety = 0.8;
-inline constexpr double kXpbdSubstepLimits = 2.0;     // xpbd substep in explicit limits
-inline constexpr double kImplicitStep = 1.0 / 120.0;  // s, implicit_euler and local_global (vbd, bdf2: 1/60)
+inline constexpr double kXpbdSubstepLimits = 2.0;  // xpbd substep in explicit limits
+// s: implicit_euler and local_global (vbd and bdf2 take the display step, 1/60 s)
+inline constexpr double kImplicitStep = 1.0 / 120.0;
 StepChoice choose_step(IntegratorKind kind, const Spectrum& spectrum);
 
 }  // namespace clothlab
