@@ -7,14 +7,19 @@
 #include <stdexcept>
 
 #include "sim/body/body_motion.hpp"
+#include "sim/core/parallel.hpp"
 #include "sim/solver_impl.hpp"
 #include "sim/stability/step_limit.hpp"
 
 namespace clothlab {
 namespace {
 
-int resolve_threads(int requested) {
-  return requested > 0 ? requested : omp_get_max_threads();
+// solver.threads = 0 ("auto"): one thread below kParallelMinVertices, where a second thread's
+// wake-up and barriers cost more than it computes (README, "Threads"), else all cores OpenMP
+// offers. An explicit count is used as given.
+int resolve_threads(int requested, std::size_t vertices) {
+  if (requested > 0) return requested;
+  return vertices < kParallelMinVertices ? 1 : omp_get_max_threads();
 }
 
 template <class T>
@@ -68,7 +73,7 @@ SolverT<T>::SolverT(const Scene& scene, SpringKernel kernel)
       spec_(limit_substep_for_body(scene, resolve_step(model_, scene.solver))),
       dt_(spec_.dt),
       substeps_(spec_.substeps),
-      threads_(resolve_threads(scene.solver.threads)),
+      threads_(resolve_threads(scene.solver.threads, model_.n)),
       integrator_(make_integrator<T>(model_, spec_)),
       monitor_(model_, state_, initial_energy(model_)) {
   workspace_.resize(model_);
@@ -319,7 +324,7 @@ void SolverT<T>::copy_normals(float* xyz) {
 
 template <class T>
 void SolverT<T>::set_threads(int threads) {
-  threads_ = resolve_threads(threads);
+  threads_ = resolve_threads(threads, model_.n);
 }
 
 template <class T>

@@ -56,7 +56,7 @@ class SolverStepping {
   virtual SolveStats last_solve() const = 0;  // the integrator's last substep
   virtual const SolveTotals& solve_totals() const = 0;
 
-  virtual void set_threads(int threads) = 0;  // 0 = all cores
+  virtual void set_threads(int threads) = 0;  // 0 = auto (kParallelMinVertices)
   virtual int threads() const = 0;
   virtual void reset() = 0;  // back to the built state at t = 0, pins held again
 };

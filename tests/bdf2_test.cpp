@@ -53,8 +53,8 @@ TEST_P(Bdf2Order, SingleSpringIsSecondOrder) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Bdf2, Bdf2Order, ::testing::Values(StepSolver::newton, StepSolver::vbd),
-                         [](const auto& info) {
-                           return std::string(info.param == StepSolver::vbd ? "vbd" : "newton");
+                         [](const auto& p) {
+                           return std::string(p.param == StepSolver::vbd ? "vbd" : "newton");
                          });
 
 // Oscillation energy about the equilibrium y = -L - A: 1/2 m v^2 + 1/2 k (y + L + A)^2.

@@ -106,6 +106,15 @@ file(MAKE_DIRECTORY ${CLOTHLAB_TRACE_OUT})
 clothlab_cli_test(trace.default 0
   "trace: 0\\.5 s simulated in 1000 steps of 0\\.0005 s \\(auto\\), .* ms/step .*final energy .* J"
   trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.5 --out ${CLOTHLAB_TRACE_OUT}/default.csv)
+# Every command waits passively at OpenMP barriers when the user set no policy (issue 23: with
+# OpenMP's spinning default a loaded machine made a trace 66x slower), and the summary says so;
+# threads = 0 gives the 32x32 default scene one thread (below kParallelMinVertices).
+clothlab_env_test(trace.passive_by_default "--unset=OMP_WAIT_POLICY" 0
+  "\\(symplectic_euler, float, CPU, 1 thread\\(s\\), passive wait, 1024 vertices\\)"
+  trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.01 --out ${CLOTHLAB_TRACE_OUT}/passive.csv)
+clothlab_env_test(trace.user_wait_policy_kept "OMP_WAIT_POLICY=active" 0 "2 thread\\(s\\), active wait"
+  trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.01 --out ${CLOTHLAB_TRACE_OUT}/active.csv
+  --set solver.threads=2)
 clothlab_cli_test(trace.diverges 1
   "diverged at step [0-9]+ \\(t = [0-9.e-]+ s\\): vertex \\(cloth 0, i [0-9]+, j [0-9]+\\), .*replay with: clothlab trace .*--set 'solver.dt=0.002'"
   trace ${CLOTHLAB_DEFAULT_SCENE} --duration 1 --out ${CLOTHLAB_TRACE_OUT}/diverged.csv

@@ -256,7 +256,11 @@ INSTANTIATE_TEST_SUITE_P(DisplayRate, LargeStepDrop,
                          name_of);
 
 // Dropped centred, the drape is as symmetric as the scene: vertex (i, j) mirrors (n-1-i, j)
-// across x = 0 and (i, n-1-j) across z = 0, within 1e-6 m after 1 s.
+// across x = 0 and (i, n-1-j) across z = 0, within 2e-6 m after 1 s. Not exactly: a vertex and its
+// mirror image add their springs' forces in different orders, and contact amplifies the float
+// round-off (1.3e-6 m with the band kernel, which evaluates each spring once; under 1e-6 m with
+// the old row sweep); a broken symmetry (a wrong stencil entry, a lopsided contact) grows from
+// the first contact on, far beyond round-off.
 TEST(Drop, CentredDropDrapesSymmetrically) {
   std::unique_ptr<Solver> s = make_solver(drop(0.0));
   ASSERT_TRUE(s->advance(1.0).ok());
@@ -270,7 +274,7 @@ TEST(Drop, CentredDropDrapesSymmetrically) {
           std::max({worst, std::abs(p[0] + mx[0]), std::abs(p[1] - mx[1]), std::abs(p[2] - mx[2]),
                     std::abs(p[0] - mz[0]), std::abs(p[1] - mz[1]), std::abs(p[2] + mz[2])});
     }
-  EXPECT_LT(worst, 1e-6);
+  EXPECT_LT(worst, 2e-6);
   EXPECT_GT(s->position(n / 2 + n / 2 * n)[1], 0.6) << "the middle rests on the sphere's top";
 }
 

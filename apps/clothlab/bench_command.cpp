@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "apps/clothlab/commands.hpp"
+#include "apps/passive_openmp.hpp"
 #include "bench/suites/suites.hpp"
 
 namespace clothlab::app {
@@ -48,7 +49,8 @@ int run_bench(const BenchArgs& args) {
   options.log = args.verbose ? &std::cerr : nullptr;
   std::cout << "clothlab bench: one-minute load average before the run "
             << bench::fixed(bench::load_average(), 2)
-            << " (the machine's other work; timings are only comparable within one run)\n";
+            << " (the machine's other work; timings are only comparable within one run); OpenMP "
+            << "waits: " << openmp_wait_policy() << "\n";
   try {
     for (const std::string& suite : suites) {
       // One suite: --out is its CSV file. All suites: --out is a directory.

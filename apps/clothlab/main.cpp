@@ -1,5 +1,4 @@
 // clothlab: the command-line entry point. Only wires the command line to the subcommands.
-#include <unistd.h>
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -8,6 +7,7 @@
 #include <string>
 
 #include "apps/clothlab/commands.hpp"
+#include "apps/passive_openmp.hpp"
 #include "bench/suites/suites.hpp"
 
 namespace {
@@ -20,19 +20,6 @@ void add_scene_options(CLI::App& cmd, std::string& scene, std::vector<std::strin
       ->take_last()
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-}
-
-// `render` and `view` share the cores with the GL driver's threads (llvmpipe) and ffmpeg. OpenMP
-// threads that spin at barriers then wait for threads that are not scheduled: measured 970 ms
-// instead of 1 ms per frame of simulation. Waiting threads must sleep instead
-// (OMP_WAIT_POLICY=passive), and libgomp reads that setting when it loads, before main(), so
-// the program re-executes itself once with it set. A policy the user chose is kept.
-void prefer_passive_openmp(int argc, char** argv) {
-  if (argc < 2 || std::getenv("OMP_WAIT_POLICY")) return;
-  const std::string command = argv[1];
-  if (command != "render" && command != "view") return;
-  ::setenv("OMP_WAIT_POLICY", "passive", 1);
-  ::execv("/proc/self/exe", argv);  // returns only on failure: then run as we are
 }
 
 using namespace clothlab::app;
@@ -205,7 +192,7 @@ CLI::App* add_bench(CLI::App& app, BenchArgs& bench) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  prefer_passive_openmp(argc, argv);
+  clothlab::app::prefer_passive_openmp(argv);
   using namespace clothlab::app;
   CLI::App app{"ClothLab: a laboratory for simulating cloth and looking at it scientifically."};
   app.require_subcommand(1);

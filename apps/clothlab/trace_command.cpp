@@ -5,6 +5,7 @@
 #include <string>
 
 #include "apps/clothlab/commands.hpp"
+#include "apps/passive_openmp.hpp"
 #include "gpu/backend_solver.hpp"
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
@@ -63,14 +64,14 @@ int run_trace_command(const TraceArgs& args) {
     std::snprintf(substeps, sizeof substeps, " (%d substeps)", solver->substeps());
   std::printf(
       "trace: %.6g s simulated in %ld steps of %g s%s%s, %.4g ms/step (%s, %s, %s, %d thread(s), "
-      "%zu "
-      "vertices), final energy %.6g J (kinetic %.4g, elastic %.4g, gravity %.6g); wrote %s "
+      "%s wait, %zu vertices), final energy %.6g J (kinetic %.4g, elastic %.4g, gravity %.6g); "
+      "wrote %s "
       "(%ld steps)\n",
       r.simulated_time, r.steps, solver->dt(), scene.solver.dt_auto ? " (auto)" : "", substeps,
       ms_per_step, to_string(scene.solver.integrator), doubles ? "double" : "float",
-      backend_name(*solver), solver->threads(), solver->vertex_count(), r.final_energy.total(),
-      r.final_energy.kinetic, r.final_energy.elastic, r.final_energy.gravity, args.out.c_str(),
-      r.rows);
+      backend_name(*solver), solver->threads(), openmp_wait_policy(), solver->vertex_count(),
+      r.final_energy.total(), r.final_energy.kinetic, r.final_energy.elastic,
+      r.final_energy.gravity, args.out.c_str(), r.rows);
   // The iterative methods' work: PCG iterations (implicit_euler) or sweeps per substep.
   const SolveTotals& t = solver->solve_totals();
   if (t.iterations > 0)

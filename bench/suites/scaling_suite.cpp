@@ -22,10 +22,10 @@ std::size_t heap_in_use() {
 }
 
 // Work of one spring-step of the default step (symplectic Euler, float, damped springs; the
-// row-sweep kernel visits every spring from both ends): counted from
+// band kernel evaluates every spring once and adds it to both ends): counted from
 // sim/forces/grid_spring_forces.hpp, an FMA as 2 flops, sqrt and divide as 1 each.
-constexpr double kFlopsPerVisit = 31.0;  // 19 for Hooke, 12 more for the damping term
-constexpr double kVisitsPerSpring = 2.0;
+constexpr double kFlopsPerVisit = 37.0;  // 19 for Hooke, 12 for the damping term, 6 adds
+constexpr double kVisitsPerSpring = 1.0;
 // Bytes per vertex and step that must come from memory when the arrays do not fit in cache:
 // the force pass reads x, v and m (28 B) and writes f (12 B); the update reads f, v, x and
 // 1/m (40 B) and writes v and x (24 B).

@@ -11,6 +11,10 @@ namespace clothlab {
 // Vertices per block: small enough that a block and its grid neighbours stay in L1/L2.
 inline constexpr std::size_t kBlockSize = 512;
 
+// solver.threads = 0 runs one thread on scenes with fewer vertices: below it a second thread
+// gained nothing on the explicit step (measured with passive waiting, README "Threads").
+inline constexpr std::size_t kParallelMinVertices = 4096;
+
 inline std::size_t block_count(std::size_t n) {
   return (n + kBlockSize - 1) / kBlockSize;
 }
@@ -52,6 +56,19 @@ void for_each_phase_block(int phases, SizeFn&& size, int threads, Fn&& fn) {
       const std::size_t begin = static_cast<std::size_t>(b) * kBlockSize;
       fn(phase, begin, std::min(n, begin + kBlockSize));
     }
+  }
+}
+
+// Calls first(k) for k in [0, count), then, after every first(k) has returned, then(k) for k in
+// [1, count): two parallel loops in one parallel region (one thread wake-up, not two).
+template <class First, class Then>
+void for_each_index_then(int count, int threads, First&& first, Then&& then) {
+#pragma omp parallel num_threads(threads) if (threads > 1 && count > 1)
+  {
+#pragma omp for schedule(static)
+    for (int k = 0; k < count; ++k) first(k);
+#pragma omp for schedule(static)
+    for (int k = 1; k < count; ++k) then(k);
   }
 }
 

@@ -47,26 +47,32 @@ void zero_forces(Vec3Array<T>& f, std::size_t b, std::size_t e) {
   }
 }
 
-// The spring forces over the model's kernel (row sweeps per grid row, or vertex blocks), each
-// row or block first initialised by start(b, e): the body forces for compute_forces, zero for
-// the springs alone. One loop for both, so the force source "springs" is exactly the springs'
-// share of the total.
+// The spring forces over the model's kernel (bands of grid rows, or vertex blocks), each band
+// or block first initialised by start(b, e): the body forces for compute_forces, zero for the
+// springs alone. One loop for both, so the force source "springs" is exactly the springs' share
+// of the total.
 template <class T, class Start>
 void spring_pass(const Model<T>& m, const Vec3Array<T>& x, const Vec3Array<T>& v, Vec3Array<T>& f,
-                 int threads, Start start) {
+                 ForceWorkspace<T>& ws, int threads, Start start) {
   const bool damped = m.has_damping;
   if (m.kernel == SpringKernel::row_sweep) {
-    for (const GridStencil<T>& g : m.grids) {
-      for_each_index(g.nv, threads, [&](int j) {
-        const std::size_t row =
-            static_cast<std::size_t>(g.offset) + static_cast<std::size_t>(j) * g.nu;
-        start(row, row + static_cast<std::size_t>(g.nu));
-        if (damped) {
-          add_grid_row_spring_forces<T, true>(g, x, v, f, j);
-        } else {
-          add_grid_row_spring_forces<T, false>(g, x, v, f, j);
-        }
-      });
+    for (std::size_t c = 0; c < m.grids.size(); ++c) {
+      const GridStencil<T>& g = m.grids[c];
+      GridBands<T>& bands = ws.grid_bands[c];
+      auto row = [&](int j) {
+        return static_cast<std::size_t>(g.offset) + static_cast<std::size_t>(j) * g.nu;
+      };
+      for_each_index_then(
+          bands.count, threads,
+          [&](int b) {
+            start(row(bands.first_row(b)), row(bands.end_row(b, g.nv)));
+            if (damped) {
+              add_band_spring_forces<T, true>(g, bands, x, v, f, b);
+            } else {
+              add_band_spring_forces<T, false>(g, bands, x, v, f, b);
+            }
+          },
+          [&](int b) { add_band_halo(g, bands, f, b); });
     }
   } else {
     for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) {
@@ -168,7 +174,7 @@ void add_wind(const Model<T>& m, double t, const Vec3Array<T>& x, const Vec3Arra
 template <class T>
 void compute_forces(const Model<T>& m, double t, const Vec3Array<T>& x, const Vec3Array<T>& v,
                     Vec3Array<T>& f, ForceWorkspace<T>& ws, int threads) {
-  spring_pass(m, x, v, f, threads,
+  spring_pass(m, x, v, f, ws, threads,
               [&](std::size_t b, std::size_t e) { add_body_forces(m, v, f, b, e); });
   add_wind(m, t, x, v, f, ws, threads);
 }
@@ -190,7 +196,8 @@ void compute_force_source(const Model<T>& m, double t, const Vec3Array<T>& x, co
       compute_forces(m, t, x, v, f, ws, threads);
       return;
     case ForceSource::springs:
-      spring_pass(m, x, v, f, threads, [&](std::size_t b, std::size_t e) { zero_forces(f, b, e); });
+      spring_pass(m, x, v, f, ws, threads,
+                  [&](std::size_t b, std::size_t e) { zero_forces(f, b, e); });
       return;
     case ForceSource::gravity:
       for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) {

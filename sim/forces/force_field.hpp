@@ -2,6 +2,7 @@
 #pragma once
 
 #include "sim/forces/force_source.hpp"
+#include "sim/forces/grid_spring_forces.hpp"
 #include "sim/forces/grid_surface.hpp"
 #include "sim/model/model.hpp"
 
@@ -18,10 +19,14 @@ struct ForceWorkspace {
   AlignedVector<T> vertex_area;
   AlignedVector<T> gust_factor;          // the wind's (1 + gust g) at each vertex
   std::vector<GridFaces<T>> grid_faces;  // row-sweep kernel: per grid cloth
+  std::vector<GridBands<T>> grid_bands;  // row-sweep kernel: per grid cloth
   void resize(const Model<T>& m) {
     grid_faces.resize(m.grids.size());
-    for (std::size_t c = 0; c < m.grids.size(); ++c)
+    grid_bands.resize(m.grids.size());
+    for (std::size_t c = 0; c < m.grids.size(); ++c) {
       grid_faces[c].resize(m.grids[c].nu, m.grids[c].nv);
+      grid_bands[c].resize(m.grids[c]);
+    }
     face_cross.resize(m.triangles.size() + 1);
     face_area.assign(m.triangles.size() + 1, T(0));
     normal.resize(m.n);

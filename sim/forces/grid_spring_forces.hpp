@@ -1,53 +1,214 @@
-// The row-sweep spring kernel for grid cloths: the same physics as spring_forces.hpp (Hooke plus
-// along-spring damping), with the neighbours of one grid row under one stencil offset read as a
-// contiguous run of memory. No index array and no gathers: the loop streams and vectorises fully
-// (docs/design.md, performance notes: the fastest of the layouts measured for the seed stencil).
+// The band kernel for grid cloths: the same physics as spring_forces.hpp (Hooke plus
+// along-spring damping), with each spring evaluated once and its force applied to both ends
+// (F_ab = -F_ba exactly), and the neighbours of one grid row under one stencil offset read as a
+// contiguous run of memory: no index array, no gathers, every loop streams and vectorises.
+//
+// Rows are cut into bands of a fixed number of rows that depends on the grid alone (never on
+// the thread count). A spring runs from its lower-index end a to b = a + di + dj * nu with
+// dj > 0, or dj = 0 and di > 0, so it adds to row j (a) and row j + dj (b). Within a band
+// everything is added in place; forces on the `reach` rows after the band go into the band's
+// halo, which a second pass adds after every band is done. Each vertex's forces are summed in
+// one fixed order whatever the thread count, so a step is the same bits on 1 and 2 threads.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <vector>
 
 #include "sim/model/model.hpp"
 
 namespace clothlab {
 
-// Adds the spring forces on the vertices of row j of grid g to f.
-template <class T, bool Damped>
-void add_grid_row_spring_forces(const GridStencil<T>& g, const Vec3Array<T>& x,
-                                const Vec3Array<T>& v, Vec3Array<T>& f, int j) {
-  const std::size_t row = static_cast<std::size_t>(g.offset) + static_cast<std::size_t>(j) * g.nu;
-  T* __restrict fx = f.x.data() + row;
-  T* __restrict fy = f.y.data() + row;
-  T* __restrict fz = f.z.data() + row;
-  for (const auto& e : g.entries) {
-    if (j + e.dj < 0 || j + e.dj >= g.nv) continue;
-    const int lo = std::max(0, -e.di), hi = std::min(g.nu, g.nu - e.di);
-    const T* ax = x.x.data() + row;
-    const T* ay = x.y.data() + row;
-    const T* az = x.z.data() + row;
-    const T* bx = ax + e.shift;
-    const T* by = ay + e.shift;
-    const T* bz = az + e.shift;
-    const T* avx = v.x.data() + row;
-    const T* avy = v.y.data() + row;
-    const T* avz = v.z.data() + row;
-    const T* bvx = avx + e.shift;
-    const T* bvy = avy + e.shift;
-    const T* bvz = avz + e.shift;
-    const T k = e.stiffness, rest = e.rest_length, c = e.damping;
-#pragma omp simd
-    for (int i = lo; i < hi; ++i) {
-      const T dx = bx[i] - ax[i], dy = by[i] - ay[i], dz = bz[i] - az[i];
-      const T len = std::sqrt(dx * dx + dy * dy + dz * dz);
-      const T inv_len = len > T(0) ? T(1) / len : T(0);
-      T scale = k * (len - rest) * inv_len;
-      if constexpr (Damped) {
-        const T rvx = bvx[i] - avx[i], rvy = bvy[i] - avy[i], rvz = bvz[i] - avz[i];
-        scale += c * (rvx * dx + rvy * dy + rvz * dz) * inv_len * inv_len;
+// Rows per band: at least kBandVertices vertices, and never fewer rows than the stencil reaches
+// (so a band's halo lands inside the next band) nor fewer than kMinBandRows (so the halo pass
+// touches at most a quarter of the rows).
+inline constexpr int kBandVertices = 512;
+inline constexpr int kMinBandRows = 8;
+
+template <class T>
+struct GridBands {
+  using Entry = typename GridStencil<T>::Entry;
+  int rows = 1, count = 1, reach = 0, pad = 0, nu = 0;
+  std::vector<Entry> same_row;    // dj == 0, di > 0
+  std::vector<Entry> later_rows;  // dj > 0
+  // Band b's forces on rows j1 .. j1 + reach - 1 after it: reach * nu per band.
+  Vec3Array<T> halo;
+  // Band b's same-row springs, one row of each: s[pad + i] is the force on vertex i from the
+  // spring (i, i + di), zero where that spring does not exist (pad leading zeros included).
+  Vec3Array<T> same_row_force;
+
+  void resize(const GridStencil<T>& g) {
+    nu = g.nu;
+    same_row.clear();
+    later_rows.clear();
+    reach = 0;
+    pad = 0;
+    for (const Entry& e : g.entries) {
+      if (!e.first_half) continue;
+      if (e.dj == 0) {
+        same_row.push_back(e);
+        pad = std::max(pad, e.di);
+      } else {
+        later_rows.push_back(e);
+        reach = std::max(reach, e.dj);
       }
-      fx[i] += scale * dx;
-      fy[i] += scale * dy;
-      fz[i] += scale * dz;
+    }
+    const int wanted = (kBandVertices + g.nu - 1) / std::max(1, g.nu);
+    rows = std::max({reach, kMinBandRows, wanted});
+    count = std::max(1, g.nv / rows);  // the last band takes the remainder: never shorter
+    halo.resize(static_cast<std::size_t>(count) * static_cast<std::size_t>(reach) * g.nu);
+    same_row_force.resize(static_cast<std::size_t>(count) * same_row.size() *
+                          static_cast<std::size_t>(g.nu + pad));
+  }
+  int first_row(int b) const { return b * rows; }
+  int end_row(int b, int nv) const { return b + 1 == count ? nv : (b + 1) * rows; }
+};
+
+namespace detail {
+
+// The force on a from the spring (a, b): F = (k (len - L) + c (v_b - v_a).d / len) d / len.
+template <class T, bool Damped>
+inline T spring_scale(T dx, T dy, T dz, T rvx, T rvy, T rvz, T k, T rest, T c) {
+  const T len = std::sqrt(dx * dx + dy * dy + dz * dz);
+  const T inv_len = len > T(0) ? T(1) / len : T(0);
+  T scale = k * (len - rest) * inv_len;
+  if constexpr (Damped) scale += c * (rvx * dx + rvy * dy + rvz * dz) * inv_len * inv_len;
+  return scale;
+}
+
+// Springs of row j to row j + e.dj: f[a] += F on row j, dst[b] -= F on the target row (in f,
+// or in the halo when the target row lies after the band).
+template <class T, bool Damped>
+void add_later_row_springs(const typename GridStencil<T>::Entry& e, int nu, const T* x[3],
+                           const T* v[3], T* fa[3], T* fb[3]) {
+  const int lo = std::max(0, -e.di), hi = std::min(nu, nu - e.di);
+  const T k = e.stiffness, rest = e.rest_length, c = e.damping;
+  const long s = e.shift;
+  T* __restrict ax = fa[0];
+  T* __restrict ay = fa[1];
+  T* __restrict az = fa[2];
+  T* __restrict bx = fb[0] + e.di;
+  T* __restrict by = fb[1] + e.di;
+  T* __restrict bz = fb[2] + e.di;
+#pragma omp simd
+  for (int i = lo; i < hi; ++i) {
+    const T dx = x[0][i + s] - x[0][i], dy = x[1][i + s] - x[1][i], dz = x[2][i + s] - x[2][i];
+    T rvx = 0, rvy = 0, rvz = 0;
+    if constexpr (Damped) {
+      rvx = v[0][i + s] - v[0][i];
+      rvy = v[1][i + s] - v[1][i];
+      rvz = v[2][i + s] - v[2][i];
+    }
+    const T scale = spring_scale<T, Damped>(dx, dy, dz, rvx, rvy, rvz, k, rest, c);
+    ax[i] += scale * dx;
+    ay[i] += scale * dy;
+    az[i] += scale * dz;
+    bx[i] -= scale * dx;
+    by[i] -= scale * dy;
+    bz[i] -= scale * dz;
+  }
+}
+
+// Springs within row j: each spring's force once into the band's scratch row, then both ends
+// from it in one pass (f[i] += s[i] - s[i - di]), which has no dependence between iterations.
+template <class T, bool Damped>
+void add_same_row_springs(const GridBands<T>& bands, Vec3Array<T>& scratch, std::size_t base,
+                          int nu, const T* x[3], const T* v[3], T* f[3]) {
+  const int pad = bands.pad;
+  const std::size_t stride = static_cast<std::size_t>(nu + pad);
+  for (std::size_t q = 0; q < bands.same_row.size(); ++q) {
+    const auto& e = bands.same_row[q];
+    const T k = e.stiffness, rest = e.rest_length, c = e.damping;
+    T* __restrict sx = scratch.x.data() + base + q * stride + pad;
+    T* __restrict sy = scratch.y.data() + base + q * stride + pad;
+    T* __restrict sz = scratch.z.data() + base + q * stride + pad;
+    const int hi = nu - e.di;
+#pragma omp simd
+    for (int i = 0; i < hi; ++i) {
+      const T dx = x[0][i + e.di] - x[0][i], dy = x[1][i + e.di] - x[1][i],
+              dz = x[2][i + e.di] - x[2][i];
+      T rvx = 0, rvy = 0, rvz = 0;
+      if constexpr (Damped) {
+        rvx = v[0][i + e.di] - v[0][i];
+        rvy = v[1][i + e.di] - v[1][i];
+        rvz = v[2][i + e.di] - v[2][i];
+      }
+      const T scale = spring_scale<T, Damped>(dx, dy, dz, rvx, rvy, rvz, k, rest, c);
+      sx[i] = scale * dx;
+      sy[i] = scale * dy;
+      sz[i] = scale * dz;
+    }
+    for (int i = std::max(0, hi); i < nu; ++i) sx[i] = sy[i] = sz[i] = T(0);
+    T* __restrict fx = f[0];
+    T* __restrict fy = f[1];
+    T* __restrict fz = f[2];
+    const int di = e.di;
+#pragma omp simd
+    for (int i = 0; i < nu; ++i) {
+      fx[i] += sx[i] - sx[i - di];
+      fy[i] += sy[i] - sy[i - di];
+      fz[i] += sz[i] - sz[i - di];
+    }
+  }
+}
+
+}  // namespace detail
+
+// Adds the spring forces of band b's springs to f (rows inside the band) and writes those on
+// the rows after it to the band's halo. f on the band's rows must hold their other forces.
+template <class T, bool Damped>
+void add_band_spring_forces(const GridStencil<T>& g, GridBands<T>& bands, const Vec3Array<T>& x,
+                            const Vec3Array<T>& v, Vec3Array<T>& f, int b) {
+  const int j0 = bands.first_row(b), j1 = bands.end_row(b, g.nv);
+  const std::size_t nu = static_cast<std::size_t>(g.nu);
+  const std::size_t halo_base = static_cast<std::size_t>(b) * bands.reach * nu;
+  for (int a = 0; a < 3; ++a)
+    std::fill_n(bands.halo.axis(a).begin() + static_cast<std::ptrdiff_t>(halo_base),
+                static_cast<std::size_t>(bands.reach) * nu, T(0));
+  const std::size_t scratch_base =
+      static_cast<std::size_t>(b) * bands.same_row.size() * (nu + bands.pad);
+  auto row_of = [&](Vec3Array<T>& a, std::size_t start, T* out[3]) {
+    out[0] = a.x.data() + start;
+    out[1] = a.y.data() + start;
+    out[2] = a.z.data() + start;
+  };
+  for (int j = j0; j < j1; ++j) {
+    const std::size_t row = static_cast<std::size_t>(g.offset) + static_cast<std::size_t>(j) * nu;
+    const T* xr[3] = {x.x.data() + row, x.y.data() + row, x.z.data() + row};
+    const T* vr[3] = {v.x.data() + row, v.y.data() + row, v.z.data() + row};
+    T* fr[3];
+    row_of(f, row, fr);
+    detail::add_same_row_springs<T, Damped>(bands, bands.same_row_force, scratch_base, g.nu, xr, vr,
+                                            fr);
+    for (const auto& e : bands.later_rows) {
+      const int target = j + e.dj;
+      if (target >= g.nv) continue;
+      T* dst[3];
+      if (target < j1)
+        row_of(f, row + static_cast<std::size_t>(e.dj) * nu, dst);
+      else
+        row_of(bands.halo, halo_base + static_cast<std::size_t>(target - j1) * nu, dst);
+      detail::add_later_row_springs<T, Damped>(e, g.nu, xr, vr, fr, dst);
+    }
+  }
+}
+
+// Adds band b - 1's halo to the first rows of band b (b >= 1), after every band's springs.
+template <class T>
+void add_band_halo(const GridStencil<T>& g, const GridBands<T>& bands, Vec3Array<T>& f, int b) {
+  const std::size_t nu = static_cast<std::size_t>(g.nu);
+  const std::size_t halo_base = static_cast<std::size_t>(b - 1) * bands.reach * nu;
+  const int j0 = bands.first_row(b);
+  for (int r = 0; r < bands.reach && j0 + r < g.nv; ++r) {
+    const std::size_t row =
+        static_cast<std::size_t>(g.offset) + static_cast<std::size_t>(j0 + r) * nu;
+    const std::size_t h = halo_base + static_cast<std::size_t>(r) * nu;
+#pragma omp simd
+    for (std::size_t i = 0; i < nu; ++i) {
+      f.x[row + i] += bands.halo.x[h + i];
+      f.y[row + i] += bands.halo.y[h + i];
+      f.z[row + i] += bands.halo.z[h + i];
     }
   }
 }

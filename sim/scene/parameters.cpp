@@ -294,11 +294,12 @@ std::vector<Parameter> solver() {
 
 std::vector<Parameter> solver_more() {
   return {
-      row<&SolverSpec::threads>({.name = "threads",
-                                 .range = between(0, 1024),
-                                 .range_text = "between 0 (all cores) and 1024",
-                                 .fallback = "0",
-                                 .description = "OpenMP threads, 0 = all cores"}),
+      row<&SolverSpec::threads>(
+          {.name = "threads",
+           .range = between(0, 1024),
+           .range_text = "between 0 (auto) and 1024",
+           .fallback = "0",
+           .description = "OpenMP threads, 0 = auto (one below 4096 vertices, else all cores)"}),
       choice_row<&SolverSpec::precision, kPrecisionNames, "precision">(
           {.name = "precision",
            .fallback = "\"float\"",

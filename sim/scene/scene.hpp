@@ -119,7 +119,7 @@ struct SolverSpec {
   int newton_iterations = 0;    // implicit_euler, bdf2: Newton iterations per step at most (0: 8)
   double newton_tolerance = 0.01;  // implicit_euler, bdf2: stop at |delta v| <= this |v1 - v0|
   StepSolver bdf2_solver = StepSolver::newton;  // bdf2: newton (PCG) or vbd iterations
-  int threads = 0;                              // 0 = all cores
+  int threads = 0;                              // 0 = auto (sim/core/parallel.hpp)
   bool self_collision = false;    // the cloth keeps its layers apart (sim/contact/self_collision)
   double self_thickness = 0.005;  // m: how far apart two layers stay
   Precision precision = Precision::f32;
