@@ -67,7 +67,9 @@ struct GridBands {
 
 namespace detail {
 
-// The force on a from the spring (a, b): F = (k (len - L) + c (v_b - v_a).d / len) d / len.
+// The force on a from the spring (a, b): F = (k (len - L) + c (v_b - v_a).d / len) d / len,
+// returned as the factor of d; a zero-length spring gets no force. The guard is a select, which
+// GCC if-converts (and so vectorises the loops) only under -fno-trapping-math (CMakeLists.txt).
 template <class T, bool Damped>
 inline T spring_scale(T dx, T dy, T dz, T rvx, T rvy, T rvz, T k, T rest, T c) {
   const T len = std::sqrt(dx * dx + dy * dy + dz * dz);
@@ -84,29 +86,42 @@ void add_later_row_springs(const typename GridStencil<T>::Entry& e, int nu, cons
                            const T* v[3], T* fa[3], T* fb[3]) {
   const int lo = std::max(0, -e.di), hi = std::min(nu, nu - e.di);
   const T k = e.stiffness, rest = e.rest_length, c = e.damping;
-  const long s = e.shift;
-  T* __restrict ax = fa[0];
-  T* __restrict ay = fa[1];
-  T* __restrict az = fa[2];
-  T* __restrict bx = fb[0] + e.di;
-  T* __restrict by = fb[1] + e.di;
-  T* __restrict bz = fb[2] + e.di;
+  // Local restrict pointers: read through the arrays of pointers, the loop did not vectorise
+  // (a store might have changed a pointer).
+  const T* __restrict ax = x[0];
+  const T* __restrict ay = x[1];
+  const T* __restrict az = x[2];
+  const T* __restrict bx = x[0] + e.shift;
+  const T* __restrict by = x[1] + e.shift;
+  const T* __restrict bz = x[2] + e.shift;
+  const T* __restrict avx = v[0];
+  const T* __restrict avy = v[1];
+  const T* __restrict avz = v[2];
+  const T* __restrict bvx = v[0] + e.shift;
+  const T* __restrict bvy = v[1] + e.shift;
+  const T* __restrict bvz = v[2] + e.shift;
+  T* __restrict fax = fa[0];
+  T* __restrict fay = fa[1];
+  T* __restrict faz = fa[2];
+  T* __restrict fbx = fb[0] + e.di;
+  T* __restrict fby = fb[1] + e.di;
+  T* __restrict fbz = fb[2] + e.di;
 #pragma omp simd
   for (int i = lo; i < hi; ++i) {
-    const T dx = x[0][i + s] - x[0][i], dy = x[1][i + s] - x[1][i], dz = x[2][i + s] - x[2][i];
+    const T dx = bx[i] - ax[i], dy = by[i] - ay[i], dz = bz[i] - az[i];
     T rvx = 0, rvy = 0, rvz = 0;
     if constexpr (Damped) {
-      rvx = v[0][i + s] - v[0][i];
-      rvy = v[1][i + s] - v[1][i];
-      rvz = v[2][i + s] - v[2][i];
+      rvx = bvx[i] - avx[i];
+      rvy = bvy[i] - avy[i];
+      rvz = bvz[i] - avz[i];
     }
     const T scale = spring_scale<T, Damped>(dx, dy, dz, rvx, rvy, rvz, k, rest, c);
-    ax[i] += scale * dx;
-    ay[i] += scale * dy;
-    az[i] += scale * dz;
-    bx[i] -= scale * dx;
-    by[i] -= scale * dy;
-    bz[i] -= scale * dz;
+    fax[i] += scale * dx;
+    fay[i] += scale * dy;
+    faz[i] += scale * dz;
+    fbx[i] -= scale * dx;
+    fby[i] -= scale * dy;
+    fbz[i] -= scale * dz;
   }
 }
 
@@ -124,15 +139,26 @@ void add_same_row_springs(const GridBands<T>& bands, Vec3Array<T>& scratch, std:
     T* __restrict sy = scratch.y.data() + base + q * stride + pad;
     T* __restrict sz = scratch.z.data() + base + q * stride + pad;
     const int hi = nu - e.di;
+    const T* __restrict ax = x[0];
+    const T* __restrict ay = x[1];
+    const T* __restrict az = x[2];
+    const T* __restrict bx = x[0] + e.di;
+    const T* __restrict by = x[1] + e.di;
+    const T* __restrict bz = x[2] + e.di;
+    const T* __restrict avx = v[0];
+    const T* __restrict avy = v[1];
+    const T* __restrict avz = v[2];
+    const T* __restrict bvx = v[0] + e.di;
+    const T* __restrict bvy = v[1] + e.di;
+    const T* __restrict bvz = v[2] + e.di;
 #pragma omp simd
     for (int i = 0; i < hi; ++i) {
-      const T dx = x[0][i + e.di] - x[0][i], dy = x[1][i + e.di] - x[1][i],
-              dz = x[2][i + e.di] - x[2][i];
+      const T dx = bx[i] - ax[i], dy = by[i] - ay[i], dz = bz[i] - az[i];
       T rvx = 0, rvy = 0, rvz = 0;
       if constexpr (Damped) {
-        rvx = v[0][i + e.di] - v[0][i];
-        rvy = v[1][i + e.di] - v[1][i];
-        rvz = v[2][i + e.di] - v[2][i];
+        rvx = bvx[i] - avx[i];
+        rvy = bvy[i] - avy[i];
+        rvz = bvz[i] - avz[i];
       }
       const T scale = spring_scale<T, Damped>(dx, dy, dz, rvx, rvy, rvz, k, rest, c);
       sx[i] = scale * dx;
