@@ -27,8 +27,8 @@ TEST(AutoThreads, SmallGridRunsOnOneThread) {
 }
 
 TEST(AutoThreads, LargeGridUsesEveryCore) {
-  static_assert(64 * 64 >= kParallelMinVertices);
-  SolverT<float> solver(square(64, 0));
+  static_assert(128 * 128 >= kParallelMinVertices);
+  SolverT<float> solver(square(128, 0));
   EXPECT_EQ(solver.threads(), omp_get_max_threads());
   solver.set_threads(1);
   EXPECT_EQ(solver.threads(), 1);

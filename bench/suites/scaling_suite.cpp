@@ -53,9 +53,9 @@ std::vector<Table> scaling_suite(const SuiteOptions& o) {
 
   Table data;
   data.title = "Scaling: symplectic Euler step, float, damped springs + gravity (bench scene)";
-  data.columns = {"grid",           "vertices",          "springs",  "threads",
-                  "ns/spring-step", "memory (B/vertex)", "speed-up", "limit ns/spring-step",
-                  "measured/limit", "limit by"};
+  data.columns = {"grid",           "vertices",          "springs",   "threads",
+                  "ns/spring-step", "memory (B/vertex)", "speed-up",  "limit ns/spring-step",
+                  "measured/limit", "limit by",          "/sqrt+div", "/memory"};
   for (int res : grids) {
     double one_thread = NAN;
     for (int threads : {1, 2}) {
@@ -76,7 +76,7 @@ std::vector<Table> scaling_suite(const SuiteOptions& o) {
       data.add({std::to_string(res) + "x" + std::to_string(res), num(vertices), num(springs),
                 std::to_string(threads), fixed(ns, 3), fixed(bytes / vertices, 0),
                 threads == 1 ? "1.00" : fixed(one_thread / ns, 2), fixed(bound, 3),
-                fixed(ns / bound, 2), by});
+                fixed(ns / bound, 2), by, fixed(ns / by_sqrt, 2), fixed(ns / by_bytes, 2)});
       if (o.log)
         *o.log << "scaling: " << res << "^2, " << threads << " thread(s): " << ns << " ns\n";
     }

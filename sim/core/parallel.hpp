@@ -13,7 +13,7 @@ inline constexpr std::size_t kBlockSize = 512;
 
 // solver.threads = 0 runs one thread on scenes with fewer vertices: below it a second thread
 // gained nothing on the explicit step (measured with passive waiting, README "Threads").
-inline constexpr std::size_t kParallelMinVertices = 4096;
+inline constexpr std::size_t kParallelMinVertices = 8192;
 
 inline std::size_t block_count(std::size_t n) {
   return (n + kBlockSize - 1) / kBlockSize;

@@ -299,7 +299,7 @@ std::vector<Parameter> solver_more() {
            .range = between(0, 1024),
            .range_text = "between 0 (auto) and 1024",
            .fallback = "0",
-           .description = "OpenMP threads, 0 = auto (one below 4096 vertices, else all cores)"}),
+           .description = "OpenMP threads, 0 = auto (one below 8192 vertices, else all cores)"}),
       choice_row<&SolverSpec::precision, kPrecisionNames, "precision">(
           {.name = "precision",
            .fallback = "\"float\"",

@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 
+#include "sim/core/parallel.hpp"
 #include "sim/realtime/frame_stepper.hpp"
 #include "sim/scene/scene.hpp"
 #include "sim/solver.hpp"
@@ -61,12 +62,13 @@ class SimSession {
   const std::string& backend_note() const { return backend_note_; }
   void toggle_wind();
   // M: all cores <-> one thread. Until M is pressed the session chooses: all cores (the scene's
-  // threads setting) from kParallelVertices vertices up, one thread below. The window's OpenMP
-  // threads wait passively (they share the cores with the GL driver), and waking them costs
-  // more than a small cloth's step: at 32x32, 2 threads took 0.26 ms per symplectic Euler step
-  // against 0.04 ms on one, and 18 ms against 1.6 ms per implicit Euler step.
+  // threads setting) from kParallelMinVertices vertices up, one thread below, as the solver's
+  // threads = 0 does (sim/core/parallel.hpp), but also when the scene names a count. Waking the
+  // passively waiting threads costs more than a small cloth's step: at 32x32, 2 threads took
+  // 0.26 ms per symplectic Euler step against 0.04 ms on one, and 18 ms against 1.6 ms per
+  // implicit Euler step.
   void toggle_parallel();
-  static constexpr std::size_t kParallelVertices = 8192;
+  static constexpr std::size_t kParallelVertices = kParallelMinVertices;
   bool parallel() const { return applied_.solver.threads != 1; }
 
   // P: momentum `impulse` (N*s) into the free vertices around the cloth's centre.
