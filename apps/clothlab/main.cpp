@@ -189,13 +189,30 @@ CLI::App* add_bench(CLI::App& app, BenchArgs& bench) {
   return bench_cmd;
 }
 
+// A first argument that is neither an option nor a subcommand: named, with the subcommands
+// (CLI11 would only say that a subcommand is required).
+bool unknown_subcommand(const CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return false;
+  std::string names;
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+    if (sub->get_name() == argv[1]) return false;
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  }
+  std::fprintf(stderr,
+               "clothlab: unknown subcommand \"%s\"; the subcommands are %s (clothlab help)\n",
+               argv[1], names.c_str());
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   clothlab::app::prefer_passive_openmp(argv);
   using namespace clothlab::app;
-  CLI::App app{"ClothLab: a laboratory for simulating cloth and looking at it scientifically."};
+  CLI::App app{"ClothLab: a laboratory for simulating cloth and looking at it scientifically.",
+               "clothlab"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", "clothlab " CLOTHLAB_VERSION);
 
   CheckArgs check;
   auto* check_cmd = app.add_subcommand("check", "parse and validate a scene, then exit");
@@ -210,7 +227,13 @@ int main(int argc, char** argv) {
   auto* view_cmd = add_view(app, view);
   BenchArgs bench;
   auto* bench_cmd = add_bench(app, bench);
+  app.add_subcommand("help", "print this overview of the subcommands");
 
+  if (unknown_subcommand(app, argc, argv)) return 2;
+  if (argc >= 2 && std::string(argv[1]) == "help") {  // before parsing: the overview, not help's
+    std::fputs(app.help().c_str(), stdout);
+    return 0;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,5 +1,8 @@
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -24,7 +27,28 @@ std::string replay_command(const std::string& scene, const std::vector<std::stri
   return cmd;
 }
 
+namespace {
+
+// The CSV is written to a temporary file beside --out and renamed at the end, so the directory
+// must exist and be writable; said before any simulation runs (exit 2), not after it (exit 1).
+bool out_writable(const std::string& out) {
+  const std::filesystem::path dir = std::filesystem::absolute(out).parent_path();
+  std::error_code ec;
+  const char* why = nullptr;
+  if (!std::filesystem::is_directory(dir, ec))
+    why = "no such directory";
+  else if (::access(dir.c_str(), W_OK) != 0)
+    why = "the directory is not writable";
+  if (why)
+    std::fprintf(stderr, "clothlab trace: --out: cannot write '%s': %s ('%s')\n", out.c_str(), why,
+                 dir.c_str());
+  return why == nullptr;
+}
+
+}  // namespace
+
 int run_trace_command(const TraceArgs& args) {
+  if (!out_writable(args.out)) return kBadInput;
   std::optional<Scene> loaded = load_scene("trace", args.scene, args.overrides);
   if (!loaded) return kBadInput;
   Scene& scene = *loaded;

@@ -92,6 +92,19 @@ void record_origin(OverrideOrigins& origins, const std::string& key, const std::
   origins[key] = arg;
 }
 
+// The path from step n on with step n's index dropped, after `key` (the path up to step n):
+// what to write instead of indexing a table that is not an array ("cloth[1].mass" ->
+// "cloth.mass").
+std::string without_index(const std::string& key, const std::vector<PathStep>& steps,
+                          std::size_t n) {
+  std::string path = key;
+  for (std::size_t m = n + 1; m < steps.size(); ++m) {
+    path = join_key(path, steps[m].name);
+    if (steps[m].index) path += "[" + std::to_string(*steps[m].index) + "]";
+  }
+  return path;
+}
+
 class OverrideApplier {
  public:
   OverrideApplier(toml::table& root, OverrideOrigins& origins) : root_(root), origins_(origins) {}
@@ -138,11 +151,13 @@ class OverrideApplier {
         continue;
       }
       toml::array* array = node ? node->as_array() : nullptr;
-      if (!array)
+      if (!array && node && node->is_table())
         throw SceneError(loc, key,
-                         node && node->is_table()
-                             ? "is a single table, not an array; write " + key + ".name"
-                             : "is not an array in this scene, so [N] cannot index it");
+                         "is a single table in this scene, not an array of tables: write " +
+                             without_index(key, steps, n) +
+                             " (a scene with several writes each as [[" + key + "]])");
+      if (!array)
+        throw SceneError(loc, key, "is not an array in this scene, so [N] cannot index it");
       const std::size_t index = *step.index;
       if (index >= array->size())
         throw SceneError(loc, key + "[" + std::to_string(index) + "]",
