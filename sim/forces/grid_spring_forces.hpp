@@ -79,35 +79,29 @@ inline T spring_scale(T dx, T dy, T dz, T rvx, T rvy, T rvz, T k, T rest, T c) {
   return scale;
 }
 
-// Springs of row j to row j + e.dj: f[a] += F on row j, dst[b] -= F on the target row (in f,
-// or in the halo when the target row lies after the band).
+// The two ends of one stencil offset's springs along a row: end b of spring i is end a shifted
+// by `shift` entries. force(i) is the force on a (minus the force on b).
 template <class T, bool Damped>
-void add_later_row_springs(const typename GridStencil<T>::Entry& e, int nu, const T* x[3],
-                           const T* v[3], T* fa[3], T* fb[3]) {
-  const int lo = std::max(0, -e.di), hi = std::min(nu, nu - e.di);
-  const T k = e.stiffness, rest = e.rest_length, c = e.damping;
-  // Local restrict pointers: read through the arrays of pointers, the loop did not vectorise
-  // (a store might have changed a pointer).
-  const T* __restrict ax = x[0];
-  const T* __restrict ay = x[1];
-  const T* __restrict az = x[2];
-  const T* __restrict bx = x[0] + e.shift;
-  const T* __restrict by = x[1] + e.shift;
-  const T* __restrict bz = x[2] + e.shift;
-  const T* __restrict avx = v[0];
-  const T* __restrict avy = v[1];
-  const T* __restrict avz = v[2];
-  const T* __restrict bvx = v[0] + e.shift;
-  const T* __restrict bvy = v[1] + e.shift;
-  const T* __restrict bvz = v[2] + e.shift;
-  T* __restrict fax = fa[0];
-  T* __restrict fay = fa[1];
-  T* __restrict faz = fa[2];
-  T* __restrict fbx = fb[0] + e.di;
-  T* __restrict fby = fb[1] + e.di;
-  T* __restrict fbz = fb[2] + e.di;
-#pragma omp simd
-  for (int i = lo; i < hi; ++i) {
+struct SpringEnds {
+  const T *ax, *ay, *az, *bx, *by, *bz, *avx, *avy, *avz, *bvx, *bvy, *bvz;
+  T k, rest, c;
+  SpringEnds(const typename GridStencil<T>::Entry& e, long shift, const T* x[3], const T* v[3])
+      : ax(x[0]),
+        ay(x[1]),
+        az(x[2]),
+        bx(x[0] + shift),
+        by(x[1] + shift),
+        bz(x[2] + shift),
+        avx(v[0]),
+        avy(v[1]),
+        avz(v[2]),
+        bvx(v[0] + shift),
+        bvy(v[1] + shift),
+        bvz(v[2] + shift),
+        k(e.stiffness),
+        rest(e.rest_length),
+        c(e.damping) {}
+  void force(int i, T& fx, T& fy, T& fz) const {
     const T dx = bx[i] - ax[i], dy = by[i] - ay[i], dz = bz[i] - az[i];
     T rvx = 0, rvy = 0, rvz = 0;
     if constexpr (Damped) {
@@ -116,12 +110,35 @@ void add_later_row_springs(const typename GridStencil<T>::Entry& e, int nu, cons
       rvz = bvz[i] - avz[i];
     }
     const T scale = spring_scale<T, Damped>(dx, dy, dz, rvx, rvy, rvz, k, rest, c);
-    fax[i] += scale * dx;
-    fay[i] += scale * dy;
-    faz[i] += scale * dz;
-    fbx[i] -= scale * dx;
-    fby[i] -= scale * dy;
-    fbz[i] -= scale * dz;
+    fx = scale * dx;
+    fy = scale * dy;
+    fz = scale * dz;
+  }
+};
+
+// Springs of row j to row j + e.dj: f[a] += F on row j, dst[b] -= F on the target row (in f,
+// or in the halo when the target row lies after the band).
+template <class T, bool Damped>
+void add_later_row_springs(const typename GridStencil<T>::Entry& e, int nu, const T* x[3],
+                           const T* v[3], T* fa[3], T* fb[3]) {
+  const int lo = std::max(0, -e.di), hi = std::min(nu, nu - e.di);
+  const SpringEnds<T, Damped> ends(e, e.shift, x, v);
+  T* __restrict fax = fa[0];
+  T* __restrict fay = fa[1];
+  T* __restrict faz = fa[2];
+  T* __restrict fbx = fb[0] + e.di;
+  T* __restrict fby = fb[1] + e.di;
+  T* __restrict fbz = fb[2] + e.di;
+#pragma omp simd
+  for (int i = lo; i < hi; ++i) {
+    T fx, fy, fz;
+    ends.force(i, fx, fy, fz);
+    fax[i] += fx;
+    fay[i] += fy;
+    faz[i] += fz;
+    fbx[i] -= fx;
+    fby[i] -= fy;
+    fbz[i] -= fz;
   }
 }
 
@@ -134,37 +151,13 @@ void add_same_row_springs(const GridBands<T>& bands, Vec3Array<T>& scratch, std:
   const std::size_t stride = static_cast<std::size_t>(nu + pad);
   for (std::size_t q = 0; q < bands.same_row.size(); ++q) {
     const auto& e = bands.same_row[q];
-    const T k = e.stiffness, rest = e.rest_length, c = e.damping;
+    const SpringEnds<T, Damped> ends(e, e.di, x, v);
     T* __restrict sx = scratch.x.data() + base + q * stride + pad;
     T* __restrict sy = scratch.y.data() + base + q * stride + pad;
     T* __restrict sz = scratch.z.data() + base + q * stride + pad;
     const int hi = nu - e.di;
-    const T* __restrict ax = x[0];
-    const T* __restrict ay = x[1];
-    const T* __restrict az = x[2];
-    const T* __restrict bx = x[0] + e.di;
-    const T* __restrict by = x[1] + e.di;
-    const T* __restrict bz = x[2] + e.di;
-    const T* __restrict avx = v[0];
-    const T* __restrict avy = v[1];
-    const T* __restrict avz = v[2];
-    const T* __restrict bvx = v[0] + e.di;
-    const T* __restrict bvy = v[1] + e.di;
-    const T* __restrict bvz = v[2] + e.di;
 #pragma omp simd
-    for (int i = 0; i < hi; ++i) {
-      const T dx = bx[i] - ax[i], dy = by[i] - ay[i], dz = bz[i] - az[i];
-      T rvx = 0, rvy = 0, rvz = 0;
-      if constexpr (Damped) {
-        rvx = bvx[i] - avx[i];
-        rvy = bvy[i] - avy[i];
-        rvz = bvz[i] - avz[i];
-      }
-      const T scale = spring_scale<T, Damped>(dx, dy, dz, rvx, rvy, rvz, k, rest, c);
-      sx[i] = scale * dx;
-      sy[i] = scale * dy;
-      sz[i] = scale * dz;
-    }
+    for (int i = 0; i < hi; ++i) ends.force(i, sx[i], sy[i], sz[i]);
     for (int i = std::max(0, hi); i < nu; ++i) sx[i] = sy[i] = sz[i] = T(0);
     T* __restrict fx = f[0];
     T* __restrict fy = f[1];
