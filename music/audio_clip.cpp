@@ -2,8 +2,15 @@
 
 #include <sndfile.h>
 
+#include <unistd.h>
+
+#include <cctype>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
+
+#include "sim/core/temp_files.hpp"
 
 namespace clothlab {
 namespace {
@@ -17,6 +24,54 @@ using SndfilePtr = std::unique_ptr<SNDFILE, SndfileCloser>;
   throw AudioError("audio file '" + path + "': " + reason);
 }
 
+// The decoders behind libsndfile (libmpg123 for MP3) print warnings on stderr; while a file is
+// read they go to a temporary file instead and come back as one line, which a failure's reason
+// quotes. (Loading runs before any thread starts, so swapping descriptor 2 is safe here.)
+class StderrCapture {
+ public:
+  StderrCapture() {
+    std::fflush(stderr);
+    file_ = std::tmpfile();
+    saved_ = file_ ? ::dup(2) : -1;
+    if (saved_ >= 0) ::dup2(::fileno(file_), 2);
+  }
+  ~StderrCapture() { restore(); }
+  StderrCapture(const StderrCapture&) = delete;
+  StderrCapture& operator=(const StderrCapture&) = delete;
+
+  // What was printed, on one line (runs of white space folded to one space), at most 300 chars.
+  std::string text() {
+    restore();
+    std::string out;
+    if (!file_) return out;
+    std::rewind(file_);
+    for (int c; (c = std::fgetc(file_)) != EOF && out.size() < 300;) {
+      const bool space = std::isspace(c) != 0;
+      if (space && (out.empty() || out.back() == ' ')) continue;
+      out.push_back(space ? ' ' : static_cast<char>(c));
+    }
+    while (!out.empty() && out.back() == ' ') out.pop_back();
+    return out;
+  }
+
+ private:
+  void restore() {
+    if (saved_ < 0) return;
+    std::fflush(stderr);
+    ::dup2(saved_, 2);
+    ::close(saved_);
+    saved_ = -1;
+  }
+  std::FILE* file_ = nullptr;
+  int saved_ = -1;
+};
+
+// The decoder's reason and what it printed: "reason (decoder: ...)".
+std::string with_decoder_text(const std::string& reason, StderrCapture& capture) {
+  const std::string printed = capture.text();
+  return printed.empty() ? reason : reason + " (decoder: " + printed + ")";
+}
+
 }  // namespace
 
 double AudioClip::duration() const {
@@ -25,11 +80,23 @@ double AudioClip::duration() const {
 }
 
 AudioClip read_audio(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    fail(path, "no such file (or not a regular file)");
+  StderrCapture capture;
   SF_INFO info{};
   SndfilePtr file(sf_open(path.c_str(), SFM_READ, &info));
-  // sf_strerror(nullptr) reports why the last sf_open failed (missing file, unknown format).
-  if (!file) fail(path, sf_strerror(nullptr));
-  if (info.channels <= 0 || info.samplerate <= 0) fail(path, "no channels or no sample rate");
+  // sf_strerror(nullptr) reports why the last sf_open failed; for a file that exists, that it
+  // does not exist is libsndfile's wording for "no decoder accepted it".
+  if (!file) {
+    const std::string why = sf_strerror(nullptr);
+    const bool misleading = why.find("does not exist") != std::string::npos;
+    fail(path, with_decoder_text("not a sound file libsndfile can decode" +
+                                     (misleading ? std::string() : " (" + why + ")"),
+                                 capture));
+  }
+  if (info.channels <= 0 || info.samplerate <= 0)
+    fail(path, with_decoder_text("no channels or no sample rate", capture));
 
   AudioClip clip;
   clip.sample_rate = info.samplerate;
@@ -45,11 +112,17 @@ AudioClip read_audio(const std::string& path) {
     for (sf_count_t i = 0; i < got; ++i) {
       float sum = 0.0f;
       for (int c = 0; c < channels; ++c) sum += block[static_cast<std::size_t>(i * channels + c)];
+      // A float WAV may hold inf or nan; the beat tracker and the dance would turn them to nan.
+      if (!std::isfinite(sum))
+        fail(path, "sample " + std::to_string(clip.samples.size()) +
+                       " (t = " + std::to_string(double(clip.samples.size()) / info.samplerate) +
+                       " s) is not finite");
       clip.samples.push_back(sum / static_cast<float>(channels));
     }
   }
-  if (sf_error(file.get()) != SF_ERR_NO_ERROR) fail(path, sf_strerror(file.get()));
-  if (clip.samples.empty()) fail(path, "contains no samples");
+  if (sf_error(file.get()) != SF_ERR_NO_ERROR)
+    fail(path, with_decoder_text(sf_strerror(file.get()), capture));
+  if (clip.samples.empty()) fail(path, with_decoder_text("contains no samples", capture));
   return clip;
 }
 
@@ -57,6 +130,7 @@ void write_wav(const std::string& path, const AudioClip& clip) {
   if (clip.sample_rate <= 0)
     fail(path, "cannot write a sample rate of " + std::to_string(clip.sample_rate));
   const std::string tmp = path + ".tmp";
+  const TempFileGuard guard(tmp);  // removed on SIGINT / SIGTERM too
   SF_INFO info{};
   info.samplerate = clip.sample_rate;
   info.channels = 1;

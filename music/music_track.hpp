@@ -17,7 +17,12 @@ struct MusicTrack {
   bool generated = false;
 };
 
-// Reads and analyses a sound file (libsndfile: WAV, FLAC, OGG, MP3). Throws AudioError.
+// The lowest sample rate the beat tracker works at: its high band starts at 2 kHz, so the
+// Nyquist frequency must lie well above it (8 kHz is telephone sound).
+inline constexpr int kMinMusicRate = 8000;
+
+// Reads and analyses a sound file (libsndfile: WAV, FLAC, OGG, MP3). Throws AudioError, also for
+// a sample rate below kMinMusicRate.
 MusicTrack load_music(const std::string& path);
 // The project's own drum track (music/drum_track.hpp) at `bpm` for `seconds`, analysed like a
 // file would be (the dance follows what the tracker hears, not the tempo it was made at).

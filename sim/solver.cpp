@@ -8,6 +8,7 @@
 
 #include "sim/body/body_motion.hpp"
 #include "sim/core/parallel.hpp"
+#include "sim/model/model_check.hpp"
 #include "sim/solver_impl.hpp"
 #include "sim/stability/step_limit.hpp"
 
@@ -64,13 +65,25 @@ double initial_energy(const Model<T>& m) {
   return compute_energy(m, initial_state(m), partials, 1).total();
 }
 
+// The model and the step, each checked once as built (sim/model/model_check.hpp).
+template <class T>
+Model<T> checked(Model<T> m, const Scene& scene) {
+  check_built_model(m, scene, initial_energy(m));
+  return m;
+}
+
+SolverSpec checked(SolverSpec spec, const Scene& scene) {
+  check_step(spec.dt, spec.substeps, scene);
+  return spec;
+}
+
 }  // namespace
 
 template <class T>
 SolverT<T>::SolverT(const Scene& scene, SpringKernel kernel)
-    : model_(build_model<T>(scene, kernel)),
+    : model_(checked(build_model<T>(scene, kernel), scene)),
       state_(initial_state(model_)),
-      spec_(limit_substep_for_body(scene, resolve_step(model_, scene.solver))),
+      spec_(checked(limit_substep_for_body(scene, resolve_step(model_, scene.solver)), scene)),
       dt_(spec_.dt),
       substeps_(spec_.substeps),
       threads_(resolve_threads(scene.solver.threads, model_.n)),
@@ -78,6 +91,10 @@ SolverT<T>::SolverT(const Scene& scene, SpringKernel kernel)
       monitor_(model_, state_, initial_energy(model_)) {
   workspace_.resize(model_);
   force_field_.resize(model_.n);
+  // The built state's forces, once: a cloth whose every value is representable can still have
+  // forces that are not (a 1e30 m sheet's squared edge lengths overflow a float).
+  compute_forces(model_, 0.0, state_.pos, state_.vel, force_field_, workspace_, threads_);
+  check_built_forces(force_field_, model_, scene);
   if (!scene.colliders.empty())
     contacts_ = std::make_unique<ContactResponse<T>>(scene.colliders, model_);
   if (spec_.self_collision) self_ = std::make_unique<SelfCollision<T>>(model_, spec_);

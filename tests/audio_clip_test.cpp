@@ -122,7 +122,7 @@ void expect_error_naming(const std::string& path, const std::string& reason_part
 
 TEST(AudioClip, MissingFileThrowsWithPath) {
   const fs::path dir = test_dir();
-  expect_error_naming((dir / "no_such_song.wav").string(), "No such file");
+  expect_error_naming((dir / "no_such_song.wav").string(), "no such file");
   fs::remove_all(dir);
 }
 

@@ -66,7 +66,7 @@ TEST(Trace, ReadsBackTheSolverValues) {
   const Scene scene = busy_scene();
   SolverT<float> s(scene);
   const std::string path = temp_file("readback.csv");
-  const auto r = run_trace(s, *scene.trace, false, false, 0.1, path);
+  const auto r = run_trace(s, *scene.trace, false, false, whole_steps(0.1, s.dt()), path);
   ASSERT_FALSE(r.divergence);
   EXPECT_EQ(r.steps, 250);
   const TraceTable t = read_trace_csv(path);
@@ -99,7 +99,8 @@ TEST(Trace, ThreadCountDoesNotChangeTheTraceByteForByte) {
       SolverT<float> s(scene, kernel);
       ASSERT_EQ(s.threads(), threads);
       const std::string path = temp_file("threads" + std::to_string(threads) + ".csv");
-      ASSERT_FALSE(run_trace(s, *scene.trace, false, false, 0.3, path).divergence);
+      ASSERT_FALSE(
+          run_trace(s, *scene.trace, false, false, whole_steps(0.3, s.dt()), path).divergence);
       contents[threads - 1] = slurp(path);
       fs::remove(path);
     }
@@ -116,7 +117,7 @@ TEST(Trace, DivergedRunLeavesNoFile) {
   scene.springs.damping = 0.0;
   SolverT<float> s(scene);
   const std::string path = temp_file("diverged.csv");
-  const auto r = run_trace(s, *scene.trace, false, false, 5.0, path);
+  const auto r = run_trace(s, *scene.trace, false, false, whole_steps(5.0, s.dt()), path);
   ASSERT_TRUE(r.divergence);
   EXPECT_FALSE(fs::exists(path));
   for (const auto& entry : fs::directory_iterator(fs::temp_directory_path()))

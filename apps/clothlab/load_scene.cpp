@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "apps/clothlab/commands.hpp"
+#include "apps/clothlab/memory_check.hpp"
 #include "load/scene_load.hpp"
 
 namespace clothlab::app {
@@ -9,7 +10,14 @@ namespace clothlab::app {
 std::optional<Scene> load_scene(const char* command, const std::string& path,
                                 const std::vector<std::string>& overrides) {
   try {
-    return read_scene_file(path, overrides);
+    Scene scene = read_scene_file(path, overrides);
+    // A scene that will not fit is refused before anything is built.
+    const std::string refusal = memory_refusal(scene, available_bytes());
+    if (!refusal.empty()) {
+      std::fprintf(stderr, "clothlab %s: %s\n", command, refusal.c_str());
+      return std::nullopt;
+    }
+    return scene;
   } catch (const SceneError& e) {
     std::fprintf(stderr, "clothlab %s: %s\n", command, e.what());
     return std::nullopt;

@@ -4,11 +4,14 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <new>
 #include <string>
 
 #include "apps/clothlab/commands.hpp"
 #include "apps/passive_openmp.hpp"
 #include "bench/suites/suites.hpp"
+#include "sim/core/temp_files.hpp"
+#include "sim/scene/scene_error.hpp"
 
 namespace {
 
@@ -208,6 +211,7 @@ bool unknown_subcommand(const CLI::App& app, int argc, char** argv) {
 
 int main(int argc, char** argv) {
   clothlab::app::prefer_passive_openmp(argv);
+  clothlab::install_temp_file_cleanup();
   using namespace clothlab::app;
   CLI::App app{"ClothLab: a laboratory for simulating cloth and looking at it scientifically.",
                "clothlab"};
@@ -240,11 +244,24 @@ int main(int argc, char** argv) {
     const int rc = app.exit(e);  // prints help or the error
     return rc == 0 ? 0 : 2;
   }
-  if (*check_cmd) return run_check(check);
-  if (*params_cmd) return run_params();
-  if (*trace_cmd) return run_trace_command(trace);
-  if (*render_cmd) return run_render_cli(render);
-  if (*view_cmd) return run_view(view);
-  if (*bench_cmd) return run_bench(bench);
+  // A scene error found while building (a built state the solver cannot hold) is bad input like
+  // any other; running out of memory anywhere is one line and exit 1, never an abort.
+  try {
+    if (*check_cmd) return run_check(check);
+    if (*params_cmd) return run_params();
+    if (*trace_cmd) return run_trace_command(trace);
+    if (*render_cmd) return run_render_cli(render);
+    if (*view_cmd) return run_view(view);
+    if (*bench_cmd) return run_bench(bench);
+  } catch (const clothlab::SceneError& e) {
+    std::fprintf(stderr, "clothlab %s: %s\n", argv[1], e.what());
+    return kBadInput;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr,
+                 "clothlab %s: out of memory (the scene needs more than this machine "
+                 "can give; lower cloth.resolution or the copies)\n",
+                 argv[1]);
+    return 1;
+  }
   return 2;
 }

@@ -3,11 +3,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "apps/clothlab/commands.hpp"
+#include "apps/clothlab/progress_bar.hpp"
 #include "apps/passive_openmp.hpp"
 #include "gpu/backend_solver.hpp"
 #include "sim/scene/scene_parser.hpp"
@@ -45,6 +47,75 @@ bool out_writable(const std::string& out) {
   return why == nullptr;
 }
 
+// A trace longer than this (estimated from its first half second of steps) is refused: 24 hours.
+constexpr double kMaxTraceSeconds = 24.0 * 3600.0;
+// From this estimated length on, the run says its size and shows a progress bar.
+constexpr double kAnnounceSeconds = 5.0;
+// Steps timed before the estimate is made.
+constexpr double kProbeSeconds = 0.5;
+
+std::string duration_words(double seconds) {
+  char buf[48];
+  if (seconds < 120.0)
+    std::snprintf(buf, sizeof buf, "%.3g s", seconds);
+  else if (seconds < 7200.0)
+    std::snprintf(buf, sizeof buf, "%.3g min", seconds / 60.0);
+  else if (seconds < 172800.0)
+    std::snprintf(buf, sizeof buf, "%.3g h", seconds / 3600.0);
+  else
+    std::snprintf(buf, sizeof buf, "%.0f days", seconds / 86400.0);
+  return buf;
+}
+
+// Watches a run: after kProbeSeconds of stepping it estimates the whole run; one beyond
+// kMaxTraceSeconds stops (said, exit 2), one beyond kAnnounceSeconds is announced and gets a
+// progress bar with the time left.
+class TraceWatch {
+ public:
+  TraceWatch(double dt, long total) : dt_(dt), bar_(total, false, "steps") {}
+
+  bool operator()(long done, long total, double seconds) {
+    if (!estimated_ && (seconds >= kProbeSeconds || done == total)) {
+      estimated_ = true;
+      estimate_ = seconds * double(total) / double(done);
+      if (estimate_ > kMaxTraceSeconds) return false;
+      if (estimate_ > kAnnounceSeconds) {
+        std::fprintf(stderr, "clothlab trace: %ld steps of %g s, about %s (%.3g ms/step)\n", total,
+                     dt_, duration_words(estimate_).c_str(), 1e3 * seconds / double(done));
+        bar_.enable();
+      }
+    }
+    bar_.update(done);
+    return true;
+  }
+
+  double estimate() const { return estimate_; }
+
+ private:
+  double dt_;
+  bool estimated_ = false;
+  double estimate_ = 0.0;
+  ProgressBar bar_;
+};
+
+// The step count of --duration at the solver's step, said and refused (exit 2) when it is 0 or
+// beyond what a trace may take.
+long step_count(const TraceArgs& args, const Scene& scene, double dt) {
+  const long total = whole_steps(args.duration, dt);
+  const char* why = nullptr;
+  if (total < 0)
+    why = "is more steps than a trace may take";
+  else if (total == 0)
+    why = "is shorter than one step";
+  if (!why) return total;
+  std::fprintf(stderr,
+               "clothlab trace: --duration %g at solver.dt = %g s%s %s (%.3g steps; at most %.0e, "
+               "at least 1): shorten the run or change solver.dt\n",
+               args.duration, dt, scene.solver.dt_auto ? " (auto)" : "", why, args.duration / dt,
+               kMaxTraceSteps);
+  return -1;
+}
+
 }  // namespace
 
 int run_trace_command(const TraceArgs& args) {
@@ -69,12 +140,25 @@ int run_trace_command(const TraceArgs& args) {
   if (!backend_note.empty()) std::printf("clothlab trace: %s\n", backend_note.c_str());
   const TraceSpec spec = scene.trace ? *scene.trace : default_trace(scene);
   const bool doubles = scene.solver.precision == Precision::f64;
+  const long total = step_count(args, scene, solver->dt());
+  if (total < 0) return kBadInput;
+  TraceWatch watch(solver->dt(), total);
   TraceRunResult r;
   try {
-    r = run_trace(*solver, spec, scene.multi_cloth, doubles, args.duration, args.out);
+    r = run_trace(*solver, spec, scene.multi_cloth, doubles, total, args.out, std::ref(watch));
   } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "clothlab trace: %s\n", e.what());
     return 1;
+  }
+  if (r.stopped) {
+    std::fprintf(stderr,
+                 "clothlab trace: %ld steps of %g s would take about %s here (%.3g ms/step over "
+                 "the first %ld steps; at most %s): shorten --duration or raise solver.dt; no "
+                 "trace written\n",
+                 total, solver->dt(), duration_words(watch.estimate()).c_str(),
+                 1e3 * r.step_seconds / double(r.steps), r.steps,
+                 duration_words(kMaxTraceSeconds).c_str());
+    return kBadInput;
   }
   if (r.divergence) {
     std::fprintf(stderr, "clothlab trace: %s\n  no trace written; replay with: %s\n",

@@ -50,6 +50,7 @@ VideoPipe::VideoPipe(const std::string& path, int width, int height, double fps,
   std::string audio_input, audio_output;
   if (music.clip) {
     music_wav_.path = path + ".tmp." + std::to_string(::getpid()) + ".wav";
+    wav_guard_.emplace(music_wav_.path);
     try {
       write_wav(music_wav_.path, music_for_video(*music.clip, music.seconds));
     } catch (const AudioError& e) {

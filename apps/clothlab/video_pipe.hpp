@@ -5,10 +5,12 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "music/audio_clip.hpp"
+#include "sim/core/temp_files.hpp"
 
 namespace clothlab::app {
 
@@ -41,6 +43,8 @@ class VideoPipe {
   };
 
   std::string path_, temp_;
+  TempFileGuard temp_guard_{temp_};  // both removed on SIGINT / SIGTERM too
+  std::optional<TempFileGuard> wav_guard_;
   TempFile music_wav_;
   std::FILE* pipe_ = nullptr;
   std::size_t frame_bytes_;

@@ -3,15 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/core/vec3_math.hpp"
+
 namespace clothlab {
-namespace {
-
-Vec3d normalised(const Vec3d& a) {
-  const double len = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-  return {a[0] / len, a[1] / len, a[2] / len};
-}
-
-}  // namespace
 
 GridCloth build_grid_cloth(const ClothSpec& spec) {
   GridCloth g;

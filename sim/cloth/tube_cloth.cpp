@@ -3,15 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/core/vec3_math.hpp"
+
 namespace clothlab {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-Vec3d normalised(const Vec3d& a) {
-  const double len = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-  return {a[0] / len, a[1] / len, a[2] / len};
-}
 
 Vec3d cross(const Vec3d& a, const Vec3d& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sim/body/body_motion.hpp"
+#include "sim/core/vec3_math.hpp"
 
 namespace clothlab {
 namespace {
@@ -52,7 +53,7 @@ Collider::Collider(const ColliderSpec& spec, bool build_grid) : spec_(spec) {
   switch (spec.kind) {
     case ColliderKind::plane:
       centre0_ = vec(spec.point);
-      rotation0_ = rotate_y_to(vec(spec.normal).normalized());
+      rotation0_ = rotate_y_to(vec(normalised(spec.normal)));
       break;
     case ColliderKind::sphere:
       centre0_ = vec(spec.center);

@@ -1,5 +1,7 @@
 #include "sim/mesh/triangle_mesh.hpp"
 
+#include "sim/mesh/obj_scan.hpp"
+
 #include <tiny_obj_loader.h>
 
 #include <filesystem>
@@ -11,6 +13,7 @@ TriangleMesh load_obj(const std::string& path, double scale) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw ObjError(path + ": no such OBJ file");
   if (!std::ifstream(path)) throw ObjError(path + ": cannot open OBJ file");
+  const ObjScan scan = scan_obj(path);
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
@@ -42,6 +45,7 @@ TriangleMesh load_obj(const std::string& path, double scale) {
     }
   }
   if (mesh.triangles.empty()) throw ObjError(path + ": the OBJ file has no faces");
+  mesh.triangle_lines = triangle_lines(scan, mesh.triangles.size());
   return mesh;
 }
 

@@ -13,6 +13,7 @@ namespace clothlab {
 struct TriangleMesh {
   std::vector<Eigen::Vector3d> positions;
   std::vector<std::array<int, 3>> triangles;  // polygons fanned into triangles
+  std::vector<int> triangle_lines;            // each triangle's OBJ line (empty if not known)
 };
 
 // A file that cannot be read, is not valid OBJ, or has no faces. what() starts with the path
@@ -23,8 +24,9 @@ class ObjError : public std::runtime_error {
 };
 
 // Reads every face of every object in `path`, scaled by `scale` about the origin. Throws
-// ObjError for a missing or unreadable file, a parse error, a face index outside the vertex
-// list, or a file without faces.
+// ObjError for a missing or unreadable file, a parse error, a vertex coordinate that is missing,
+// not a number, not finite or beyond a float (sim/mesh/obj_scan.hpp), a face index outside the
+// vertex list, or a file without faces.
 TriangleMesh load_obj(const std::string& path, double scale = 1.0);
 
 }  // namespace clothlab

@@ -12,6 +12,7 @@
 #include <toml++/toml.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -75,6 +76,15 @@ Scene parse_scene_file(const std::string& path, const std::vector<std::string>& 
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw SceneError(loc, "", "is a directory, not a scene file");
+  // A device or pipe (/dev/zero, /dev/urandom) would be read forever; a scene is a few
+  // kilobytes, so one beyond kMaxSceneBytes is not a scene.
+  constexpr std::uintmax_t kMaxSceneBytes = 16u << 20;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw SceneError(loc, "", "is not a regular file (a device, pipe or socket), not a scene file");
+  if (const auto bytes = std::filesystem::file_size(path, ec); !ec && bytes > kMaxSceneBytes)
+    throw SceneError(loc, "",
+                     std::to_string(bytes) + " bytes; a scene file may have at most " +
+                         std::to_string(kMaxSceneBytes) + " (16 MiB)");
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw SceneError(loc, "", std::string("cannot open scene file (") + std::strerror(errno) + ")");

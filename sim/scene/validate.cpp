@@ -2,9 +2,11 @@
 // rules on values, so that a Scene built in code (tests, benchmarks) is checked the same way.
 #include "sim/scene/validate.hpp"
 
+#include "sim/core/vec3_math.hpp"
 #include "sim/mesh/triangle_mesh.hpp"
 #include "sim/scene/parameter_binding.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -60,6 +62,7 @@ std::string violated(const Parameter& p, double x) {
 
 constexpr std::int64_t kMaxVertices = 16'000'000;
 constexpr double kOrthogonalityTolerance = 1e-6;
+constexpr int kMaxMeshValence = 128;
 
 class Validator {
  public:
@@ -69,6 +72,7 @@ class Validator {
     check_cloth_count();
     ranges(Section::springs, &scene_.springs, section_path(Section::springs));
     for (const ClothSpec& cloth : scene_.cloths) check_cloth(cloth);
+    check_total_vertices();
     check_forces();
     ranges(Section::solver, &scene_.solver, section_path(Section::solver));
     if (scene_.trace) check_trace(*scene_.trace);
@@ -123,8 +127,15 @@ class Validator {
     throw SceneError(where(key), key, message);
   }
 
+  // Finite, and inside the range of the solver's float (a finite double such as 1e39 would
+  // be inf once the solver reads it as a float; see kMaxSceneMagnitude).
   void finite(const std::string& key, double value) const {
     if (!std::isfinite(value)) fail(key, "must be finite (got " + format_number(value) + ")");
+    if (std::abs(value) > kMaxSceneMagnitude)
+      fail(key,
+           "must be at most 3.4e+38 in magnitude, the largest float the solver can hold "
+           "(got " +
+               format_number(value) + ")");
   }
 
   void check_cloth_count() const {
@@ -180,6 +191,20 @@ class Validator {
                " vertices; at most " + std::to_string(kMaxVertices) + " are allowed");
   }
 
+  // The limit holds for the whole scene too: several cloths each under it could not be built
+  // together (two 16 M-vertex cloths need about 40 GB).
+  void check_total_vertices() const {
+    std::int64_t total = 0;
+    for (const ClothSpec& cloth : scene_.cloths) {
+      if (unloaded_mesh(cloth)) continue;
+      total += std::int64_t{cloth.resolution[0]} * cloth.resolution[1];
+      if (total > kMaxVertices)
+        fail(at(cloth.key, key_of<&ClothSpec::resolution>()),
+             "the scene's cloths have " + std::to_string(total) + " vertices up to this one; at " +
+                 "most " + std::to_string(kMaxVertices) + " are allowed in all");
+    }
+  }
+
   void check_axes(const ClothSpec& cloth) const {
     const std::string u_key = at(cloth.key, key_of<&ClothSpec::u_axis>());
     const std::string v_key = at(cloth.key, key_of<&ClothSpec::v_axis>());
@@ -187,17 +212,16 @@ class Validator {
     const double lv = length(cloth.v_axis);
     if (lu == 0.0) fail(u_key, "must not be the zero vector");
     if (lv == 0.0) fail(v_key, "must not be the zero vector");
-    const Vec3d& u = cloth.u_axis;
-    const Vec3d& v = cloth.v_axis;
-    const double cosine = (u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) / (lu * lv);
+    // The cosine of the normalised axes, as the cloth is built from them.
+    const Vec3d u = normalised(cloth.u_axis);
+    const Vec3d v = normalised(cloth.v_axis);
+    const double cosine = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
     if (!(std::abs(cosine) < kOrthogonalityTolerance))
       fail(v_key, "must be orthogonal to " + std::string(key_of<&ClothSpec::u_axis>()) +
                       " (cos angle = " + format_number(cosine) + ")");
   }
 
-  static double length(const Vec3d& v) {
-    return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  }
+  static double length(const Vec3d& v) { return scaled_length(v); }
 
   // A mesh cloth takes its geometry from the OBJ: no grid or tube keys; every vertex belongs to
   // a face (a loose vertex would fall alone) and no edge has zero length (a spring of rest
@@ -226,6 +250,53 @@ class Validator {
       }
     for (std::size_t v = 0; v < used.size(); ++v)
       if (!used[v]) fail(file, "OBJ vertex " + std::to_string(v + 1) + " belongs to no face");
+    check_triangle_areas(mesh, file);
+    check_valence(mesh, file);
+  }
+
+  // The neighbour-list kernel pads every vertex's spring list to the longest one (slot-major,
+  // so its gather loop vectorises and the GPU reads fixed strides); a vertex with hundreds of
+  // edges (a fan's hub, a UV sphere's pole) would cost that width on every vertex (issue 21: a
+  // 500 000-vertex sphere with valence-1000 poles needed 18 GB). kMaxMeshValence edges at a
+  // vertex (at most twice as many springs with its bending ones) is the cap.
+  void check_valence(const TriangleMesh& mesh, const std::string& file) const {
+    std::vector<std::pair<int, int>> edges;
+    edges.reserve(3 * mesh.triangles.size());
+    for (const auto& t : mesh.triangles)
+      for (int c = 0; c < 3; ++c)
+        edges.emplace_back(std::min(t[c], t[(c + 1) % 3]), std::max(t[c], t[(c + 1) % 3]));
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    std::vector<int> valence(mesh.positions.size(), 0);
+    for (const auto& [a, b] : edges) ++valence[std::size_t(a)], ++valence[std::size_t(b)];
+    const auto most = std::max_element(valence.begin(), valence.end());
+    if (*most > kMaxMeshValence)
+      fail(file, "OBJ vertex " + std::to_string(most - valence.begin() + 1) + " has " +
+                     std::to_string(*most) + " edges; a mesh cloth may have at most " +
+                     std::to_string(kMaxMeshValence) +
+                     " at a vertex (every vertex's spring table is as wide as the widest)");
+  }
+
+  // A zero-area (collinear) triangle has no normal and no wind area; its springs all lie on one
+  // line. "Zero" is relative: twice the area below 1e-10 of the longest edge squared.
+  void check_triangle_areas(const TriangleMesh& mesh, const std::string& file) const {
+    constexpr double kFlat = 1e-10;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      const auto& tri = mesh.triangles[t];
+      const Eigen::Vector3d& a = mesh.positions[std::size_t(tri[0])];
+      const Eigen::Vector3d& b = mesh.positions[std::size_t(tri[1])];
+      const Eigen::Vector3d& c = mesh.positions[std::size_t(tri[2])];
+      const double longest =
+          std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+      if ((b - a).cross(c - a).norm() > kFlat * longest) continue;
+      const std::string where =
+          mesh.triangle_lines.empty()
+              ? "triangle " + std::to_string(t + 1)
+              : "the face on OBJ line " + std::to_string(mesh.triangle_lines[t]);
+      fail(file, where + " (vertices " + std::to_string(tri[0] + 1) + ", " +
+                     std::to_string(tri[1] + 1) + ", " + std::to_string(tri[2] + 1) +
+                     ") has zero area: its corners are collinear");
+    }
   }
 
   // Pins name vertices inside the grid, once each, and leave at least one vertex free (a fully

@@ -3,6 +3,7 @@
 // axes, pins inside the grid, increasing keyframe times, ...) are this file's.
 #pragma once
 
+#include <limits>
 #include <string>
 
 #include "sim/scene/parameters.hpp"
@@ -10,6 +11,11 @@
 #include "sim/scene/scene_error.hpp"
 
 namespace clothlab {
+
+// Every number a scene gives must be at most this in magnitude: the largest float, since the
+// float solver reads each value in its precision and a finite double beyond it (1e39) would be
+// inf there. The double solver takes the same limit, so a scene means the same in both.
+inline constexpr double kMaxSceneMagnitude = std::numeric_limits<float>::max();
 
 // Throws SceneError for the first bad value, located through Scene::locations (a key with no
 // recorded location is reported at its nearest recorded parent, else at Scene::file). The scene

@@ -140,8 +140,10 @@ StepChoice choose_step(IntegratorKind kind, const Spectrum& spectrum) {
       // Small steps (Macklin et al. 2019): many substeps of one constraint sweep each; a substep
       // of kXpbdSubstepLimits explicit limits keeps the error near symplectic Euler's.
       c.dt = kDisplayStep;
-      c.substeps =
-          std::max(1, static_cast<int>(std::ceil(kDisplayStep / (kXpbdSubstepLimits * c.limit))));
+      // Counted in double and held below INT_MAX: at k = 9e18 N/m the count is 1.7e9, which
+      // check_step then refuses (solver.substeps allows at most 100000).
+      c.substeps = static_cast<int>(
+          std::clamp(std::ceil(kDisplayStep / (kXpbdSubstepLimits * c.limit)), 1.0, 2.0e9));
       return c;
     case IntegratorKind::vbd:
     case IntegratorKind::bdf2:

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -46,6 +47,8 @@ TraceWriter::~TraceWriter() {
 }
 
 void TraceWriter::number(double value) {
+  if (!std::isfinite(value) && bad_column_ < 0) bad_column_ = column_;
+  ++column_;
   std::fputc(',', file_);
   std::fprintf(file_, format_, value);
 }
@@ -57,10 +60,12 @@ void TraceWriter::write_step(Solver& solver) {
   if (spec_.force && !spec_.vertices.empty()) solver.update_force_field();
   const Energy e = spec_.energy ? solver.energy() : Energy{};
   auto row_start = [&](const TraceVertex& v) {
+    column_ = 1;  // the next number() is column 1, time
     std::fprintf(file_, "%ld", solver.step_count());
     number(solver.time());
     if (multi_cloth_) std::fprintf(file_, ",%d", v.cloth);
     std::fprintf(file_, ",%d,%d", v.i, v.j);
+    column_ += multi_cloth_ ? 3 : 2;
   };
   auto energy_cols = [&] {
     if (!spec_.energy) return;
@@ -82,6 +87,12 @@ void TraceWriter::write_step(Solver& solver) {
     energy_cols();
     std::fputc('\n', file_);
   }
+}
+
+std::string TraceWriter::first_non_finite() const {
+  if (bad_column_ < 0) return "";
+  const auto cols = trace_columns(spec_, multi_cloth_);
+  return cols[std::size_t(bad_column_)] + " is not finite";
 }
 
 void TraceWriter::commit() {

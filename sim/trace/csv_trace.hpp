@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/core/temp_files.hpp"
 #include "sim/solver.hpp"
 
 namespace clothlab {
@@ -29,16 +30,23 @@ class TraceWriter {
   // Writes the rows of the solver's current step. Updates the force field if forces are traced.
   void write_step(Solver& solver);
   void commit();
+  // Whether every number written so far was finite, and the first column that was not
+  // ("fx is not finite"); run_trace stops before committing such a file.
+  bool finite() const { return bad_column_ < 0; }
+  std::string first_non_finite() const;
 
  private:
   void number(double value);
 
   std::string path_, temp_path_;
+  TempFileGuard temp_guard_{temp_path_};  // removed on SIGINT / SIGTERM too
   TraceSpec spec_;
   bool multi_cloth_;
   const char* format_;
   std::FILE* file_ = nullptr;
   std::vector<int> vertex_index_;
+  int column_ = 0;       // the column number() writes next
+  int bad_column_ = -1;  // the first non-finite column, or -1
 };
 
 // A trace read back: column names and rows of numbers.

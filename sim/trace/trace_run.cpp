@@ -15,33 +15,71 @@ TraceSpec default_trace(const Scene& scene) {
   return spec;
 }
 
+long whole_steps(double duration, double dt) {
+  // The same relative margin as advance(): 1.0 / 0.001 is 999.99...
+  const double steps = std::floor(duration / dt * (1.0 + 1e-12));
+  if (!(steps >= 0.0 && steps <= kMaxTraceSteps)) return -1;
+  return static_cast<long>(steps);
+}
+
+namespace {
+
+// A row about to hold a non-finite value is a divergence: the trace is not written.
+bool row_is_finite(const TraceWriter& writer, const Solver& solver, TraceRunResult& r) {
+  if (writer.finite()) return true;
+  Divergence d;
+  d.step = solver.step_count();
+  d.time = solver.time();
+  d.quantity = writer.first_non_finite() + " in the trace row";
+  r.divergence = d;
+  return false;
+}
+
+}  // namespace
+
 TraceRunResult run_trace(Solver& solver, const TraceSpec& spec, bool multi_cloth,
-                         bool double_digits, double duration, const std::string& out_path) {
+                         bool double_digits, long total, const std::string& out_path,
+                         const TraceProgress& progress) {
   using Clock = std::chrono::steady_clock;
+  // Steps between progress reports, so that a trace written rarely (every = 1e6) still reports:
+  // one at first, doubling while a stretch takes under kReportSeconds, up to kReportSteps (a
+  // large cloth's first report comes after one step, not after 256).
+  constexpr long kReportSteps = 256;
+  constexpr double kReportSeconds = 0.05;
+  long stretch = 1;
   TraceRunResult r;
   TraceWriter writer(out_path, spec, multi_cloth, double_digits);
-  // The same whole-step count advance() would take for this duration.
-  const auto total = static_cast<long>(std::floor(duration / solver.dt() * (1.0 + 1e-12)));
   writer.write_step(solver);
   ++r.rows;
   Clock::duration stepping{};
-  while (r.steps < total) {
-    const long chunk = std::min<long>(spec.every, total - r.steps);
+  long next_row = std::min<long>(spec.every, total);
+  while (r.steps < total && row_is_finite(writer, solver, r)) {
+    const long chunk = std::min<long>(stretch, next_row - r.steps);
     const auto t0 = Clock::now();
     const AdvanceResult a = solver.step(chunk);
-    stepping += Clock::now() - t0;
+    const auto took = Clock::now() - t0;
+    stepping += took;
+    if (std::chrono::duration<double>(took).count() < kReportSeconds)
+      stretch = std::min(2 * stretch, kReportSteps);
     r.steps += a.steps;
     if (a.divergence) {
       r.divergence = a.divergence;
       break;  // the writer's destructor removes the temporary file
     }
+    if (progress && !progress(r.steps, total, std::chrono::duration<double>(stepping).count())) {
+      r.stopped = true;
+      break;
+    }
+    if (r.steps < next_row) continue;
     writer.write_step(solver);
     ++r.rows;
+    next_row = std::min<long>(next_row + spec.every, total);
   }
+  if (!r.divergence && !r.stopped) row_is_finite(writer, solver, r);
   r.step_seconds = std::chrono::duration<double>(stepping).count();
   r.simulated_time = solver.time();
   r.final_energy = solver.energy();
-  if (!r.divergence) writer.commit();
+  if (!r.divergence && !r.stopped) writer.commit();
   return r;
 }
 

@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "sim/core/temp_files.hpp"
+
 namespace clothlab {
 
 Image::Image(int w, int h) : width(w), height(h) {
@@ -35,6 +37,7 @@ void write_png(const Image& image, const std::string& path) {
     throw std::runtime_error("write_png: invalid image for '" + path + "'");
   }
   const std::string tmp = path + ".tmp";
+  const TempFileGuard guard(tmp);  // removed on SIGINT / SIGTERM too
   const int ok =
       stbi_write_png(tmp.c_str(), image.width, image.height, 4, image.rgba.data(), image.width * 4);
   if (!ok) {

@@ -1,0 +1,79 @@
+#include "apps/clothlab/memory_check.hpp"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "sim/model/memory_estimate.hpp"
+#include "sim/scene/validate.hpp"
+
+namespace clothlab::app {
+namespace {
+
+constexpr std::uint64_t kUnlimited = std::numeric_limits<std::uint64_t>::max();
+
+// The first number in `path` (a cgroup file holds "max" when unlimited), or kUnlimited.
+std::uint64_t number_in(const char* path) {
+  std::ifstream in(path);
+  std::uint64_t value = 0;
+  return in >> value ? value : kUnlimited;
+}
+
+std::uint64_t mem_available() {
+  std::ifstream in("/proc/meminfo");
+  std::string key;
+  std::uint64_t kib = 0;
+  std::string unit;
+  while (in >> key >> kib >> unit)
+    if (key == "MemAvailable:") return kib * 1024;
+  return kUnlimited;
+}
+
+std::string gigabytes(std::uint64_t bytes) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g GB", double(bytes) / 1e9);
+  return buf;
+}
+
+}  // namespace
+
+std::uint64_t available_bytes() {
+  std::uint64_t limit = mem_available();
+  const std::uint64_t cgroup = number_in("/sys/fs/cgroup/memory.max");
+  if (cgroup != kUnlimited) {
+    const std::uint64_t used = number_in("/sys/fs/cgroup/memory.current");
+    limit = std::min(limit, cgroup > used && used != kUnlimited ? cgroup - used : 0);
+  }
+  rlimit as{};
+  if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY)
+    limit = std::min<std::uint64_t>(limit, as.rlim_cur);
+  return limit;
+}
+
+std::string memory_refusal(const Scene& scene, std::uint64_t available) {
+  const std::uint64_t needed = estimated_solver_bytes(scene);
+  if (needed <= available) return "";
+  std::uint64_t vertices = 0;
+  for (const ClothSpec& c : scene.cloths)
+    vertices += std::uint64_t(c.resolution[0]) * c.resolution[1];
+  const ClothSpec& largest = *std::max_element(
+      scene.cloths.begin(), scene.cloths.end(), [](const ClothSpec& a, const ClothSpec& b) {
+        return std::int64_t{a.resolution[0]} * a.resolution[1] <
+               std::int64_t{b.resolution[0]} * b.resolution[1];
+      });
+  const std::string key = largest.key + ".resolution";
+  const SourceLoc loc = location_of(scene, key);
+  return SceneError(
+             loc, key,
+             "the scene needs about " + gigabytes(needed) + " to build (" +
+                 std::to_string(vertices) + " vertices, " + to_string(scene.solver.integrator) +
+                 ", " + (scene.solver.precision == Precision::f64 ? "double" : "float") +
+                 ") and this machine can give " + gigabytes(available) + "; lower the resolution")
+      .what();
+}
+
+}  // namespace clothlab::app

@@ -1,0 +1,19 @@
+// The memory a built scene will need against what this machine can give it, checked before the
+// solver is built (issue 21: a 4000 x 4000 cloth needs about 19 GB).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "sim/scene/scene.hpp"
+
+namespace clothlab::app {
+
+// Bytes this process may still allocate: the least of /proc/meminfo's MemAvailable, the cgroup
+// v2 limit less its current use, and RLIMIT_AS (each where the machine has it).
+std::uint64_t available_bytes();
+
+// "" when the scene fits; otherwise the reason, naming the key to change and both figures.
+std::string memory_refusal(const Scene& scene, std::uint64_t available);
+
+}  // namespace clothlab::app
