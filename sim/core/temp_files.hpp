@@ -2,8 +2,8 @@
 // ClothLab writes goes to a temporary path first and is renamed when complete (complete or
 // absent); a guard registers that path for its lifetime, and the handler installed by
 // install_temp_file_cleanup() unlinks every registered path and then lets the signal end the
-// process as it would have. SIGKILL cannot be caught: it leaves `NAME.tmp.PID` files (README,
-// "Files ClothLab writes").
+// process as it would have. SIGKILL cannot be caught: it leaves `NAME.tmp.PID` files
+// (docs/inputs.md, "Temporary files and signals").
 //
 // The registry is the one piece of process-wide mutable state in ClothLab: a signal handler can
 // reach nothing else. It is a fixed table of atomic pointers, so registering allocates nothing
