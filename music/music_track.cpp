@@ -13,7 +13,7 @@ MusicTrack load_music(const std::string& path) {
   if (m.clip.sample_rate < kMinMusicRate)
     throw AudioError("audio file '" + path + "': a sample rate of " +
                      std::to_string(m.clip.sample_rate) +
-                     " Hz is too low for the beat tracker (at " + "least " +
+                     " Hz is too low for the beat tracker (at least " +
                      std::to_string(kMinMusicRate) + " Hz: its high band starts at 2 kHz)");
   m.analysis = track_beats(m.clip);
   m.source = path;

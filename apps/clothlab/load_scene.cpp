@@ -11,12 +11,8 @@ std::optional<Scene> load_scene(const char* command, const std::string& path,
                                 const std::vector<std::string>& overrides) {
   try {
     Scene scene = read_scene_file(path, overrides);
-    // A scene that will not fit is refused before anything is built.
-    const std::string refusal = memory_refusal(scene, available_bytes());
-    if (!refusal.empty()) {
-      std::fprintf(stderr, "clothlab %s: %s\n", command, refusal.c_str());
-      return std::nullopt;
-    }
+    check_memory(scene,
+                 available_bytes());  // a scene that will not fit is refused before it is built
     return scene;
   } catch (const SceneError& e) {
     std::fprintf(stderr, "clothlab %s: %s\n", command, e.what());

@@ -54,26 +54,22 @@ std::uint64_t available_bytes() {
   return limit;
 }
 
-std::string memory_refusal(const Scene& scene, std::uint64_t available) {
+void check_memory(const Scene& scene, std::uint64_t available) {
   const std::uint64_t needed = estimated_solver_bytes(scene);
-  if (needed <= available) return "";
-  std::uint64_t vertices = 0;
-  for (const ClothSpec& c : scene.cloths)
-    vertices += std::uint64_t(c.resolution[0]) * c.resolution[1];
+  if (needed <= available) return;
+  const auto vertices = static_cast<std::uint64_t>(scene_vertices(scene));
   const ClothSpec& largest = *std::max_element(
       scene.cloths.begin(), scene.cloths.end(), [](const ClothSpec& a, const ClothSpec& b) {
         return std::int64_t{a.resolution[0]} * a.resolution[1] <
                std::int64_t{b.resolution[0]} * b.resolution[1];
       });
   const std::string key = largest.key + ".resolution";
-  const SourceLoc loc = location_of(scene, key);
-  return SceneError(
-             loc, key,
-             "the scene needs about " + gigabytes(needed) + " to build (" +
-                 std::to_string(vertices) + " vertices, " + to_string(scene.solver.integrator) +
-                 ", " + (scene.solver.precision == Precision::f64 ? "double" : "float") +
-                 ") and this machine can give " + gigabytes(available) + "; lower the resolution")
-      .what();
+  throw SceneError(
+      location_of(scene, key), key,
+      "the scene needs about " + gigabytes(needed) + " to build (" + std::to_string(vertices) +
+          " vertices, " + to_string(scene.solver.integrator) + ", " +
+          (scene.solver.precision == Precision::f64 ? "double" : "float") +
+          ") and this machine can give " + gigabytes(available) + "; lower the resolution");
 }
 
 }  // namespace clothlab::app

@@ -13,7 +13,8 @@ namespace clothlab::app {
 // v2 limit less its current use, and RLIMIT_AS (each where the machine has it).
 std::uint64_t available_bytes();
 
-// "" when the scene fits; otherwise the reason, naming the key to change and both figures.
-std::string memory_refusal(const Scene& scene, std::uint64_t available);
+// Throws SceneError, at the largest cloth's resolution with both figures, when the scene will not
+// fit in `available` bytes.
+void check_memory(const Scene& scene, std::uint64_t available);
 
 }  // namespace clothlab::app

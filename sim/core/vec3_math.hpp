@@ -23,15 +23,8 @@ inline double scaled_length(const std::array<double, 3>& a) {
 
 // The unit vector along a (a must be non-zero and finite).
 inline std::array<double, 3> normalised(const std::array<double, 3>& a) {
-  const double squares = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
-  if (std::isnormal(squares) && std::isfinite(squares)) {
-    const double len = std::sqrt(squares);
-    return {a[0] / len, a[1] / len, a[2] / len};
-  }
-  const double m = std::max({std::abs(a[0]), std::abs(a[1]), std::abs(a[2])});
-  const double x = a[0] / m, y = a[1] / m, z = a[2] / m;
-  const double len = std::sqrt(x * x + y * y + z * z);
-  return {x / len, y / len, z / len};
+  const double len = scaled_length(a);
+  return {a[0] / len, a[1] / len, a[2] / len};
 }
 
 }  // namespace clothlab

@@ -37,9 +37,14 @@ double widest(const TriangleMesh& mesh) {
 
 }  // namespace
 
-std::uint64_t estimated_solver_bytes(const Scene& scene) {
+double scene_vertices(const Scene& scene) {
   double vertices = 0.0;
   for (const ClothSpec& c : scene.cloths) vertices += double(c.resolution[0]) * c.resolution[1];
+  return vertices;
+}
+
+std::uint64_t estimated_solver_bytes(const Scene& scene) {
+  const double vertices = scene_vertices(scene);
   const PerVertex b = per_vertex(scene.solver.integrator);
   double bytes = vertices * (scene.solver.precision == Precision::f64 ? b.f64 : b.f32);
   // A sparse Cholesky factor of a grid's Laplacian fills in as n log n (nested dissection,

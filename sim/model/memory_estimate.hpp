@@ -10,6 +10,9 @@
 
 namespace clothlab {
 
+// Vertices of all the scene's cloths (a mesh cloth's once loaded).
+double scene_vertices(const Scene& scene);
+
 // Bytes the built solver of `scene` will hold (all cloths, its integrator and precision).
 std::uint64_t estimated_solver_bytes(const Scene& scene);
 

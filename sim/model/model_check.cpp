@@ -51,19 +51,22 @@ std::string springs_key() {
 template <class T>
 void check_built_model(const Model<T>& m, const Scene& scene, double energy) {
   for (std::size_t v = 0; v < m.n; ++v) {
-    const ClothSpec& cloth = cloth_of(m.cloths, scene, v);
-    const std::string shape_keys = cloth.key + "." + std::string(key_of<&ClothSpec::size>()) +
-                                   ", " + cloth.key + "." +
-                                   std::string(key_of<&ClothSpec::origin>());
+    const auto bad_position = [&] {
+      const ClothSpec& cloth = cloth_of(m.cloths, scene, v);
+      fail(scene, cloth.key,
+           "vertex " + std::to_string(v) + " is built at a position the " + name_of<T>() +
+               " solver cannot hold (|x| <= 3.4e+38 m); check " + cloth.key + "." +
+               std::string(key_of<&ClothSpec::size>()) + ", " + cloth.key + "." +
+               std::string(key_of<&ClothSpec::origin>()));
+    };
     for (int a = 0; a < 3; ++a)
-      if (!representable(m.rest_positions.axis(a)[v]))
-        fail(scene, cloth.key,
-             "vertex " + std::to_string(v) + " is built at a position the " + name_of<T>() +
-                 " solver cannot hold (|x| <= 3.4e+38 m); check " + shape_keys);
-    if (!(representable(m.mass[v]) && m.mass[v] > T(0)))
+      if (!representable(m.rest_positions.axis(a)[v])) bad_position();
+    if (!(representable(m.mass[v]) && m.mass[v] > T(0))) {
+      const ClothSpec& cloth = cloth_of(m.cloths, scene, v);
       fail(scene, cloth.key + "." + std::string(key_of<&ClothSpec::mass>()),
            "gives vertex masses of " + format_number(double(m.mass[v])) + " kg in " + name_of<T>() +
                " (each must be positive and finite)");
+    }
   }
   auto springs = [&](const auto& values, const char* what) {
     for (std::size_t s = 0; s < values.size(); ++s)

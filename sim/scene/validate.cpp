@@ -2,6 +2,7 @@
 // rules on values, so that a Scene built in code (tests, benchmarks) is checked the same way.
 #include "sim/scene/validate.hpp"
 
+#include "sim/cloth/mesh_cloth.hpp"
 #include "sim/core/vec3_math.hpp"
 #include "sim/mesh/triangle_mesh.hpp"
 #include "sim/scene/parameter_binding.hpp"
@@ -260,15 +261,9 @@ class Validator {
   // 500 000-vertex sphere with valence-1000 poles needed 18 GB). kMaxMeshValence edges at a
   // vertex (at most twice as many springs with its bending ones) is the cap.
   void check_valence(const TriangleMesh& mesh, const std::string& file) const {
-    std::vector<std::pair<int, int>> edges;
-    edges.reserve(3 * mesh.triangles.size());
-    for (const auto& t : mesh.triangles)
-      for (int c = 0; c < 3; ++c)
-        edges.emplace_back(std::min(t[c], t[(c + 1) % 3]), std::max(t[c], t[(c + 1) % 3]));
-    std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
     std::vector<int> valence(mesh.positions.size(), 0);
-    for (const auto& [a, b] : edges) ++valence[std::size_t(a)], ++valence[std::size_t(b)];
+    for (const auto& [a, b] : mesh_edges(mesh.triangles))
+      ++valence[std::size_t(a)], ++valence[std::size_t(b)];
     const auto most = std::max_element(valence.begin(), valence.end());
     if (*most > kMaxMeshValence)
       fail(file, "OBJ vertex " + std::to_string(most - valence.begin() + 1) + " has " +

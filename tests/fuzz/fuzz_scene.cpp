@@ -57,9 +57,7 @@ int fuzz_scene(const std::uint8_t* data, std::size_t size) {
   } catch (const SceneError&) {
     return 0;  // refused with its location: what bad input must get
   }
-  double vertices = 0;
-  for (const ClothSpec& c : scene.cloths) vertices += double(c.resolution[0]) * c.resolution[1];
-  if (vertices > kMaxVertices || estimated_solver_bytes(scene) > kMaxBytes) return 0;
+  if (scene_vertices(scene) > kMaxVertices || estimated_solver_bytes(scene) > kMaxBytes) return 0;
   if (scene.solver.backend == Backend::gpu) scene.solver.backend = Backend::cpu;
   std::unique_ptr<Solver> solver;
   try {
