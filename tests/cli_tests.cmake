@@ -158,7 +158,7 @@ foreach(kind implicit_euler xpbd local_global vbd bdf2)
 endforeach()
 clothlab_cli_test(set.bad_substeps 2 "--set solver.substeps=0: solver.substeps: must be between 1"
   check ${CLOTHLAB_DEFAULT_SCENE} --set solver.substeps=0)
-clothlab_cli_test(set.bad_cg_tolerance 2 "solver.cg_tolerance: must be between 0 and 1"
+clothlab_cli_test(set.bad_cg_tolerance 2 "solver.cg_tolerance: must be between 0 \\(automatic\\) and 1, exclusive of 1"
   check ${CLOTHLAB_DEFAULT_SCENE} --set solver.cg_tolerance=2)
 clothlab_cli_test(set.bad_dt_word 2 "solver.dt: expected a number of seconds or \"auto\""
   check ${CLOTHLAB_DEFAULT_SCENE} --set solver.dt=fastest)
@@ -187,6 +187,11 @@ clothlab_cli_test(render.gpu_backend 0 "steps of [0-9.]+ s on the GPU\\)"
 # The GPU backend against the CPU solver (an OpenGL context: EGL on llvmpipe in CI).
 clothlab_cli_test(bench.backends_quick 0 "CPU and GPU backends.*gpu .*32x32.*wrote .*backends\\.csv"
   bench --suite backends --quick --out ${CLOTHLAB_TRACE_OUT}/bench/backends.csv)
+# An existing directory as --out takes the one suite's files (it was renamed onto: an error).
+file(MAKE_DIRECTORY ${CLOTHLAB_TRACE_OUT}/bench_directory)
+clothlab_cli_test(bench.largestep_quick_into_directory 0
+  "Large steps.*wrote [^\n]*/bench_directory/largestep\\.csv"
+  bench --suite largestep --quick --out ${CLOTHLAB_TRACE_OUT}/bench_directory)
 clothlab_cli_test(bench.bad_suite 2 "--suite: speed not in"
   bench --suite speed)
 # The views suite renders headless (EGL, so the GL tests' environment): a reduced run prints the

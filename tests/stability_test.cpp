@@ -103,6 +103,24 @@ TEST(AutoStep, LargeStepMethodsUseTheDisplayRate) {
   EXPECT_NEAR(ie.dt(), kImplicitStep, 1e-15);
 }
 
+// xpbd's automatic substeps follow the stiffness up to kXpbdMaxSubsteps and stop there (a stiff
+// lattice gains little past it; step_limit.hpp has the measurements).
+TEST(AutoStep, XpbdSubstepsStopAtTheirCap) {
+  Scene scene = testing::falling_sheet(16, IntegratorKind::xpbd, 1.0);
+  scene.solver.dt_auto = true;
+  int previous = 0;
+  for (double k : {100.0, 1e3, 1e4, 1e5, 1e7}) {
+    scene.springs.stiffness = k;
+    SolverT<double> x(scene);
+    const StepChoice c = choose_step(IntegratorKind::xpbd, estimate_spectrum(x.model()));
+    const int uncapped = int(std::ceil(1.0 / 60.0 / (kXpbdSubstepLimits * c.limit)));
+    EXPECT_EQ(x.substeps(), std::min(uncapped, kXpbdMaxSubsteps)) << k;
+    EXPECT_GE(x.substeps(), previous) << k;
+    previous = x.substeps();
+  }
+  EXPECT_EQ(previous, kXpbdMaxSubsteps);  // k = 1e7 N/m would ask for hundreds
+}
+
 // What `auto` is for: a user who changes stiffness or resolution keeps a stable run without
 // finding a step by hand, where a fixed step that suits one setting diverges for another.
 TEST(AutoStep, FollowsStiffnessAndResolution) {

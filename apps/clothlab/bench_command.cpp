@@ -56,7 +56,9 @@ int run_bench(const BenchArgs& args) {
       // One suite: --out is its CSV file. All suites: --out is a directory.
       fs::path out =
           args.out.empty() ? fs::path("out/bench") / (suite + ".csv") : fs::path(args.out);
-      if (suites.size() > 1 && !args.out.empty()) out = fs::path(args.out) / (suite + ".csv");
+      // An existing directory takes the suite's file whatever the number of suites.
+      if (!args.out.empty() && (suites.size() > 1 || fs::is_directory(args.out)))
+        out = fs::path(args.out) / (suite + ".csv");
       const bench::Stopwatch clock;
       const std::vector<bench::Table> tables = run_suite(suite, options);
       for (const bench::Table& t : tables) bench::print_table(std::cout, t);

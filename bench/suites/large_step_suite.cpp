@@ -22,9 +22,11 @@ struct Variant {
   IntegratorKind kind;
   bool dt_auto = false;
   int substeps = 1;
-  int iterations = 0;   // solver.iterations (xpbd, local_global, vbd)
-  int newton = 0;       // solver.newton_iterations (implicit_euler, bdf2)
-  bool by_vbd = false;  // bdf2: solver.bdf2_solver = "vbd"
+  int iterations = 0;          // solver.iterations (xpbd, local_global, vbd)
+  int newton = 0;              // solver.newton_iterations (implicit_euler, bdf2)
+  bool by_vbd = false;         // bdf2: solver.bdf2_solver = "vbd"
+  double cg_tolerance = 0.0;   // solver.cg_tolerance (0: automatic)
+  double chebyshev_rho = 0.0;  // solver.chebyshev_rho (0: the method's default)
   std::string label() const {
     std::string s = to_string(kind);
     if (by_vbd) s += " by vbd";
@@ -32,9 +34,13 @@ struct Variant {
     if (substeps > 1) s += " x" + std::to_string(substeps);
     if (iterations > 0) s += " it" + std::to_string(iterations);
     if (newton > 0) s += " newton" + std::to_string(newton);
+    if (cg_tolerance > 0.0) s += " cg" + num(cg_tolerance);
+    if (chebyshev_rho > 0.0) s += " rho" + num(chebyshev_rho);
     return s;
   }
 };
+
+constexpr double kPlain = 1e-9;  // chebyshev_rho that turns the acceleration off
 
 // Each method at its defaults, and the settings around them that show what they cost.
 std::vector<Variant> variants(bool quick) {
@@ -43,14 +49,19 @@ std::vector<Variant> variants(bool quick) {
   return {{K::symplectic_euler, true},
           {K::implicit_euler, false, 1, 0, 1},
           {K::implicit_euler},
+          {K::implicit_euler, false, 1, 0, 0, false, 1e-6},
           {K::bdf2},
+          {K::bdf2, false, 1, 0, 0, false, 1e-6},
           {K::bdf2, false, 1, 0, 0, true},
           {K::vbd, false, 1, 10},
           {K::vbd},
           {K::vbd, false, 1, 100},
           {K::xpbd, true},
           {K::xpbd, false, 10},
-          {K::local_global}};
+          {K::xpbd, false, 20},
+          {K::local_global, false, 1, 0, 0, false, 0.0, kPlain},
+          {K::local_global},
+          {K::local_global, false, 1, 30}};
 }
 
 struct Outcome {
@@ -93,6 +104,8 @@ Scene sheet(int resolution, double stiffness, const Variant& v, int threads) {
   s.solver.iterations = v.iterations;
   s.solver.newton_iterations = v.newton;
   if (v.by_vbd) s.solver.bdf2_solver = StepSolver::vbd;
+  s.solver.cg_tolerance = v.cg_tolerance;
+  s.solver.chebyshev_rho = v.chebyshev_rho;
   s.solver.threads = threads;
   return s;
 }

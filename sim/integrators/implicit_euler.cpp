@@ -10,7 +10,7 @@
 // with K and D at the current iterate; the PCG starts from 0. First order; unconditionally
 // stable for the springs. On the 32 x 32 accuracy sheet at 1/60 s the linearised step alone is
 // 100-620 mm from an accurate run where the converged step is 43-47 mm (docs/solver.md), so
-// the default is two iterations.
+// Newton iterates by default (up to kDefaultNewton iterations, until newton_tolerance).
 //
 // Per spring (a, b) with d = (x_b - x_a) / l the stiffness block is
 //   Ks = k [d d^T + max(0, 1 - L/l) (I - d d^T)],   df_a/dx_a = -Ks,   df_a/dx_b = Ks.
@@ -39,7 +39,8 @@
 // Baraff-Witkin: their dv, residual and search direction stay exactly 0. PCG starts from the
 // previous step's dv (on the falling 32x32 sheet 36 instead of 45 iterations per step at
 // dt = 1e-3, 131 instead of 137 at 1/60) unless invalidate() said the state changed, and stops
-// when |r| <= cg_tolerance |b| (r the recursively updated residual) or after cg_max_iterations
+// when |r| <= tol |b| (r the recursively updated residual; tol = cg_tolerance, or automatic: see
+// pcg_tolerance) or after cg_max_iterations
 // (then last_stats().converged is false). Dot products are accumulated in double, one partial sum
 // per 512-vertex block, added in block order.
 #include <algorithm>
@@ -61,6 +62,28 @@ constexpr std::size_t kSums = 3;
 
 constexpr int kDefaultNewton = 8;
 
+// PCG's relative tolerance when solver.cg_tolerance is 0 (automatic). The single linearised
+// step is the whole solve, so it is solved tightly. When Newton iterates, each linear solve only
+// has to point the next iteration the right way (inexact Newton: Dembo, Eisenstat & Steihaug
+// 1982, "Inexact Newton methods", SIAM J. Numer. Anal. 19(2); the outer iteration recomputes the
+// true residual every time). Measured on the 32 x 32 accuracy sheet at 1/60 s, k0 = 1e3 / 1e4 /
+// 1e5, RMS at 0.5 s from RK4 (`clothlab bench --suite largestep`, one run): bdf2 lands 20.6 /
+// 20.5 / 23.6 mm with 1e-2 against 20.5 / 19.3 / 23.6 mm with 1e-6, at 0.46 / 0.49 / 0.63 of
+// the cost; implicit_euler 47.5 / 47.4 / 51.1 mm against 47.4 / 47.3 / 50.1 mm at 0.51 / 0.59 /
+// 0.35 of the cost. With 3e-2 bdf2 was 77.6 mm at k0 = 1e5 and with 1e-1 105 mm, so 1e-2 is
+// the loosest that keeps the converged accuracy.
+constexpr double kLinearisedTolerance = 1e-6;
+constexpr double kNewtonForcing = 1e-2;
+
+int newton_iterations(const SolverSpec& spec) {
+  return spec.newton_iterations > 0 ? spec.newton_iterations : kDefaultNewton;
+}
+
+double pcg_tolerance(const SolverSpec& spec) {
+  if (spec.cg_tolerance > 0.0) return spec.cg_tolerance;
+  return newton_iterations(spec) > 1 ? kNewtonForcing : kLinearisedTolerance;
+}
+
 // How one vertex block stores its neighbours: `slots` slots of (end - begin) entries each from
 // entry `entry`; with `diagonal`, slot k holds the neighbours at index offset shift[k].
 struct BlockLayout {
@@ -73,9 +96,9 @@ class ImplicitEuler final : public Integrator<T> {
  public:
   ImplicitEuler(const Model<T>& m, const SolverSpec& spec)
       : n_(m.n),
-        tolerance_(spec.cg_tolerance),
+        tolerance_(pcg_tolerance(spec)),
         max_iterations_(spec.cg_max_iterations),
-        newton_(spec.newton_iterations > 0 ? spec.newton_iterations : kDefaultNewton),
+        newton_(newton_iterations(spec)),
         newton_tolerance_(spec.newton_tolerance) {
     const SpringList<T> list = spring_list(m);
     const std::size_t ns = list.size();

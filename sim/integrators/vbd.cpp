@@ -29,15 +29,16 @@
 // step's acceleration (v_n - v_{n-1}) / h projected on gravity's direction and clamped to
 // [0, |g|] (after invalidate() the full gravity). Chebyshev acceleration (Wang 2015, "A
 // Chebyshev semi-iterative approach for accelerating projective and position-based dynamics",
-// ACM TOG 34(6)) after each iteration k > S = kChebyshevDelay: x = omega_k (x - x^(k-2)) +
-// x^(k-2), omega_(S+1) = 2 / (2 - rho^2), omega_k = 4 / (4 - rho^2 omega_(k-1)), rho =
-// kChebyshevRho. Then v_(n+1) = (x - x_n) / h. Pinned vertices keep x and v.
+// ACM TOG 34(6); chebyshev.hpp) after S = kChebyshevDelay plain iterations, with rho =
+// solver.chebyshev_rho or kChebyshevRho. Then v_(n+1) = (x - x_n) / h. Pinned vertices keep x
+// and v.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "sim/core/parallel.hpp"
+#include "sim/integrators/chebyshev.hpp"
 #include "sim/integrators/integrator.hpp"
 
 namespace clothlab {
@@ -50,7 +51,9 @@ constexpr int kDefaultIterations = 30;
 // Chebyshev (docs/solver.md): rho 0.9, from the fourth iteration on. On the 32 x 32 sheet at
 // 1/60 s, 10 iterations: rho 0 / 0.5 / 0.9 leave it 497 / 486 / 397 mm from RK4 at 0.5 s; with
 // the acceleration from the second iteration, 10 substeps of 2 iterations blew up (the
-// extrapolation after a single sweep adds energy every step), from the fourth they run.
+// extrapolation after a single sweep adds energy every step), from the fourth they run. Larger
+// rho gains little at 30 iterations (0.95 / 0.98 / 0.99: 304 / 286 / 269 mm at k0 = 1e3, 445 /
+// 366 / 551 mm at 1e5): Gauss-Seidel's slow modes here are the lattice's long stretching waves.
 constexpr double kChebyshevRho = 0.9;
 constexpr int kChebyshevDelay = 3;  // iterations (0-based) before the first accelerated one
 
@@ -76,7 +79,8 @@ template <class T>
 class Vbd final : public Integrator<T> {
  public:
   Vbd(const Model<T>& m, const SolverSpec& spec)
-      : iterations_(spec.iterations > 0 ? spec.iterations : kDefaultIterations) {
+      : iterations_(spec.iterations > 0 ? spec.iterations : kDefaultIterations),
+        chebyshev_{spec.chebyshev_rho > 0.0 ? spec.chebyshev_rho : kChebyshevRho, kChebyshevDelay} {
     build(m);
     f_.resize(m.n);
     x_.assign(4 * m.n, T(0));
@@ -106,7 +110,7 @@ class Vbd final : public Integrator<T> {
             const std::size_t first = colour_start_[static_cast<std::size_t>(c)];
             descend(first + b, first + e, h);
           });
-      omega = chebyshev_weight(it, omega);
+      omega = static_cast<T>(chebyshev_weight(chebyshev_, it, double(omega)));
       for_each_block(free, sys.threads,
                      [&](std::size_t b, std::size_t e) { accelerate(b, e, omega, it); });
     }
@@ -119,14 +123,6 @@ class Vbd final : public Integrator<T> {
   SolveStats last_stats() const override { return {iterations_, 0.0, true}; }
 
  private:
-  // Wang 2015, eq. (12), started after kChebyshevDelay plain iterations (Wang delays it too).
-  static T chebyshev_weight(int it, T previous) {
-    const double rho2 = kChebyshevRho * kChebyshevRho;
-    if (it < kChebyshevDelay) return T(1);
-    if (it == kChebyshevDelay) return static_cast<T>(2.0 / (2.0 - rho2));
-    return static_cast<T>(4.0 / (4.0 - rho2 * double(previous)));
-  }
-
   // Colours the free vertices and stores, colour by colour, each one's springs (other end,
   // k, L, c) in a compact adjacency list.
   void build(const Model<T>& m) {
@@ -283,6 +279,7 @@ class Vbd final : public Integrator<T> {
   }
 
   int iterations_;
+  Chebyshev chebyshev_;
   bool warm_ = false;
   T drag_ = 0;
   // Free vertices colour by colour (order_), with their springs: links [link_start_[k],

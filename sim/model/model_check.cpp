@@ -108,15 +108,6 @@ void check_built_forces(const Vec3Array<T>& f, const Model<T>& m, const Scene& s
 void check_step(double dt, int substeps, const Scene& scene) {
   const std::string key =
       section_path(Section::solver) + "." + std::string(key_of<&SolverSpec::dt>());
-  // The same cap solver.substeps has: one step of more substeps would run for minutes without
-  // a chance to report progress.
-  constexpr int kMaxSubsteps = 100000;
-  if (substeps > kMaxSubsteps)
-    fail(scene, key,
-         "the automatic step needs " + std::to_string(substeps) + " substeps of " +
-             format_number(dt / substeps) + " s each (at most " + std::to_string(kMaxSubsteps) +
-             "): the springs are too stiff for " + to_string(scene.solver.integrator) +
-             "; lower the stiffness or choose an implicit integrator");
   if (std::isfinite(dt) && dt > 0.0 && substeps >= 1 && std::isfinite(dt / substeps) &&
       dt / substeps > 0.0)
     return;

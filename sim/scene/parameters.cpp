@@ -252,14 +252,25 @@ std::vector<Parameter> solver() {
            .widget = W::input,
            .description = "xpbd: sweeps per substep (1); local_global: per step (10); vbd and bdf2 "
                           "with bdf2_solver = vbd: per step (30); 0 = default"}),
+      row<&SolverSpec::chebyshev_rho>(
+          {.name = "chebyshev_rho",
+           .range = {0.0, 1.0, false, true},
+           .range_text = "between 0 (the method's default) and 1, exclusive of 1",
+           .fallback = "0",
+           .only_for = "local_global, vbd, bdf2",
+           .widget = W::input,
+           .description = "Chebyshev acceleration's spectral radius (Wang 2015): local_global "
+                          "0.97, vbd 0.9; 0 = default, 1e-9 = off"}),
       row<&SolverSpec::cg_tolerance>(
           {.name = "cg_tolerance",
-           .range = {0.0, 1.0, true, true},
-           .fallback = "1e-6",
+           .range = {0.0, 1.0, false, true},
+           .range_text = "between 0 (automatic) and 1, exclusive of 1",
+           .fallback = "0",
            .only_for = "implicit_euler, bdf2",
            .widget = W::log_slider,
            .ui = between(1e-10, 1e-1),
-           .description = "PCG stops at relative residual |r| / |b| below this"}),
+           .description = "PCG stops at relative residual |r| / |b| below this; 0 = 1e-6 for "
+                          "one Newton iteration, 1e-2 per iteration when Newton iterates"}),
       row<&SolverSpec::newton_iterations>(
           {.name = "newton_iterations",
            .range = between(0, 100),

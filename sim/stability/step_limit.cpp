@@ -138,12 +138,11 @@ StepChoice choose_step(IntegratorKind kind, const Spectrum& spectrum) {
   switch (kind) {
     case IntegratorKind::xpbd:
       // Small steps (Macklin et al. 2019): many substeps of one constraint sweep each; a substep
-      // of kXpbdSubstepLimits explicit limits keeps the error near symplectic Euler's.
+      // of kXpbdSubstepLimits explicit limits keeps the error near symplectic Euler's, up to
+      // kXpbdMaxSubsteps. Counted in double: at k = 9e18 N/m the uncapped count is 1.7e9.
       c.dt = kDisplayStep;
-      // Counted in double and held below INT_MAX: at k = 9e18 N/m the count is 1.7e9, which
-      // check_step then refuses (solver.substeps allows at most 100000).
-      c.substeps = static_cast<int>(
-          std::clamp(std::ceil(kDisplayStep / (kXpbdSubstepLimits * c.limit)), 1.0, 2.0e9));
+      c.substeps = static_cast<int>(std::clamp(
+          std::ceil(kDisplayStep / (kXpbdSubstepLimits * c.limit)), 1.0, double(kXpbdMaxSubsteps)));
       return c;
     case IntegratorKind::vbd:
     case IntegratorKind::bdf2:
