@@ -1,6 +1,7 @@
 # Notebook tests: the built clothlab makes small inputs (a 0.5 s trace, the --quick accuracy and
 # stability tables) as fixtures, then scripts/notebooks executes each notebook headless on them
 # (Debian's Python and nbconvert) and every figure it must write is checked to be a real picture.
+# The inputs: a 0.5 s trace and the --quick accuracy, stability and largestep tables.
 # Included from tests/CMakeLists.txt after cli_tests.cmake (uses clothlab_cli_test). About 25 s
 # on 2 cores. Without nbconvert (scripts/deps installs it) the notebook tests fail and say so.
 
@@ -28,22 +29,28 @@ clothlab_cli_test(notebook.inputs.accuracy 0 "wrote .*accuracy\\.csv"
 clothlab_cli_test(notebook.inputs.stability 0
   "wrote .*stability\\.csv.*wrote .*stability_stress\\.csv"
   bench --suite stability --quick --out ${CLOTHLAB_NOTEBOOK_INPUTS}/bench/stability.csv)
+clothlab_cli_test(notebook.inputs.largestep 0
+  "wrote .*largestep\\.csv.*wrote .*largestep_ladder\\.csv.*wrote .*largestep_summary\\.csv"
+  bench --suite largestep --quick --out ${CLOTHLAB_NOTEBOOK_INPUTS}/bench/largestep.csv)
 set_tests_properties(cli.notebook.inputs.trace PROPERTIES FIXTURES_SETUP notebook_input_traces)
 set_tests_properties(cli.notebook.inputs.accuracy PROPERTIES
   FIXTURES_SETUP notebook_input_accuracy TIMEOUT 180)
 set_tests_properties(cli.notebook.inputs.stability PROPERTIES
   FIXTURES_SETUP notebook_input_stability TIMEOUT 120)
+set_tests_properties(cli.notebook.inputs.largestep PROPERTIES
+  FIXTURES_SETUP notebook_input_largestep TIMEOUT 120)
 
 # notebook.NAME runs the notebook; notebook.NAME.FIGURE checks each PNG it must write (a blank
 # matplotlib figure of this size is about 25 kB; the smallest real one about 40 kB).
 set(CLOTHLAB_NOTEBOOK_FIGURES_traces position velocity force energy)
 set(CLOTHLAB_NOTEBOOK_FIGURES_accuracy work_precision error_vs_dt)
 set(CLOTHLAB_NOTEBOOK_FIGURES_stability map bars ratio stress)
+set(CLOTHLAB_NOTEBOOK_FIGURES_largestep work_precision winners)
 set(CLOTHLAB_NOTEBOOK_ENVIRONMENT
   "CLOTHLAB_TRACE_CSV=${CLOTHLAB_NOTEBOOK_INPUTS}/trace.csv"
   "CLOTHLAB_BENCH_DIR=${CLOTHLAB_NOTEBOOK_INPUTS}/bench"
   "CLOTHLAB_FIGURES=${CLOTHLAB_NOTEBOOK_OUT}")
-foreach(name traces accuracy stability)
+foreach(name traces accuracy stability largestep)
   add_test(NAME notebook.${name}
     COMMAND ${PROJECT_SOURCE_DIR}/scripts/notebooks --no-deps ${name})
   set_tests_properties(notebook.${name} PROPERTIES

@@ -64,6 +64,25 @@ std::vector<Variant> variants(bool quick) {
           {K::local_global, false, 1, 30}};
 }
 
+// Work-precision ladders (the stiffness sweep's curves): each method from its automatic step
+// (explicit: its stable step; large-step: 1/60 s) halving, xpbd at 1/60 s with doubling substeps.
+struct Ladder {
+  IntegratorKind kind;
+  bool explicit_step;  // start from the method's automatic step, else from 1/60 s
+};
+
+std::vector<Ladder> ladders() {
+  using K = IntegratorKind;
+  return {{K::symplectic_euler, true},
+          {K::verlet, true},
+          {K::rk4, true},
+          {K::implicit_euler, false},
+          {K::bdf2, false},
+          {K::vbd, false},
+          {K::xpbd, false},
+          {K::local_global, false}};
+}
+
 struct Outcome {
   std::vector<Vec3d> positions;
   double cost = NAN;  // wall s per simulated s
@@ -151,6 +170,42 @@ Table frame_table(const SuiteOptions& o) {
   return t;
 }
 
+struct Point {
+  std::string label;
+  double rms, cost;
+};
+
+// One method's ladder at stiffness k0 into `table` and `points`: rungs until the error is below
+// 0.01 mm, the next rung would take more than `budget` wall seconds, or 6 rungs.
+void run_ladder(const Ladder& l, double k0, int res, double horizon, double budget,
+                const Outcome& reference, int threads, Table& table, std::vector<Point>& points,
+                std::ostream* log) {
+  Variant v{l.kind, l.explicit_step};
+  Scene base = sheet(res, k0, v, threads);
+  const double start = make_solver(base)->dt();
+  base.solver.dt_auto = false;
+  double last_wall = 0.0;
+  for (int rung = 0; rung < 6; ++rung) {
+    if (rung > 0 && 2.0 * last_wall > budget) break;
+    Scene s = base;
+    const bool xpbd = l.kind == IntegratorKind::xpbd;
+    s.solver.dt = xpbd ? kFrame : start / double(1 << rung);
+    if (xpbd) s.solver.substeps = 10 << rung;
+    Stopwatch clock;
+    const Outcome r = run(s, horizon);
+    last_wall = clock.seconds();
+    const double e = r.failure.empty() ? rms(r.positions, reference.positions) : NAN;
+    const std::string label = std::string(to_string(l.kind)) + " dt " + num(r.dt) +
+                              (xpbd ? " x" + std::to_string(r.substeps) : "");
+    table.add({num(k0), to_string(l.kind), num(r.dt), std::to_string(r.substeps), num(e),
+               num(r.cost), r.failure.empty() ? "ok" : "diverged: " + r.failure});
+    if (log) *log << "largestep: ladder k0 " << k0 << " " << label << ": rms " << e << " m\n";
+    if (!r.failure.empty()) continue;
+    points.push_back({label, e, r.cost});
+    if (e < 1e-5) break;
+  }
+}
+
 }  // namespace
 
 std::vector<Table> large_step_suite(const SuiteOptions& o) {
@@ -164,11 +219,18 @@ std::vector<Table> large_step_suite(const SuiteOptions& o) {
                num(reference_dt) + " s), " + std::to_string(res) + "x" + std::to_string(res) +
                " sheet, double, " + std::to_string(o.threads) + " thread(s)";
   data.columns = {"k0 (N/m)", "method", "dt (s)", "substeps", "rms (m)", "cost (s/s)", "status"};
+  Table ladder;
+  ladder.name = "ladder";
+  ladder.title =
+      "Work-precision ladders: each method from its automatic step halving (xpbd: "
+      "1/60 s, substeps doubling), same sheet and reference";
+  ladder.columns = {"k0 (N/m)", "integrator", "dt (s)", "substeps",
+                    "rms (m)",  "cost (s/s)", "status"};
   Table summary;
   summary.name = "summary";
   summary.title =
-      "Cheapest method within each error level at 1/60 s (cost = wall s per simulated "
-      "s), against symplectic Euler at its own step";
+      "Cheapest run within each error level over every run above (1/60 s settings and the "
+      "ladders; cost = wall s per simulated s), against symplectic Euler at its own step";
   summary.columns = {"k0 (N/m)",
                      "rms level (m)",
                      "cheapest",
@@ -181,10 +243,6 @@ std::vector<Table> large_step_suite(const SuiteOptions& o) {
     rs.solver.dt = reference_dt;
     const Outcome reference = run(rs, horizon);
     if (o.log) *o.log << "largestep: k0 " << k0 << " reference done\n";
-    struct Point {
-      std::string label;
-      double rms, cost;
-    };
     std::vector<Point> points;
     double explicit_cost = NAN;
     for (const Variant& v : variants(o.quick)) {
@@ -200,7 +258,10 @@ std::vector<Table> large_step_suite(const SuiteOptions& o) {
         points.push_back({v.label(), e, r.cost});
       }
     }
-    for (double level : {0.025, 0.06}) {
+    for (const Ladder& l : ladders())
+      run_ladder(l, k0, res, horizon, o.quick ? 0.2 : 20.0, reference, o.threads, ladder, points,
+                 o.log);
+    for (double level : {0.06, 0.025, 0.01, 1e-3, 1e-4}) {
       const Point* best = nullptr;
       for (const Point& p : points)
         if (p.rms <= level && (!best || p.cost < best->cost)) best = &p;
@@ -209,7 +270,7 @@ std::vector<Table> large_step_suite(const SuiteOptions& o) {
                    best ? fixed(best->cost / explicit_cost, 3) : "-"});
     }
   }
-  return {data, summary, frame_table(o)};
+  return {data, ladder, summary, frame_table(o)};
 }
 
 }  // namespace clothlab::bench
