@@ -16,6 +16,14 @@ struct Chebyshev {
   int delay = 1;     // S: plain iterations before the first accelerated one (at least 1)
 };
 
+// solver.chebyshev_rho that leaves the iteration plain: omega = 2 / (2 - 1e-18) is 1 in double.
+inline constexpr double kChebyshevOff = 1e-9;
+
+// The acceleration a method runs: solver.chebyshev_rho when set (> 0), else its own default.
+inline Chebyshev chebyshev_of(double requested_rho, double default_rho, int delay) {
+  return {requested_rho > 0.0 ? requested_rho : default_rho, delay};
+}
+
 // The weight of iteration `it` (0-based: the update that makes x^(it + 1)), given the previous
 // iteration's weight; 1 while the iteration is still plain.
 inline double chebyshev_weight(const Chebyshev& c, int it, double previous) {

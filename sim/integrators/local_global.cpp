@@ -84,7 +84,7 @@ class LocalGlobal final : public Integrator<T> {
  public:
   LocalGlobal(const Model<T>& m, const SolverSpec& spec)
       : iterations_(spec.iterations > 0 ? spec.iterations : kDefaultIterations),
-        chebyshev_{spec.chebyshev_rho > 0.0 ? spec.chebyshev_rho : kChebyshevRho, kChebyshevDelay} {
+        chebyshev_(chebyshev_of(spec.chebyshev_rho, kChebyshevRho, kChebyshevDelay)) {
     build_springs(m);
     build_laplacians();
     factor(static_cast<T>(spec.dt / spec.substeps));

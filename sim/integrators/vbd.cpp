@@ -80,7 +80,7 @@ class Vbd final : public Integrator<T> {
  public:
   Vbd(const Model<T>& m, const SolverSpec& spec)
       : iterations_(spec.iterations > 0 ? spec.iterations : kDefaultIterations),
-        chebyshev_{spec.chebyshev_rho > 0.0 ? spec.chebyshev_rho : kChebyshevRho, kChebyshevDelay} {
+        chebyshev_(chebyshev_of(spec.chebyshev_rho, kChebyshevRho, kChebyshevDelay)) {
     build(m);
     f_.resize(m.n);
     x_.assign(4 * m.n, T(0));
