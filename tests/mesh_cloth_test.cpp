@@ -74,7 +74,7 @@ TEST(MeshCloth, EdgeAndBendingSpringsFollowTheRestLengthRule) {
   EXPECT_EQ(g.nu, 4);
   EXPECT_EQ(g.nv, 1);
   EXPECT_DOUBLE_EQ(g.edge, 1.0);
-  const std::vector<Spring> springs = mesh_springs(g, 100.0);
+  const std::vector<Spring> springs = mesh_springs(g, SpringStiffness::uniform(100.0));
   std::map<std::pair<int, int>, Spring> by_ends;
   for (const Spring& sp : springs) by_ends[{sp.a, sp.b}] = sp;
   ASSERT_EQ(springs.size(), 6u);
@@ -106,7 +106,7 @@ TEST(MeshCloth, RoundClothHasOneBendPerInteriorEdgeAndAreaMasses) {
   for (const auto& [e, count] : faces_at) interior += count == 2;
   EXPECT_EQ(edges.size(), 2352u);
   EXPECT_EQ(interior, edges.size() - kRimCount);
-  EXPECT_EQ(mesh_springs(g, 600.0).size(), edges.size() + interior);
+  EXPECT_EQ(mesh_springs(g, SpringStiffness::uniform(600.0)).size(), edges.size() + interior);
 
   double total = 0.0;
   for (double m : g.masses) total += m;

@@ -24,7 +24,8 @@ Scene two_cloths() {
   second.resolution = {5, 12};
   second.size = {0.4, 1.3};  // anisotropic spacing: the stencil reaches further along u
   second.origin = {2.0, 0.0, 0.0};
-  second.springs = SpringSpec{"seed", 300.0, 0.0};  // its own springs, undamped
+  second.springs = SpringSpec{};  // its own springs, undamped
+  second.springs->stiffness = 300.0;
   s.cloths.push_back(second);
   s.multi_cloth = true;
   return s;

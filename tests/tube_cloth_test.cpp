@@ -58,7 +58,7 @@ TEST(TubeCloth, SeamIsAsStrongAsTheRest) {
     double stiffness = 0.0, rest = 0.0;
   };
   std::map<int, Sum> per_vertex;
-  for (const Spring& s : seed_springs_tube(g, 800.0)) {
+  for (const Spring& s : seed_springs_tube(g, SpringStiffness::uniform(800.0))) {
     for (int v : {s.a, s.b}) {
       per_vertex[v].count += 1;
       per_vertex[v].stiffness += s.stiffness;

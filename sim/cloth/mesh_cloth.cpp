@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <set>
 #include <utility>
 
 #include "sim/mesh/triangle_mesh.hpp"
@@ -77,7 +76,7 @@ GridCloth build_mesh_cloth(const ClothSpec& spec) {
   return g;
 }
 
-std::vector<Spring> mesh_springs(const GridCloth& cloth, double stiffness) {
+std::vector<Spring> mesh_springs(const GridCloth& cloth, const SpringStiffness& k) {
   // Each edge, with the vertices opposite it in the triangles that share it.
   std::map<std::pair<int, int>, std::vector<int>> opposite;
   for (const auto& t : cloth.triangles)
@@ -85,23 +84,24 @@ std::vector<Spring> mesh_springs(const GridCloth& cloth, double stiffness) {
       const int a = t[c], b = t[(c + 1) % 3];
       opposite[{std::min(a, b), std::max(a, b)}].push_back(t[(c + 2) % 3]);
     }
-  std::set<std::pair<int, int>> pairs;
+  std::map<std::pair<int, int>, double> pairs;  // each pair's class stiffness; an edge wins
+  for (const auto& [edge, across] : opposite) pairs[edge] = k.stretch;
   for (const auto& [edge, across] : opposite) {
-    pairs.insert(edge);
     // Interior edge of a manifold surface: bend across it. A boundary edge has one triangle;
     // a non-manifold one (three or more) has no single fold to resist.
     if (across.size() == 2 && across[0] != across[1])
-      pairs.emplace(std::min(across[0], across[1]), std::max(across[0], across[1]));
+      pairs.emplace(std::pair{std::min(across[0], across[1]), std::max(across[0], across[1])},
+                    k.bend);
   }
   std::vector<Spring> springs;
   springs.reserve(pairs.size());
-  for (const auto& p : pairs) {
+  for (const auto& [p, c] : pairs) {
     Spring s;
     s.a = p.first;
     s.b = p.second;
     s.rest_length = (at(cloth, s.a) - at(cloth, s.b)).norm();
     if (s.rest_length == 0.0) continue;  // two folded-over triangles: no direction to resist in
-    s.stiffness = stiffness * cloth.edge / s.rest_length;
+    s.stiffness = c * cloth.edge / s.rest_length;
     springs.push_back(s);
   }
   return springs;

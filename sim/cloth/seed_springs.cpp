@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace clothlab {
 
@@ -10,7 +11,13 @@ bool seed_rule_joins(double dist2, double edge) {
   return dist2 > 0.0 && dist2 < reach2 * (1.0 - 1e-9);
 }
 
-std::vector<GridOffset> seed_stencil_half(const GridCloth& g, double stiffness) {
+double class_stiffness(const SpringStiffness& k, int di, int dj) {
+  const int longest = std::max(std::abs(di), std::abs(dj));
+  if (longest > 1) return k.bend;
+  return di != 0 && dj != 0 ? k.shear : k.stretch;
+}
+
+std::vector<GridOffset> seed_stencil_half(const GridCloth& g, const SpringStiffness& k) {
   std::vector<GridOffset> offsets;
   if (g.edge <= 0.0) return offsets;
   const double reach = 2.0 * std::sqrt(2.0) * g.edge;
@@ -24,14 +31,14 @@ std::vector<GridOffset> seed_stencil_half(const GridCloth& g, double stiffness) 
       const double dist2 = x * x + y * y;
       if (!seed_rule_joins(dist2, g.edge)) continue;
       const double rest = std::sqrt(dist2);
-      offsets.push_back({di, dj, rest, stiffness * g.edge / rest});
+      offsets.push_back({di, dj, rest, class_stiffness(k, di, dj) * g.edge / rest});
     }
   }
   return offsets;
 }
 
-std::vector<Spring> seed_springs_grid(const GridCloth& g, double stiffness) {
-  const std::vector<GridOffset> stencil = seed_stencil_half(g, stiffness);
+std::vector<Spring> seed_springs_grid(const GridCloth& g, const SpringStiffness& k) {
+  const std::vector<GridOffset> stencil = seed_stencil_half(g, k);
   std::vector<Spring> springs;
   for (int j = 0; j < g.nv; ++j) {
     for (int i = 0; i < g.nu; ++i) {
@@ -45,16 +52,17 @@ std::vector<Spring> seed_springs_grid(const GridCloth& g, double stiffness) {
 }
 
 std::vector<Spring> seed_springs_all_pairs(const std::vector<Vec3d>& p, double edge,
-                                           double stiffness) {
+                                           const SpringStiffness& k) {
   std::vector<Spring> springs;
   const int n = static_cast<int>(p.size());
   for (int a = 0; a < n; ++a) {
     for (int b = a + 1; b < n; ++b) {
       double dist2 = 0.0;
-      for (int k = 0; k < 3; ++k) dist2 += (p[b][k] - p[a][k]) * (p[b][k] - p[a][k]);
+      for (int c = 0; c < 3; ++c) dist2 += (p[b][c] - p[a][c]) * (p[b][c] - p[a][c]);
       if (!seed_rule_joins(dist2, edge)) continue;
       const double rest = std::sqrt(dist2);
-      springs.push_back({a, b, rest, stiffness * edge / rest});
+      const double c = rest < 1.2 * edge ? k.stretch : rest < 1.5 * edge ? k.shear : k.bend;
+      springs.push_back({a, b, rest, c * edge / rest});
     }
   }
   return springs;

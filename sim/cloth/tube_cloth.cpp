@@ -69,7 +69,7 @@ GridCloth build_tube_cloth(const ClothSpec& spec) {
   return g;
 }
 
-std::vector<Spring> seed_springs_tube(const GridCloth& g, double stiffness) {
+std::vector<Spring> seed_springs_tube(const GridCloth& g, const SpringStiffness& k) {
   std::vector<Spring> springs;
   for (int j = 0; j < g.nv; ++j) {
     for (int i = 0; i < g.nu; ++i) {
@@ -79,7 +79,8 @@ std::vector<Spring> seed_springs_tube(const GridCloth& g, double stiffness) {
           if (di * di + dj * dj >= 8 || (dj == 0 && di <= 0)) continue;
           const int a = g.index(i, j), b = g.index(((i + di) % g.nu + g.nu) % g.nu, j + dj);
           const double rest = distance(g.positions[std::size_t(a)], g.positions[std::size_t(b)]);
-          springs.push_back({std::min(a, b), std::max(a, b), rest, stiffness * g.edge / rest});
+          springs.push_back(
+              {std::min(a, b), std::max(a, b), rest, class_stiffness(k, di, dj) * g.edge / rest});
         }
       }
     }

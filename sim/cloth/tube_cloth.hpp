@@ -19,6 +19,6 @@ GridCloth build_tube_cloth(const ClothSpec& spec);
 // the i offsets taken round the ring, so springs cross the seam as they cross any other column;
 // each spring's rest length is the distance between its ends as built (a frustum's rings
 // differ), and its stiffness stiffness * edge / rest_length. Sorted by (a, b), each pair once.
-std::vector<Spring> seed_springs_tube(const GridCloth& tube, double stiffness);
+std::vector<Spring> seed_springs_tube(const GridCloth& tube, const SpringStiffness& k);
 
 }  // namespace clothlab

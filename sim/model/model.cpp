@@ -66,7 +66,7 @@ GridStencil<T> grid_stencil(const GridCloth& g, int offset, const SpringSpec& sp
   st.offset = offset;
   st.nu = g.nu;
   st.nv = g.nv;
-  for (const GridOffset& o : seed_stencil_half(g, spec.stiffness)) {
+  for (const GridOffset& o : seed_stencil_half(g, SpringStiffness::of(spec))) {
     for (int sign : {-1, 1}) {
       typename GridStencil<T>::Entry e;
       e.di = sign * o.di;
@@ -129,14 +129,14 @@ Model<T> build_model(const Scene& scene, SpringKernel kernel) {
     m.has_damping = m.has_damping || spec.damping != 0.0;
     if (kernel == SpringKernel::row_sweep) {
       m.grids.push_back(grid_stencil<T>(g, offset, spec));
-      for (const GridOffset& o : seed_stencil_half(g, spec.stiffness))
+      for (const GridOffset& o : seed_stencil_half(g, SpringStiffness::of(spec)))
         m.spring_count +=
             static_cast<std::size_t>(g.nu - std::abs(o.di)) * static_cast<std::size_t>(g.nv - o.dj);
     } else {
       const std::vector<Spring> cloth_springs =
-          shape == "tube"   ? seed_springs_tube(g, spec.stiffness)
-          : shape == "mesh" ? mesh_springs(g, spec.stiffness)
-                            : seed_springs_grid(g, spec.stiffness);
+          shape == "tube"   ? seed_springs_tube(g, SpringStiffness::of(spec))
+          : shape == "mesh" ? mesh_springs(g, SpringStiffness::of(spec))
+                            : seed_springs_grid(g, SpringStiffness::of(spec));
       for (Spring s : cloth_springs) {
         s.a += offset;
         s.b += offset;

@@ -109,6 +109,7 @@ Parameter row(Parameter p) {
   p.read = &read_value<M>;
   p.values = &values_of<M>;
   p.address = &address_of<M>;
+  p.optional = !std::is_same_v<T, TypeOf<M>>;
   return p;
 }
 

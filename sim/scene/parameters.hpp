@@ -88,6 +88,8 @@ struct Parameter {
   std::string_view description;  // one line
   bool whole_key = false;        // range errors name the array, not its element
   std::string_view required;     // non-empty: the key must be given; the reason, in words
+  bool optional = false;         // the member is a std::optional: absent until given (the
+                                 // fallback then names the key whose value it takes, if any)
 
   // The binding to the section's struct (filled by the table's helpers in parameters.cpp).
   // read: the value at reader.node() into the struct; values: the numbers validate_scene checks

@@ -27,6 +27,9 @@ struct SpringSpec {
   std::string rule = "seed";  // the only rule so far: docs/design.md "seed" rule
   double stiffness = 800.0;   // N/m, k = stiffness * edge / rest_length
   double damping = 0.0;       // N*s/m, along-spring damping
+  // Per class of spring (docs/design.md "Spring classes"), each `stiffness` when not given:
+  // stretch = axis neighbours and mesh edges, shear = diagonals, bend = the longer ones.
+  std::optional<double> stretch, shear, bend;  // N/m for a spring one edge long
 };
 
 struct ClothSpec {

@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <optional>
 #include <string>
 
 namespace clothlab::vis {
@@ -22,6 +23,19 @@ bool log_slider(const Parameter& p, double& value) {
   const double lo = p.ui.lo, hi = p.ui.hi;
   return committed(ImGui::SliderScalar(label(p).c_str(), ImGuiDataType_Double, &value, &lo, &hi,
                                        "%.4g", ImGuiSliderFlags_Logarithmic));
+}
+
+// An optional number shows the value it takes (its fallback key's while absent); moving the
+// slider gives it its own.
+bool optional_log_slider(const Parameter& p, void* object) {
+  auto& member = *static_cast<std::optional<double>*>(p.address(object));
+  const Parameter* fallback = find_parameter(p.section, p.fallback);
+  double value = member     ? *member
+                 : fallback ? *static_cast<const double*>(fallback->address(object))
+                            : p.ui.lo;
+  if (!log_slider(p, value)) return false;
+  member = value;
+  return true;
 }
 
 bool input(const Parameter& p, void* member) {
@@ -73,7 +87,8 @@ bool edit_section(Section section, void* object, IntegratorKind integrator, cons
     if (!applies_to(p, to_string(integrator))) continue;
     switch (p.widget) {
       case Widget::log_slider:
-        edited |= log_slider(p, *static_cast<double*>(p.address(object)));
+        edited |= p.optional ? optional_log_slider(p, object)
+                             : log_slider(p, *static_cast<double*>(p.address(object)));
         break;
       case Widget::input:
         edited |= input(p, p.address(object));
