@@ -18,7 +18,8 @@ GridCloth build_tube_cloth(const ClothSpec& spec);
 // The seed rule's 20-neighbour stencil (offsets with di^2 + dj^2 < 8, as on a square grid) with
 // the i offsets taken round the ring, so springs cross the seam as they cross any other column;
 // each spring's rest length is the distance between its ends as built (a frustum's rings
-// differ), and its stiffness stiffness * edge / rest_length. Sorted by (a, b), each pair once.
+// differ), and its stiffness c * edge / rest_length with c its class's (seed_springs.hpp). Sorted
+// by (a, b), each pair once.
 std::vector<Spring> seed_springs_tube(const GridCloth& tube, const SpringStiffness& k);
 
 }  // namespace clothlab

@@ -127,16 +127,16 @@ Model<T> build_model(const Scene& scene, SpringKernel kernel) {
       masses.insert(masses.end(), g.masses.begin(), g.masses.end());
     for (int p : g.pinned) m.pinned.push_back(offset + p);
     m.has_damping = m.has_damping || spec.damping != 0.0;
+    const SpringStiffness k = SpringStiffness::of(spec);
     if (kernel == SpringKernel::row_sweep) {
       m.grids.push_back(grid_stencil<T>(g, offset, spec));
-      for (const GridOffset& o : seed_stencil_half(g, SpringStiffness::of(spec)))
+      for (const GridOffset& o : seed_stencil_half(g, k))
         m.spring_count +=
             static_cast<std::size_t>(g.nu - std::abs(o.di)) * static_cast<std::size_t>(g.nv - o.dj);
     } else {
-      const std::vector<Spring> cloth_springs =
-          shape == "tube"   ? seed_springs_tube(g, SpringStiffness::of(spec))
-          : shape == "mesh" ? mesh_springs(g, SpringStiffness::of(spec))
-                            : seed_springs_grid(g, SpringStiffness::of(spec));
+      const std::vector<Spring> cloth_springs = shape == "tube"   ? seed_springs_tube(g, k)
+                                                : shape == "mesh" ? mesh_springs(g, k)
+                                                                  : seed_springs_grid(g, k);
       for (Spring s : cloth_springs) {
         s.a += offset;
         s.b += offset;

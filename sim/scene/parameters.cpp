@@ -154,6 +154,18 @@ std::vector<Parameter> cloth_more() {
   };
 }
 
+// springs.stretch / shear / bend: a class's specific stiffness, `stiffness` when not given.
+template <auto M>
+Parameter class_row(std::string_view name, std::string_view description) {
+  return row<M>({.name = name,
+                 .range = kNonNegative,
+                 .unit = "N/m",
+                 .fallback = "stiffness",
+                 .widget = W::log_slider,
+                 .ui = between(0.1, 1e5),
+                 .description = description});
+}
+
 std::vector<Parameter> dynamics() {
   return {
       row<&SpringSpec::rule>({.name = "rule",
@@ -168,28 +180,10 @@ std::vector<Parameter> dynamics() {
            .widget = W::log_slider,
            .ui = between(1.0, 1e5),
            .description = "for a spring one edge long: k = stiffness * edge / L"}),
-      row<&SpringSpec::stretch>({.name = "stretch",
-                                 .range = kNonNegative,
-                                 .unit = "N/m",
-                                 .fallback = "stiffness",
-                                 .widget = W::log_slider,
-                                 .ui = between(0.1, 1e5),
-                                 .description = "axis neighbours and mesh edges (as stiffness)"}),
-      row<&SpringSpec::shear>({.name = "shear",
-                               .range = kNonNegative,
-                               .unit = "N/m",
-                               .fallback = "stiffness",
-                               .widget = W::log_slider,
-                               .ui = between(0.1, 1e5),
-                               .description = "grid diagonals (as stiffness)"}),
-      row<&SpringSpec::bend>({.name = "bend",
-                              .range = kNonNegative,
-                              .unit = "N/m",
-                              .fallback = "stiffness",
-                              .widget = W::log_slider,
-                              .ui = between(0.1, 1e5),
-                              .description = "two steps along the grid, knight's moves, across "
-                                             "mesh edges (as stiffness)"}),
+      class_row<&SpringSpec::stretch>("stretch", "axis neighbours and mesh edges (as stiffness)"),
+      class_row<&SpringSpec::shear>("shear", "grid diagonals (as stiffness)"),
+      class_row<&SpringSpec::bend>(
+          "bend", "two steps along the grid, knight's moves, across mesh edges (as stiffness)"),
       row<&SpringSpec::damping>({.name = "damping",
                                  .range = kNonNegative,
                                  .unit = "N s/m",
