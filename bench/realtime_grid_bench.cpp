@@ -12,7 +12,7 @@
 
 #include "apps/passive_openmp.hpp"
 #include "bench/bench_scenes.hpp"
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
 
 namespace clothlab {
 namespace {
@@ -22,7 +22,8 @@ constexpr double kBudgetSeconds = 1e-3;  // dt = 1 ms of simulated time per 1 ms
 // Median wall time of one step, over batches of steps lasting about 0.2 s in all.
 double step_seconds(int res, int threads, bool full_physics) {
   using Clock = std::chrono::steady_clock;
-  SolverT<float> solver(bench::sheet_scene(res, threads, full_physics));
+  const auto solver_owner = make_solver(bench::sheet_scene(res, threads, full_physics));
+  Solver& solver = *solver_owner;
   solver.step(10);
   std::vector<double> samples;
   const auto start = Clock::now();
@@ -64,7 +65,8 @@ int main(int argc, char** argv) {
       // answer with a fresh measurement, stepping down until it fits the budget.
       double seconds = step_seconds(lo, threads, full);
       while (seconds > kBudgetSeconds && lo > 16) seconds = step_seconds(lo -= 2, threads, full);
-      SolverT<float> probe(bench::sheet_scene(lo, threads, full));
+      const auto probe_owner = make_solver(bench::sheet_scene(lo, threads, full));
+      Solver& probe = *probe_owner;
       const char* name = full ? "full" : "springs";
       std::printf("%-9s %-8d %4d^2    %-10zu %-10zu %.3f\n", name, threads, lo,
                   probe.vertex_count(), probe.spring_count(), 1e3 * seconds);

@@ -15,7 +15,7 @@
 
 #include "apps/passive_openmp.hpp"
 #include "bench/bench_scenes.hpp"
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
 
 namespace clothlab {
 namespace {
@@ -24,7 +24,9 @@ void BM_SymplecticEulerStep(benchmark::State& state) {
   const int res = static_cast<int>(state.range(0));
   const int threads = static_cast<int>(state.range(1));
   const auto kernel = state.range(3) == 0 ? SpringKernel::row_sweep : SpringKernel::neighbour_list;
-  SolverT<float> solver(bench::sheet_scene(res, threads, state.range(2) != 0), kernel);
+  const auto solver_owner =
+      make_solver(bench::sheet_scene(res, threads, state.range(2) != 0), kernel);
+  Solver& solver = *solver_owner;
   solver.step(20);  // warm caches and the thread pool
   for (auto _ : state) {
     if (!solver.step(1).ok()) {

@@ -333,6 +333,21 @@ void SolverT<T>::load_state(const Solver& other) {
 }
 
 template <class T>
+void SolverT<T>::set_state(const std::vector<Vec3d>& positions,
+                           const std::vector<Vec3d>& velocities) {
+  if (positions.size() != model_.n || velocities.size() != model_.n)
+    throw std::invalid_argument("set_state: one position and one velocity per vertex");
+  sync_state();  // so that nothing pulls the backend's old state over what is written here
+  for (std::size_t i = 0; i < model_.n; ++i)
+    for (int a = 0; a < 3; ++a) {
+      state_.pos.axis(a)[i] = static_cast<T>(positions[i][a]);
+      state_.vel.axis(a)[i] = static_cast<T>(velocities[i][a]);
+    }
+  state_changed();
+  mirror_written();
+}
+
+template <class T>
 void SolverT<T>::copy_normals(float* xyz) {
   if (backend_ && backend_->normals(xyz)) return;
   compute_surface(model_, state_.pos, workspace_, threads_);
@@ -439,8 +454,13 @@ template class SolverT<float>;
 template class SolverT<double>;
 
 std::unique_ptr<Solver> make_solver(const Scene& scene) {
-  if (scene.solver.precision == Precision::f64) return std::make_unique<SolverT<double>>(scene);
-  return std::make_unique<SolverT<float>>(scene);
+  return make_solver(scene, SpringKernel::row_sweep);
+}
+
+std::unique_ptr<Solver> make_solver(const Scene& scene, SpringKernel kernel) {
+  if (scene.solver.precision == Precision::f64)
+    return std::make_unique<SolverT<double>>(scene, kernel);
+  return std::make_unique<SolverT<float>>(scene, kernel);
 }
 
 }  // namespace clothlab

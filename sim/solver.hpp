@@ -14,7 +14,8 @@
 
 namespace clothlab {
 
-class DeviceCloth;  // sim/step_backend.hpp
+class DeviceCloth;        // sim/step_backend.hpp
+enum class SpringKernel;  // sim/model/model.hpp
 
 // Iterative work summed since the solver was built or reset (PCG iterations for
 // implicit_euler, sweeps for xpbd and local_global).
@@ -74,7 +75,9 @@ class SolverState {
 
   virtual Vec3d position(int vertex) const = 0;
   virtual Vec3d velocity(int vertex) const = 0;
-  virtual bool pinned(int vertex) const = 0;  // held in place (its force is the support's)
+  virtual Vec3d rest_position(int vertex) const = 0;  // as built
+  virtual double mass(int vertex) const = 0;          // kg (a pinned vertex keeps its mass)
+  virtual bool pinned(int vertex) const = 0;          // held in place (its force is the support's)
   // Fills the force field at the current state; only called when something displays, probes or
   // traces forces, so a plain run never pays for it. `source` picks the total force (what the
   // integrators see; for pinned vertices the support reaction) or one source alone (springs,
@@ -94,6 +97,8 @@ class SolverState {
   virtual void copy_velocities(float* xyz) const = 0;
   // The collision response of the last substep (zero without colliders).
   virtual ContactStats last_contacts() const = 0;
+  // Self-collision's last step; none without solver.self_collision.
+  virtual std::optional<SelfCollisionStats> last_self_collision() const = 0;
   // Where the state lives in device buffers (the GPU backend): the renderer draws from them.
   // Null on the CPU.
   virtual DeviceCloth* device_cloth() const = 0;
@@ -124,6 +129,11 @@ class SolverInteraction {
   // Takes over another solver's positions, velocities, time and step count (same vertex
   // count), e.g. when a view changes a parameter without restarting the motion.
   virtual void load_state(const Solver& other) = 0;
+  // Replaces every vertex's position (m) and velocity (m/s), one of each per vertex, e.g. a
+  // disturbed start; time and pins stay. What the integrator cached from the old state is
+  // forgotten, and the energy written joins the divergence monitor's allowance.
+  virtual void set_state(const std::vector<Vec3d>& positions,
+                         const std::vector<Vec3d>& velocities) = 0;
 };
 
 // Built from a validated, loaded Scene; every role in one object.
@@ -138,5 +148,8 @@ inline const char* backend_name(const SolverState& solver) {
 }
 
 std::unique_ptr<Solver> make_solver(const Scene& scene);
+// With a chosen spring kernel: tests and benchmarks compare the row sweep (the default) with the
+// neighbour list.
+std::unique_ptr<Solver> make_solver(const Scene& scene, SpringKernel kernel);
 
 }  // namespace clothlab

@@ -1,5 +1,7 @@
-// SolverT<T>: the Solver for one scalar type. Exposed (rather than hidden in solver.cpp) so tests
-// and benchmarks can reach the state arrays directly. Its integrator substeps run on the CPU, or
+// SolverT<T>: the Solver for one scalar type. Exposed (rather than hidden in solver.cpp) for the
+// code that extends the solver itself: the GPU backend (gpu/backend_solver.cpp) and the benchmark
+// that times its parts (bench/self_collision_bench.cpp). Tests and everything else reach a solver
+// through the role interfaces of sim/solver.hpp. Its integrator substeps run on the CPU, or
 // on a step backend (sim/step_backend.hpp; the GPU's is gpu/gpu_step.hpp) that keeps the state
 // itself while this solver's model, pins, contacts and checks work on a mirror of it.
 #pragma once
@@ -40,6 +42,10 @@ class SolverT : public Solver {
     sync_state();
     return get(state_.vel, vertex);
   }
+  Vec3d rest_position(int vertex) const override { return get(model_.rest_positions, vertex); }
+  double mass(int vertex) const override {
+    return double(model_.mass[static_cast<std::size_t>(vertex)]);
+  }
   bool pinned(int vertex) const override {
     return model_.inv_mass[static_cast<std::size_t>(vertex)] == T(0);
   }
@@ -64,6 +70,8 @@ class SolverT : public Solver {
     copy(state_.vel, xyz);
   }
   void load_state(const Solver& other) override;
+  void set_state(const std::vector<Vec3d>& positions,
+                 const std::vector<Vec3d>& velocities) override;
   void set_threads(int threads) override;
   int threads() const override { return threads_; }
   void reset() override;
@@ -77,6 +85,9 @@ class SolverT : public Solver {
   ContactStats last_contacts() const override {
     return contacts_ ? contacts_->last() : ContactStats{};
   }
+  std::optional<SelfCollisionStats> last_self_collision() const override {
+    return self_ ? std::optional<SelfCollisionStats>(self_->last()) : std::nullopt;
+  }
   DeviceCloth* device_cloth() const override {
     return backend_ ? backend_->device_cloth() : nullptr;
   }
@@ -88,7 +99,8 @@ class SolverT : public Solver {
   // The self-collision response (solver.self_collision), or null when it is off.
   const SelfCollision<T>* self_collision() const { return self_.get(); }
 
-  // Direct access for tests and benchmarks. Call state_changed() after writing the state.
+  // Direct access for the backend and the component benchmarks. Call state_changed() after
+  // writing the state.
   const Model<T>& model() const { return model_; }
   State<T>& state() { return state_; }
   void state_changed();

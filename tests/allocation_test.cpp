@@ -9,7 +9,7 @@
 
 #include "allocation_counter.hpp"
 #include "sim/mesh/triangle_mesh.hpp"
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
 #include "test_scenes.hpp"
 
 namespace clothlab {
@@ -23,11 +23,11 @@ void expect_no_allocation(IntegratorKind kind) {
   scene.forces.drag = 0.001;
   scene.forces.wind = {true, {3.0, 0.0, 1.0}, 0.5, 7, 1.0, 1.0};
   scene.solver.threads = 2;
-  SolverT<T> s(scene);
-  ASSERT_TRUE(s.step(3).ok());  // warm-up: starts the OpenMP thread pool
+  const auto s = testing::solver<T>(scene);
+  ASSERT_TRUE(s->step(3).ok());  // warm-up: starts the OpenMP thread pool
   const long before = g_allocations.load();
-  ASSERT_TRUE(s.step(200).ok());
-  ASSERT_TRUE(s.advance(0.01).ok());
+  ASSERT_TRUE(s->step(200).ok());
+  ASSERT_TRUE(s->advance(0.01).ok());
   EXPECT_EQ(g_allocations.load() - before, 0) << "allocations in the step loop";
 }
 
@@ -63,13 +63,13 @@ void expect_no_allocation_with_self_collision() {
   scene.solver.self_collision = true;
   scene.solver.self_thickness = 0.03;
   scene.solver.threads = 2;
-  SolverT<T> s(scene);
-  ASSERT_TRUE(s.step(3).ok());
+  const auto s = testing::solver<T>(scene);
+  ASSERT_TRUE(s->step(3).ok());
   const long before = g_allocations.load();
-  ASSERT_TRUE(s.step(200).ok());
-  ASSERT_TRUE(s.advance(0.01).ok());
+  ASSERT_TRUE(s->step(200).ok());
+  ASSERT_TRUE(s->advance(0.01).ok());
   EXPECT_EQ(g_allocations.load() - before, 0) << "allocations in the step loop";
-  EXPECT_GT(s.self_collision()->last().pairs, 0);
+  EXPECT_GT(s->last_self_collision()->pairs, 0);
 }
 
 TEST(StepLoop, SelfCollisionAllocatesNothingInFloat) {
@@ -102,18 +102,19 @@ TEST(StepLoop, MeshClothOnARodAllocatesNothing) {
   rod.radius = 0.004;  // thinner than the cloth's edges: edge midpoints are contacts too
   rod.key = "colliders[0]";
   scene.colliders = {rod};
-  SolverT<double> s(scene);
-  ASSERT_TRUE(s.step(3).ok());
+  const auto s = testing::solver<double>(scene);
+  ASSERT_TRUE(s->step(3).ok());
   const long before = g_allocations.load();
-  ASSERT_TRUE(s.step(400).ok());
+  ASSERT_TRUE(s->step(400).ok());
   EXPECT_EQ(g_allocations.load() - before, 0) << "allocations in the step loop";
-  EXPECT_GT(s.last_contacts().contacts, 0);
+  EXPECT_GT(s->last_contacts().contacts, 0);
 }
 
 TEST(StepLoop, CounterSeesAllocations) {
   // The counter works: building a solver does allocate.
   const long before = g_allocations.load();
-  SolverT<float> s(testing::sheet(4, 1.0, 0.1, 100.0, IntegratorKind::verlet, 1e-4));
+  const auto s =
+      testing::solver<float>(testing::sheet(4, 1.0, 0.1, 100.0, IntegratorKind::verlet, 1e-4));
   EXPECT_GT(g_allocations.load() - before, 0);
 }
 

@@ -15,7 +15,7 @@
 #include "sim/contact/contact_response.hpp"
 #include "sim/scene/scene_error.hpp"
 #include "sim/scene/scene_parser.hpp"
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
 #include "test_scenes.hpp"
 
 namespace clothlab {
@@ -198,7 +198,8 @@ Scene drop(double offset, double sphere_friction = 0.3) {
 // At every step of a 2 s drop and settle no vertex is deeper inside the sphere or the floor than
 // 1e-3 R below the thickness (docs/contact.md section 1, test 3).
 TEST(Drop, NoVertexSinksIntoTheSphereOrTheFloor) {
-  SolverT<double> s(drop(0.0));
+  const auto s_owner = testing::solver<double>(drop(0.0));
+  Solver& s = *s_owner;
   std::vector<Collider> colliders;
   for (const ColliderSpec& c : drop(0.0).colliders) colliders.emplace_back(c);
   double worst = -INFINITY;
@@ -346,7 +347,8 @@ TEST(MovingCollider, ThinFastCapsuleDoesNotTunnel) {
   // vertex ends 0.07 mm inside the 2 mm shell at step 25, an edge case of the response that is
   // open (docs/contact.md, "Known gaps").
   scene.solver.newton_iterations = 1;
-  SolverT<double> s(scene);
+  const auto s_owner = testing::solver<double>(scene);
+  Solver& s = *s_owner;
   const Collider capsule(rod);
   const double half = 0.8;  // half the axis: local y from -0.8 to 0.8
   // Nearest approach of the local path p0 -> p1 to the axis segment, sampled finely (0.4 mm).

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
 #include "test_scenes.hpp"
 
 namespace clothlab {
@@ -13,8 +13,8 @@ TEST(Divergence, UnstableStepIsReportedWithStepTimeVertexAndQuantity) {
   // Symplectic Euler is stable only for dt < 0.654 sqrt(m / k0) (docs/design.md): 2.3e-4 s here.
   Scene scene = testing::sheet(16, 1.0, 0.2, 1000.0, IntegratorKind::symplectic_euler, 1e-3);
   scene.cloths[0].pins = {{0, 0}, {15, 0}};
-  SolverT<float> s(scene);
-  const AdvanceResult r = s.advance(10.0);
+  const auto s = testing::solver<float>(scene);
+  const AdvanceResult r = s->advance(10.0);
   ASSERT_TRUE(r.divergence);
   const Divergence& d = *r.divergence;
   EXPECT_GT(d.step, 1);
@@ -26,10 +26,10 @@ TEST(Divergence, UnstableStepIsReportedWithStepTimeVertexAndQuantity) {
   EXPECT_FALSE(d.quantity.empty());
   EXPECT_NE(d.message().find("step " + std::to_string(d.step)), std::string::npos);
   // Caught before anything became NaN: every value handed out is still finite.
-  for (std::size_t i = 0; i < s.vertex_count(); ++i)
-    for (double c : s.position(static_cast<int>(i))) ASSERT_TRUE(std::isfinite(c));
+  for (std::size_t i = 0; i < s->vertex_count(); ++i)
+    for (double c : s->position(static_cast<int>(i))) ASSERT_TRUE(std::isfinite(c));
   // Further steps are refused with the same report.
-  const AdvanceResult again = s.step(5);
+  const AdvanceResult again = s->step(5);
   EXPECT_EQ(again.steps, 0);
   ASSERT_TRUE(again.divergence);
   EXPECT_EQ(again.divergence->step, d.step);
@@ -39,19 +39,20 @@ TEST(Divergence, StableStepRunsClean) {
   Scene scene = testing::sheet(16, 1.0, 0.2, 1000.0, IntegratorKind::symplectic_euler, 2e-4);
   scene.cloths[0].pins = {{0, 0}, {15, 0}};
   scene.springs.damping = 0.05;
-  SolverT<float> s(scene);
-  EXPECT_TRUE(s.advance(1.0).ok());
+  const auto s = testing::solver<float>(scene);
+  EXPECT_TRUE(s->advance(1.0).ok());
 }
 
 TEST(Stepping, AdvanceTakesTheStepsThatFitAndCarriesTheRest) {
   const Scene scene = testing::sheet(4, 1.0, 0.2, 100.0, IntegratorKind::verlet, 1e-3);
-  SolverT<double> a(scene), b(scene);
-  for (int frame = 0; frame < 30; ++frame) ASSERT_TRUE(a.advance(1.0 / 30.0).ok());
-  EXPECT_EQ(b.advance(1.0).steps, 1000);
-  EXPECT_EQ(a.step_count(), 1000);
-  EXPECT_EQ(a.position(15), b.position(15));  // same steps, same state
-  EXPECT_EQ(a.advance(0.0004).steps, 0);
-  EXPECT_EQ(a.advance(0.0007).steps, 1);  // 0.0004 + 0.0007 s hold one step
+  const auto a = testing::solver<double>(scene);
+  const auto b = testing::solver<double>(scene);
+  for (int frame = 0; frame < 30; ++frame) ASSERT_TRUE(a->advance(1.0 / 30.0).ok());
+  EXPECT_EQ(b->advance(1.0).steps, 1000);
+  EXPECT_EQ(a->step_count(), 1000);
+  EXPECT_EQ(a->position(15), b->position(15));  // same steps, same state
+  EXPECT_EQ(a->advance(0.0004).steps, 0);
+  EXPECT_EQ(a->advance(0.0007).steps, 1);  // 0.0004 + 0.0007 s hold one step
 }
 
 }  // namespace

@@ -15,7 +15,7 @@
 
 #include "allocation_counter.hpp"
 #include "sim/forces/force_source.hpp"
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
 #include "test_scenes.hpp"
 
 namespace clothlab {
@@ -42,8 +42,7 @@ Precision precision_of() {
 }
 
 // The field of one source at the solver's current state.
-template <class T>
-std::vector<Vec3d> field(SolverT<T>& s, ForceSource source) {
+std::vector<Vec3d> field(Solver& s, ForceSource source) {
   s.update_force_field(source);
   EXPECT_EQ(s.force_field_source(), source);
   std::vector<Vec3d> f(s.vertex_count());
@@ -66,8 +65,7 @@ double largest_component(const std::vector<Vec3d>& f) {
 }
 
 // Steps the sheet 0.15 s so it is stretched, swinging and blown.
-template <class T>
-void run_a_while(SolverT<T>& s) {
+void run_a_while(Solver& s) {
   ASSERT_TRUE(s.step(1500).ok());
   double speed = 0.0;
   for (std::size_t i = 0; i < s.vertex_count(); ++i)
@@ -80,7 +78,8 @@ void run_a_while(SolverT<T>& s) {
 template <class T>
 void expect_sources_sum_to_total(SpringKernel kernel, bool damped, double tolerance) {
   SCOPED_TRACE(::testing::Message() << "kernel " << int(kernel) << ", damped " << damped);
-  SolverT<T> s(windy_sheet(damped, true, precision_of<T>()), kernel);
+  const auto s_owner = testing::solver<T>(windy_sheet(damped, true, precision_of<T>()), kernel);
+  Solver& s = *s_owner;
   run_a_while(s);
   std::array<std::vector<Vec3d>, kAllForceSources.size()> f;
   double largest = 0.0;
@@ -120,25 +119,32 @@ TEST(ForceSource, SourcesSumToTheTotalInFloat) {
 template <class T>
 void expect_exact_body_forces(SpringKernel kernel) {
   SCOPED_TRACE(::testing::Message() << "kernel " << int(kernel));
-  SolverT<T> s(windy_sheet(true, true, precision_of<T>()), kernel);
+  const auto s_owner = testing::solver<T>(windy_sheet(true, true, precision_of<T>()), kernel);
+  Solver& s = *s_owner;
   run_a_while(s);
-  const Model<T>& m = s.model();
-  ASSERT_EQ(m.pinned.size(), 2u);
+  // The model's values in its precision T (sim/model/model.cpp casts the scene's).
+  const ForceSpec& forces = windy_sheet(true, true, precision_of<T>()).forces;
+  const T drag_c = static_cast<T>(forces.drag);
   const std::vector<Vec3d> gravity = field(s, ForceSource::gravity);
   const std::vector<Vec3d> drag = field(s, ForceSource::drag);
-  for (std::size_t i = 0; i < m.n; ++i) {
+  std::vector<int> pinned;
+  for (int i = 0; i < static_cast<int>(s.vertex_count()); ++i) {
+    if (s.pinned(i)) pinned.push_back(i);
+    const T mass = static_cast<T>(s.mass(i));
     for (int a = 0; a < 3; ++a) {
       const auto ua = static_cast<std::size_t>(a);
-      const T g = m.mass[i] * m.gravity[ua];
-      const T d = -(m.drag * s.state().vel.axis(a)[i]);
-      ASSERT_EQ(gravity[i][a], double(g)) << "vertex " << i << " axis " << a;
-      ASSERT_EQ(drag[i][a], double(d)) << "vertex " << i << " axis " << a;
+      const T g = mass * static_cast<T>(forces.gravity[ua]);
+      const T d = -(drag_c * static_cast<T>(s.velocity(i)[ua]));
+      const auto vi = static_cast<std::size_t>(i);
+      ASSERT_EQ(gravity[vi][ua], double(g)) << "vertex " << i << " axis " << a;
+      ASSERT_EQ(drag[vi][ua], double(d)) << "vertex " << i << " axis " << a;
     }
   }
+  ASSERT_EQ(pinned.size(), 2u);
   // The pinned vertices too (inside the loop above; spelt out as they matter most).
-  for (int p : m.pinned) {
+  for (int p : pinned) {
     const auto i = static_cast<std::size_t>(p);
-    EXPECT_EQ(gravity[i][1], double(m.mass[i] * m.gravity[1]));
+    EXPECT_EQ(gravity[i][1], double(static_cast<T>(s.mass(p)) * static_cast<T>(forces.gravity[1])));
     EXPECT_LT(gravity[i][1], 0.0);
   }
 }
@@ -152,7 +158,8 @@ TEST(ForceSource, GravityAndDragAreExact) {
 
 template <class T>
 void expect_no_wind_without_wind(SpringKernel kernel) {
-  SolverT<T> s(windy_sheet(true, false, precision_of<T>()), kernel);
+  const auto s_owner = testing::solver<T>(windy_sheet(true, false, precision_of<T>()), kernel);
+  Solver& s = *s_owner;
   run_a_while(s);
   for (const Vec3d& w : field(s, ForceSource::wind))
     for (double c : w) ASSERT_EQ(c, 0.0);
@@ -179,7 +186,8 @@ TEST(ForceSource, WindIsZeroWithTheWindOff) {
 // |x_j - x_i| - L, far below the smallest real load (one vertex's weight).
 template <class T>
 void expect_springs_vanish_at_rest(SpringKernel kernel, double tolerance) {
-  SolverT<T> s(windy_sheet(true, true, precision_of<T>()), kernel);
+  const auto s_owner = testing::solver<T>(windy_sheet(true, true, precision_of<T>()), kernel);
+  Solver& s = *s_owner;
   const std::vector<Vec3d> gravity = field(s, ForceSource::gravity);
   const double weight = largest_component(gravity);
   ASSERT_GT(weight, 0.0);
@@ -219,7 +227,8 @@ TEST(ForceSource, ReportsTheLastSourceThroughTheSolverInterface) {
 
 template <class T>
 void expect_no_allocation() {
-  SolverT<T> s(windy_sheet(true, true, precision_of<T>()));
+  const auto s_owner = testing::solver<T>(windy_sheet(true, true, precision_of<T>()));
+  Solver& s = *s_owner;
   run_a_while(s);
   for (ForceSource source : kAllForceSources) s.update_force_field(source);  // warm-up
   const long before = g_allocations.load();

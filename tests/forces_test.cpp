@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "sim/forces/wind.hpp"
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
 #include "test_scenes.hpp"
 
 namespace clothlab {
@@ -23,11 +23,11 @@ Scene windy_sheet(WindSpec wind) {
 
 TEST(Wind, TotalForceOnAFlatSheetIsCoefficientTimesAreaTimesNormalSpeed) {
   // No gust: w = (3, 1, 2) everywhere; only the normal component (2 m/s along z) pushes.
-  SolverT<double> s(windy_sheet({true, {3.0, 1.0, 2.0}, 0.0, 0, 1.0, 0.7}));
-  s.update_force_field();
+  const auto s = testing::solver<double>(windy_sheet({true, {3.0, 1.0, 2.0}, 0.0, 0, 1.0, 0.7}));
+  s->update_force_field();
   Vec3d total{0, 0, 0};
-  for (std::size_t i = 0; i < s.vertex_count(); ++i)
-    for (int a = 0; a < 3; ++a) total[a] += s.force(static_cast<int>(i))[a];
+  for (std::size_t i = 0; i < s->vertex_count(); ++i)
+    for (int a = 0; a < 3; ++a) total[a] += s->force(static_cast<int>(i))[a];
   const double area = 1.5 * 0.8;
   EXPECT_NEAR(total[2], 0.7 * area * 2.0, 1e-12);  // springs at rest add nothing
   EXPECT_NEAR(total[0], 0.0, 1e-12);
@@ -35,12 +35,13 @@ TEST(Wind, TotalForceOnAFlatSheetIsCoefficientTimesAreaTimesNormalSpeed) {
 }
 
 TEST(Wind, MovingWithTheWindCancelsThePressure) {
-  SolverT<double> s(windy_sheet({true, {0.0, 0.0, 2.0}, 0.0, 0, 1.0, 1.0}));
-  for (std::size_t i = 0; i < s.vertex_count(); ++i) s.state().vel.z[i] = 2.0;
-  s.state_changed();
-  s.update_force_field();
-  for (std::size_t i = 0; i < s.vertex_count(); ++i)
-    EXPECT_NEAR(s.force(static_cast<int>(i))[2], 0.0, 1e-12);
+  const auto s = testing::solver<double>(windy_sheet({true, {0.0, 0.0, 2.0}, 0.0, 0, 1.0, 1.0}));
+  std::vector<Vec3d> v = testing::velocities_of(*s);
+  for (Vec3d& vi : v) vi[2] = 2.0;
+  s->set_state(testing::positions_of(*s), v);
+  s->update_force_field();
+  for (std::size_t i = 0; i < s->vertex_count(); ++i)
+    EXPECT_NEAR(s->force(static_cast<int>(i))[2], 0.0, 1e-12);
 }
 
 TEST(Wind, GustsAreSeededBoundedAndTravelWithTheWind) {
@@ -75,12 +76,12 @@ TEST(Drag, LoneVertexFollowsTheTerminalVelocityCurve) {
   Scene scene = testing::sheet(1, 1.0, m, 100.0, IntegratorKind::rk4, 1e-3);
   scene.forces.drag = c;
   scene.solver.precision = Precision::f64;
-  SolverT<double> s(scene);
-  ASSERT_EQ(s.spring_count(), 0u);
-  ASSERT_TRUE(s.advance(2.0).ok());
+  const auto s = testing::solver<double>(scene);
+  ASSERT_EQ(s->spring_count(), 0u);
+  ASSERT_TRUE(s->advance(2.0).ok());
   const double expected = -(m * g / c) * (1.0 - std::exp(-c * 2.0 / m));
-  EXPECT_NEAR(s.velocity(0)[1], expected, 1e-9);
-  EXPECT_NEAR(s.velocity(0)[1], -m * g / c, 0.01 * m * g / c);  // close to terminal by t = 2 s
+  EXPECT_NEAR(s->velocity(0)[1], expected, 1e-9);
+  EXPECT_NEAR(s->velocity(0)[1], -m * g / c, 0.01 * m * g / c);  // close to terminal by t = 2 s
 }
 
 }  // namespace

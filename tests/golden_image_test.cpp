@@ -13,7 +13,7 @@
 #include <memory>
 #include <string>
 
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
 #include "test_scenes.hpp"
 #include "vis/render/headless_renderer.hpp"
 #include "vis/textures/image.hpp"
@@ -66,7 +66,7 @@ class GoldenImage : public ::testing::TestWithParam<int> {
  protected:
   static void SetUpTestSuite() {
     renderer_ = std::make_unique<vis::HeadlessRenderer>(kWidth, kHeight);
-    solver_ = std::make_unique<SolverT<float>>(golden_scene());
+    solver_ = testing::solver<float>(golden_scene());
     ASSERT_TRUE(solver_->step(600).ok());
     renderer_->set_cloth(*solver_);
     // The pole from the pins and a sphere beside the cloth: casters and receivers besides it.
@@ -83,10 +83,10 @@ class GoldenImage : public ::testing::TestWithParam<int> {
     renderer_.reset();
   }
   static std::unique_ptr<vis::HeadlessRenderer> renderer_;
-  static std::unique_ptr<SolverT<float>> solver_;
+  static std::unique_ptr<Solver> solver_;
 };
 std::unique_ptr<vis::HeadlessRenderer> GoldenImage::renderer_;
-std::unique_ptr<SolverT<float>> GoldenImage::solver_;
+std::unique_ptr<Solver> GoldenImage::solver_;
 
 // Renders `view` and compares it with tests/golden/NAME.png (or rewrites it on request).
 void check_golden(vis::HeadlessRenderer& renderer, Solver& solver, const vis::ViewSettings& view,

@@ -18,7 +18,8 @@
 
 #include "gl_context_fixture.hpp"
 #include "gpu/gpu_cloth.hpp"
-#include "sim/solver_impl.hpp"
+#include "sim/integrators/integrator.hpp"
+#include "sim/solver.hpp"
 #include "test_scenes.hpp"
 
 namespace clothlab {
@@ -151,6 +152,38 @@ std::vector<float> reference_normals(const Model<float>& m, const Vec3Array<floa
   return normal;
 }
 
+// The CPU solver on the neighbour-list kernel (what the GPU step mirrors), with the model and the
+// start state it was built from, for the GPU and the reference to start from.
+struct CpuSheet {
+  explicit CpuSheet(const Scene& scene, SpringKernel kernel = SpringKernel::neighbour_list)
+      : model(build_model<float>(scene, kernel)),
+        start{model.rest_positions, {}},
+        solver(testing::solver<float>(scene, kernel)) {
+    start.vel.resize(model.n);
+  }
+  // The solver's positions and velocities, interleaved (x, y, z per vertex), as floats.
+  std::vector<float> positions() const {
+    std::vector<float> x(3 * model.n);
+    solver->copy_positions(x.data());
+    return x;
+  }
+  std::vector<float> velocities() const {
+    std::vector<float> v(3 * model.n);
+    solver->copy_velocities(v.data());
+    return v;
+  }
+  Model<float> model;
+  State<float> start;
+  std::unique_ptr<Solver> solver;
+};
+
+Vec3Array<float> deinterleave(const std::vector<float>& xyz) {
+  Vec3Array<float> a;
+  a.resize(xyz.size() / 3);
+  for (std::size_t i = 0; i < a.size(); ++i) a.set(i, xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+  return a;
+}
+
 std::vector<float> interleave(const Vec3Array<float>& a) {
   std::vector<float> out(3 * a.size());
   for (std::size_t i = 0; i < a.size(); ++i) {
@@ -187,11 +220,12 @@ class GpuClothTest : public testing::GlContextTest {
 
   // 200 steps on the CPU solver, the contraction-free reference and the GPU, compared.
   static void compare_after_200_steps(IntegratorKind kind) {
-    SolverT<float> cpu(sheet_scene(kind), SpringKernel::neighbour_list);
+    const CpuSheet sheet(sheet_scene(kind));
+    Solver& cpu = *sheet.solver;
     ASSERT_EQ(cpu.substeps(), 1);
     const auto h = static_cast<float>(cpu.dt());
-    ReferenceCloth reference(cpu.model(), cpu.state());
-    gpu::GpuCloth gpu(cpu.model(), cpu.state().pos, cpu.state().vel);
+    ReferenceCloth reference(sheet.model, sheet.start);
+    gpu::GpuCloth gpu(sheet.model, sheet.start.pos, sheet.start.vel);
     constexpr int kSteps = 200;
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
@@ -205,7 +239,7 @@ class GpuClothTest : public testing::GlContextTest {
     for (int k = 0; k < kSteps; ++k) reference.step(h, kind);
 
     const Readback g = read(gpu);
-    const std::vector<float> cx = interleave(cpu.state().pos), cv = interleave(cpu.state().vel);
+    const std::vector<float> cx = sheet.positions(), cv = sheet.velocities();
     const std::vector<float> rx = interleave(reference.state().pos);
     const std::vector<float> rv = interleave(reference.state().vel);
     const double dx = max_distance(g.x, cx), dv = max_distance(g.v, cv);
@@ -220,8 +254,9 @@ class GpuClothTest : public testing::GlContextTest {
     EXPECT_LT(dx, 1e-5);
     EXPECT_LT(dv, 1e-4);
     // The cloth moved (by 6 mm or more), 100 times the tolerance: not two resting sheets.
-    EXPECT_GT(max_distance(cx, interleave(cpu.model().rest_positions)), 1e-3);
-    for (int p : cpu.model().pinned)
+    EXPECT_GT(max_distance(cx, interleave(sheet.model.rest_positions)), 1e-3);
+    ASSERT_EQ(sheet.model.pinned.size(), 2u);
+    for (int p : sheet.model.pinned)
       for (int a = 0; a < 3; ++a) {
         const auto k = static_cast<std::size_t>(3 * p + a);
         EXPECT_EQ(g.x[k], cx[k]) << "pinned vertex " << p;
@@ -249,8 +284,9 @@ TEST_F(GpuClothTest, VerletFollowsTheCpuSolverFor200Steps) {
 // uploaded to the GPU, which isolates the two normal passes.
 TEST_F(GpuClothTest, NormalsMatchTheCpuSurface) {
   const IntegratorKind kind = IntegratorKind::symplectic_euler;
-  SolverT<float> cpu(sheet_scene(kind), SpringKernel::neighbour_list);
-  gpu::GpuCloth gpu(cpu.model(), cpu.state().pos, cpu.state().vel);
+  const CpuSheet sheet(sheet_scene(kind));
+  Solver& cpu = *sheet.solver;
+  gpu::GpuCloth gpu(sheet.model, sheet.start.pos, sheet.start.vel);
   ASSERT_TRUE(cpu.step(50).ok());
   gpu.step(50, static_cast<float>(cpu.dt()), kind);
   const std::size_t n = cpu.vertex_count();
@@ -258,12 +294,13 @@ TEST_F(GpuClothTest, NormalsMatchTheCpuSurface) {
   cpu.copy_normals(cpu_normals.data());
   gpu.compute_normals();
   gpu.read_normals(gpu_normals.data());
-  gpu.set_state(cpu.state().pos, cpu.state().vel);
+  const Vec3Array<float> cpu_pos = deinterleave(sheet.positions());
+  gpu.set_state(cpu_pos, deinterleave(sheet.velocities()));
   gpu.compute_normals();
   gpu.read_normals(same_state.data());
   const double own = max_distance(gpu_normals, cpu_normals);
   const double same = max_distance(same_state, cpu_normals);
-  const double exact = max_distance(same_state, reference_normals(cpu.model(), cpu.state().pos));
+  const double exact = max_distance(same_state, reference_normals(sheet.model, cpu_pos));
   std::printf(
       "[gpu_cloth] normals after 50 steps: max |n_gpu - n_cpu| = %.3g (GPU state), %.3g "
       "(the CPU's state on the GPU); %.3g against the -ffp-contract=off reference\n",
@@ -287,9 +324,10 @@ TEST_F(GpuClothTest, NormalsMatchTheCpuSurface) {
 // The long run, printed rather than asserted: round-off differences grow with the motion.
 TEST_F(GpuClothTest, DifferencesAfter2000StepsArePrinted) {
   for (IntegratorKind kind : {IntegratorKind::symplectic_euler, IntegratorKind::verlet}) {
-    SolverT<float> cpu(sheet_scene(kind), SpringKernel::neighbour_list);
-    ReferenceCloth reference(cpu.model(), cpu.state());
-    gpu::GpuCloth gpu(cpu.model(), cpu.state().pos, cpu.state().vel);
+    const CpuSheet sheet(sheet_scene(kind));
+    Solver& cpu = *sheet.solver;
+    ReferenceCloth reference(sheet.model, sheet.start);
+    gpu::GpuCloth gpu(sheet.model, sheet.start.pos, sheet.start.vel);
     const auto h = static_cast<float>(cpu.dt());
     constexpr int kSteps = 2000;
     ASSERT_TRUE(cpu.step(kSteps).ok());
@@ -300,8 +338,7 @@ TEST_F(GpuClothTest, DifferencesAfter2000StepsArePrinted) {
         "[gpu_cloth] %s, %d steps (%.3g s): max |x_gpu - x_cpu| = %.3g m, |v_gpu - v_cpu| "
         "= %.3g m/s; against the -ffp-contract=off reference %.3g m, %.3g m/s\n",
         kind == IntegratorKind::verlet ? "verlet" : "symplectic_euler", kSteps, kSteps * double(h),
-        max_distance(g.x, interleave(cpu.state().pos)),
-        max_distance(g.v, interleave(cpu.state().vel)),
+        max_distance(g.x, sheet.positions()), max_distance(g.v, sheet.velocities()),
         max_distance(g.x, interleave(reference.state().pos)),
         max_distance(g.v, interleave(reference.state().vel)));
     for (float value : g.x) ASSERT_TRUE(std::isfinite(value));
@@ -309,10 +346,10 @@ TEST_F(GpuClothTest, DifferencesAfter2000StepsArePrinted) {
 }
 
 TEST_F(GpuClothTest, RefusesTheRowSweepModelAndOtherIntegrators) {
-  SolverT<float> row(sheet_scene(IntegratorKind::symplectic_euler), SpringKernel::row_sweep);
-  EXPECT_THROW(gpu::GpuCloth(row.model(), row.state().pos, row.state().vel), std::invalid_argument);
-  SolverT<float> cpu(sheet_scene(IntegratorKind::symplectic_euler), SpringKernel::neighbour_list);
-  gpu::GpuCloth gpu(cpu.model(), cpu.state().pos, cpu.state().vel);
+  const CpuSheet row(sheet_scene(IntegratorKind::symplectic_euler), SpringKernel::row_sweep);
+  EXPECT_THROW(gpu::GpuCloth(row.model, row.start.pos, row.start.vel), std::invalid_argument);
+  const CpuSheet cpu(sheet_scene(IntegratorKind::symplectic_euler));
+  gpu::GpuCloth gpu(cpu.model, cpu.start.pos, cpu.start.vel);
   EXPECT_THROW(gpu.step(1, 1e-3f, IntegratorKind::rk4), std::invalid_argument);
 }
 

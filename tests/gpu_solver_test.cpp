@@ -17,7 +17,7 @@
 #include "gl_context_fixture.hpp"
 #include "gpu/backend_solver.hpp"
 #include "sim/cloth/scene_copies.hpp"
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
 #include "test_scenes.hpp"
 #include "vis/render/headless_renderer.hpp"
 #include "vis/render/view_settings.hpp"
@@ -76,7 +76,8 @@ class GpuSolverTest : public testing::GlContextTest {
  protected:
   static void wind_follows_the_cpu(IntegratorKind kind) {
     const Scene scene = windy(kind);
-    SolverT<float> cpu(scene, SpringKernel::neighbour_list);
+    const auto cpu_owner = testing::solver<float>(scene, SpringKernel::neighbour_list);
+    Solver& cpu = *cpu_owner;
     const auto gpu_owner = gpu::make_gpu_solver(scene);
     Solver& gpu = *gpu_owner;
     ASSERT_EQ(gpu.dt(), cpu.dt());
@@ -89,7 +90,8 @@ class GpuSolverTest : public testing::GlContextTest {
     EXPECT_LT(d.velocity, 1e-3);
     EXPECT_EQ(d.pinned, 0.0);
     // The wind did move the sheet: without it the GPU's sheet is somewhere else.
-    SolverT<float> calm(hanging(kind), SpringKernel::neighbour_list);
+    const auto calm_owner = testing::solver<float>(hanging(kind), SpringKernel::neighbour_list);
+    Solver& calm = *calm_owner;
     ASSERT_TRUE(calm.step(200).ok());
     EXPECT_GT(largest_move(calm, gpu), 1e-3);
   }
@@ -110,7 +112,8 @@ TEST_F(GpuSolverTest, ForceFieldEqualsTheCpusAtTheSameState) {
   const auto gpu_owner = gpu::make_gpu_solver(scene);
   Solver& gpu = *gpu_owner;
   ASSERT_TRUE(gpu.step(150).ok());
-  SolverT<float> cpu(scene, SpringKernel::neighbour_list);
+  const auto cpu_owner = testing::solver<float>(scene, SpringKernel::neighbour_list);
+  Solver& cpu = *cpu_owner;
   cpu.load_state(gpu);
   ASSERT_EQ(cpu.time(), gpu.time());
   gpu.update_force_field();
@@ -136,7 +139,8 @@ TEST_F(GpuSolverTest, ForceFieldEqualsTheCpusAtTheSameState) {
 TEST_F(GpuSolverTest, ReleasePushAndGrabActAsOnTheCpu) {
   Scene scene = windy(IntegratorKind::symplectic_euler);
   scene.cloths[0].release_at = 0.05;
-  SolverT<float> cpu(scene, SpringKernel::neighbour_list);
+  const auto cpu_owner = testing::solver<float>(scene, SpringKernel::neighbour_list);
+  Solver& cpu = *cpu_owner;
   const auto gpu_owner = gpu::make_gpu_solver(scene);
   Solver& gpu = *gpu_owner;
   const auto steps_to = [&](double t) { return std::lround(t / cpu.dt()); };
@@ -180,7 +184,8 @@ TEST_F(GpuSolverTest, DropOntoASphereFollowsTheCpu) {
   ball.radius = 0.25;
   ball.key = "colliders[0]";
   scene.colliders.push_back(ball);
-  SolverT<float> cpu(scene, SpringKernel::neighbour_list);
+  const auto cpu_owner = testing::solver<float>(scene, SpringKernel::neighbour_list);
+  Solver& cpu = *cpu_owner;
   const auto gpu_owner = gpu::make_gpu_solver(scene);
   Solver& gpu = *gpu_owner;
   long landed = -1;  // the step of the first contact
@@ -326,7 +331,8 @@ TEST(GpuSolverRender, DrawsAndProbesTheGpuStateAsTheCpus) {
   const Scene scene = windy(IntegratorKind::symplectic_euler);
   const auto gpu_owner = gpu::make_gpu_solver(scene);
   Solver& gpu = *gpu_owner;
-  SolverT<float> cpu(scene, SpringKernel::neighbour_list);
+  const auto cpu_owner = testing::solver<float>(scene, SpringKernel::neighbour_list);
+  Solver& cpu = *cpu_owner;
   renderer.set_cloth(gpu);
   vis::ViewSettings view = vis::scene_view(scene, gpu);
   const std::vector<std::uint8_t> rest = renderer.render(gpu, view);

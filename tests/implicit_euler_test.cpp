@@ -14,7 +14,8 @@
 #include <vector>
 
 #include "sim/forces/force_field.hpp"
-#include "sim/solver_impl.hpp"
+#include "sim/integrators/integrator.hpp"
+#include "sim/solver.hpp"
 #include "test_scenes.hpp"
 
 namespace clothlab {
@@ -30,8 +31,9 @@ double exact_y(double t) {
 
 // Largest position error over [0, 0.5 s] against the closed form (as in single_spring_test.cpp).
 double max_error_over_half_second(long steps) {
-  SolverT<double> s(testing::single_spring(kMass, kStiffness, kRest, IntegratorKind::implicit_euler,
-                                           0.5 / double(steps)));
+  const auto s_owner = testing::solver<double>(testing::single_spring(
+      kMass, kStiffness, kRest, IntegratorKind::implicit_euler, 0.5 / double(steps)));
+  Solver& s = *s_owner;
   double worst = 0.0;
   for (long k = 0; k < steps; ++k) {
     EXPECT_TRUE(s.step(1).ok());
@@ -60,10 +62,12 @@ TEST(ImplicitEuler, OneStepOfALinearSpringIsExactBackwardEuler) {
         testing::single_spring(kMass, kStiffness, kRest, IntegratorKind::implicit_euler, h);
     scene.springs.damping = c;
     scene.forces.drag = drag;
-    SolverT<double> s(scene);
-    s.state().pos.y[1] = y0;
-    s.state().vel.y[1] = v0;
-    s.state_changed();
+    const auto s_owner = testing::solver<double>(scene);
+    Solver& s = *s_owner;
+    std::vector<Vec3d> x = testing::positions_of(s), v = testing::velocities_of(s);
+    x[1][1] = y0;
+    v[1][1] = v0;
+    s.set_state(x, v);
     ASSERT_TRUE(s.step(1).ok());
     const double v1 = (kMass * v0 + h * (kStiffness * (-y0 - kRest) - kMass * kG)) /
                       (kMass + h * (c + drag) + h * h * kStiffness);
@@ -81,19 +85,27 @@ TEST(ImplicitEuler, OneStepOfALinearSpringIsExactBackwardEuler) {
 // Taylor remainder h O((h v)^2) = O(h^3) when K and D are right; a wrong sign or a missing term
 // leaves h (K_err h v1) = O(h^2). Symplectic Euler's residual from the same state shows the
 // O(h^2) size a Jacobian-free step has.
-double free_residual(SolverT<double>& s, const State<double>& start, double h) {
-  const Model<double>& m = s.model();
+Vec3Array<double> to_array(const std::vector<Vec3d>& v) {
+  Vec3Array<double> a;
+  a.resize(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) a.set(i, v[i][0], v[i][1], v[i][2]);
+  return a;
+}
+
+// m: the solver's model (built again from its scene); start_vel: the velocities before the step.
+double free_residual(const Solver& s, const Model<double>& m, const std::vector<Vec3d>& start_vel,
+                     double h) {
   ForceWorkspace<double> ws;
   ws.resize(m);
   Vec3Array<double> f;
   f.resize(m.n);
-  compute_forces(m, h, s.state().pos, s.state().vel, f, ws, 1);
+  const std::vector<Vec3d> vel = testing::velocities_of(s);
+  compute_forces(m, h, to_array(testing::positions_of(s)), to_array(vel), f, ws, 1);
   double worst = 0.0;
   for (std::size_t i = 0; i < m.n; ++i) {
     if (m.inv_mass[i] == 0.0) continue;
     for (int a = 0; a < 3; ++a) {
-      const double r =
-          m.mass[i] * (s.state().vel.axis(a)[i] - start.vel.axis(a)[i]) - h * f.axis(a)[i];
+      const double r = m.mass[i] * (vel[i][a] - start_vel[i][a]) - h * f.axis(a)[i];
       worst = std::max(worst, std::abs(r));
     }
   }
@@ -108,21 +120,21 @@ double one_step_residual(IntegratorKind kind, double h, int newton_iterations = 
   scene.solver.precision = Precision::f64;
   scene.solver.cg_tolerance = 1e-14;
   scene.solver.cg_max_iterations = 1000;
-  SolverT<double> s(scene);
-  State<double>& st = s.state();
-  for (std::size_t i = 0; i < st.pos.size(); ++i) {
+  const auto s_owner = testing::solver<double>(scene);
+  Solver& s = *s_owner;
+  std::vector<Vec3d> x = testing::positions_of(s), v = testing::velocities_of(s);
+  for (std::size_t i = 0; i < x.size(); ++i) {
     const double k = double(i);
-    for (int a = 0; a < 3; ++a) st.pos.axis(a)[i] *= 1.05;  // stretch every spring by 5 %
-    if (s.model().inv_mass[i] == 0.0) continue;
-    st.vel.set(i, std::sin(1.3 * k), std::cos(0.7 * k), std::sin(2.1 * k + 0.5));
+    for (int a = 0; a < 3; ++a) x[i][a] *= 1.05;  // stretch every spring by 5 %
+    if (s.pinned(static_cast<int>(i))) continue;
+    v[i] = {std::sin(1.3 * k), std::cos(0.7 * k), std::sin(2.1 * k + 0.5)};
   }
-  s.state_changed();
-  const State<double> start = st;
+  s.set_state(x, v);
   EXPECT_TRUE(s.step(1).ok());
   if (kind == IntegratorKind::implicit_euler) {
     EXPECT_TRUE(s.last_solve().converged);
   }
-  return free_residual(s, start, h);
+  return free_residual(s, build_model<double>(scene), v, h);
 }
 
 TEST(ImplicitEuler, JacobianLeavesAThirdOrderBackwardEulerResidual) {
@@ -155,7 +167,9 @@ TEST(ImplicitEuler, NewtonIterationsConvergeQuadratically) {
 // (2.2e-4 s; it diverges there in 3 steps): no divergence, the total energy never rises above its
 // start (backward Euler only dissipates), and PCG converges every step.
 TEST(ImplicitEuler, FallingSheetIsStableAtFrameSteps) {
-  SolverT<double> s(testing::falling_sheet(32, IntegratorKind::implicit_euler, 1.0 / 60.0));
+  const auto s_owner = testing::solver<double>(
+      testing::falling_sheet(32, IntegratorKind::implicit_euler, 1.0 / 60.0));
+  Solver& s = *s_owner;
   const double e0 = s.energy().total();
   for (int k = 0; k < 120; ++k) {
     ASSERT_TRUE(s.step(1).ok()) << "step " << k;
@@ -171,8 +185,12 @@ TEST(ImplicitEuler, FallingSheetIsStableAtFrameSteps) {
 // RK4 at 1e-5, RMS over all vertices. Measured 4.2e-4 m (the sheet has fallen about 0.3 m; the
 // difference is implicit Euler's O(dt) damping of the fastest swinging modes).
 TEST(ImplicitEuler, MatchesRk4OnTheFallingSheetAtSmallSteps) {
-  SolverT<double> implicit(testing::falling_sheet(16, IntegratorKind::implicit_euler, 2e-4));
-  SolverT<double> reference(testing::falling_sheet(16, IntegratorKind::rk4, 1e-5));
+  const auto implicit_owner =
+      testing::solver<double>(testing::falling_sheet(16, IntegratorKind::implicit_euler, 2e-4));
+  Solver& implicit = *implicit_owner;
+  const auto reference_owner =
+      testing::solver<double>(testing::falling_sheet(16, IntegratorKind::rk4, 1e-5));
+  Solver& reference = *reference_owner;
   ASSERT_TRUE(implicit.step(1250).ok());
   ASSERT_TRUE(reference.step(25000).ok());
   double sum = 0.0;
@@ -193,7 +211,8 @@ std::vector<Vec3d> positions_after_gusts(int threads) {
   scene.forces.drag = 0.001;
   scene.forces.wind = {true, {3.0, 0.0, 1.0}, 0.5, 7, 1.0, 1.0};
   scene.solver.threads = threads;
-  SolverT<T> s(scene);
+  const auto s_owner = testing::solver<T>(scene);
+  Solver& s = *s_owner;
   EXPECT_TRUE(s.step(50).ok());
   std::vector<Vec3d> p;
   for (int i = 0; i < int(s.vertex_count()); ++i) p.push_back(s.position(i));
@@ -206,12 +225,16 @@ TEST(ImplicitEuler, OneAndTwoThreadsGiveTheSameBits) {
 }
 
 TEST(ImplicitEuler, PinnedVerticesStayAndStatsReportTheSolve) {
-  SolverT<double> s(testing::falling_sheet(16, IntegratorKind::implicit_euler, 1e-3));
-  const Model<double>& m = s.model();
+  const auto s_owner =
+      testing::solver<double>(testing::falling_sheet(16, IntegratorKind::implicit_euler, 1e-3));
+  Solver& s = *s_owner;
+  std::vector<int> pinned;
   std::vector<Vec3d> start;
-  for (int p : m.pinned) start.push_back(s.position(p));
+  for (int p = 0; p < static_cast<int>(s.vertex_count()); ++p)
+    if (s.pinned(p)) pinned.push_back(p), start.push_back(s.position(p));
+  ASSERT_EQ(pinned.size(), 2u);
   ASSERT_TRUE(s.step(100).ok());
-  for (std::size_t k = 0; k < m.pinned.size(); ++k) EXPECT_EQ(s.position(m.pinned[k]), start[k]);
+  for (std::size_t k = 0; k < pinned.size(); ++k) EXPECT_EQ(s.position(pinned[k]), start[k]);
   const SolveStats stats = s.last_solve();
   EXPECT_GT(stats.iterations, 0);
   EXPECT_TRUE(stats.converged);
@@ -221,7 +244,8 @@ TEST(ImplicitEuler, PinnedVerticesStayAndStatsReportTheSolve) {
   std::printf("16x16 sheet, dt = 1e-3: %d PCG iterations in the last step\n", stats.iterations);
   Scene tight = testing::falling_sheet(16, IntegratorKind::implicit_euler, 1e-3);
   tight.solver.cg_tolerance = 1e-6;
-  SolverT<double> t(tight);
+  const auto t_owner = testing::solver<double>(tight);
+  Solver& t = *t_owner;
   ASSERT_TRUE(t.step(100).ok());
   EXPECT_TRUE(t.last_solve().converged);
   EXPECT_LE(t.last_solve().residual, 1e-6);
@@ -237,7 +261,8 @@ TEST(ImplicitEuler, IterationCapIsReportedAsNotConverged) {
   scene.solver.precision = Precision::f64;
   scene.solver.cg_max_iterations = 1;
   scene.solver.newton_iterations = 1;  // one PCG solve per step
-  SolverT<double> s(scene);
+  const auto s_owner = testing::solver<double>(scene);
+  Solver& s = *s_owner;
   ASSERT_TRUE(s.step(1).ok());
   EXPECT_EQ(s.last_solve().iterations, 1);
   EXPECT_FALSE(s.last_solve().converged);
@@ -249,9 +274,11 @@ TEST(ImplicitEuler, IterationCapIsReportedAsNotConverged) {
 // after 0.5 s: PCG stops at a relative residual of 1e-6 in either precision).
 TEST(ImplicitEuler, FloatFollowsDoubleOnTheFallingSheet) {
   Scene scene = testing::falling_sheet(32, IntegratorKind::implicit_euler, 1.0 / 60.0);
-  SolverT<double> d(scene);
+  const auto d_owner = testing::solver<double>(scene);
+  Solver& d = *d_owner;
   scene.solver.precision = Precision::f32;
-  SolverT<float> f(scene);
+  const auto f_owner = testing::solver<float>(scene);
+  Solver& f = *f_owner;
   ASSERT_TRUE(d.step(30).ok());
   ASSERT_TRUE(f.step(30).ok());
   double worst = 0.0;

@@ -9,7 +9,8 @@
 #include <memory>
 #include <vector>
 
-#include "sim/solver_impl.hpp"
+#include "sim/integrators/integrator.hpp"
+#include "sim/solver.hpp"
 #include "test_scenes.hpp"
 
 namespace clothlab {
@@ -42,7 +43,8 @@ double max_error_over_half_second(IntegratorKind kind, long steps) {
   scene.solver.substeps = 1;
   // local_global and vbd converged (backward Euler itself); xpbd with its one sweep.
   scene.solver.iterations = kind == IntegratorKind::xpbd ? 1 : 50;
-  SolverT<double> s(scene);
+  const auto s_owner = testing::solver<double>(scene);
+  Solver& s = *s_owner;
   double worst = 0.0;
   for (long k = 0; k < steps; ++k) {
     EXPECT_TRUE(s.step(1).ok());
@@ -85,10 +87,9 @@ constexpr double kSheetTime = 0.25;  // s
 
 // RK4 at dt = 1e-5 s: converged far below the errors measured here (docs/design.md: 2e-10 m at 1 s
 // on the 32 x 32 sheet). Computed once, shared by the tests.
-const SolverT<double>& rk4_reference() {
-  static const std::unique_ptr<SolverT<double>> reference = [] {
-    auto s =
-        std::make_unique<SolverT<double>>(testing::falling_sheet(16, IntegratorKind::rk4, 1e-5));
+const Solver& rk4_reference() {
+  static const std::unique_ptr<Solver> reference = [] {
+    auto s = testing::solver<double>(testing::falling_sheet(16, IntegratorKind::rk4, 1e-5));
     EXPECT_TRUE(s->step(std::lround(kSheetTime / 1e-5)).ok());
     return s;
   }();
@@ -104,7 +105,8 @@ double sheet_rms_vs_rk4(IntegratorKind kind, double stiffness) {
   if (kind == IntegratorKind::local_global) scene.solver.iterations = 10;
   // vbd's local systems are nearly diagonal at this step: 4 iterations converge it as far.
   if (kind == IntegratorKind::vbd) scene.solver.iterations = 4;
-  SolverT<double> s(scene);
+  const auto s_owner = testing::solver<double>(scene);
+  Solver& s = *s_owner;
   EXPECT_TRUE(s.step(std::lround(kSheetTime / dt)).ok());
   return rms_difference(s, rk4_reference());
 }
@@ -146,7 +148,8 @@ Scene display_rate_sheet(IntegratorKind kind) {
 class Stable : public ::testing::TestWithParam<IntegratorKind> {};
 
 TEST_P(Stable, FallingSheetAtSixtyHertzForTwoSeconds) {
-  SolverT<double> s(display_rate_sheet(GetParam()));
+  const auto s_owner = testing::solver<double>(display_rate_sheet(GetParam()));
+  Solver& s = *s_owner;
   const double e0 = s.energy().total();
   double highest = e0;
   for (int k = 0; k < 120; ++k) {
@@ -169,7 +172,8 @@ TEST_P(Stable, StiffSpringsAndHundredfoldGravity) {
   Scene scene = display_rate_sheet(GetParam());
   scene.springs.stiffness = 1e5;
   scene.forces.gravity = {0.0, -981.0, 0.0};
-  SolverT<double> s(scene);
+  const auto s_owner = testing::solver<double>(scene);
+  Solver& s = *s_owner;
   for (int k = 0; k < 120; ++k) ASSERT_TRUE(s.step(1).ok()) << "step " << k;
   EXPECT_TRUE(all_finite(s));
   std::printf("[ measured ] %s stress: lowest vertex y %.4g m\n", to_string(GetParam()),
@@ -196,26 +200,22 @@ Scene windy_sheet(IntegratorKind kind, int res) {
   return scene;
 }
 
+// The positions after `steps` steps (as doubles: a float converts exactly, its bits kept).
 template <class T>
-std::vector<T> positions_after(Scene scene, int threads, long steps) {
+std::vector<Vec3d> positions_after(Scene scene, int threads, long steps) {
   scene.solver.threads = threads;
-  SolverT<T> s(scene);
-  EXPECT_TRUE(s.step(steps).ok());
-  std::vector<T> out;
-  for (int a = 0; a < 3; ++a) {
-    const auto& axis = s.state().pos.axis(a);
-    out.insert(out.end(), axis.begin(), axis.end());
-  }
-  return out;
+  const auto s = testing::solver<T>(scene);
+  EXPECT_TRUE(s->step(steps).ok());
+  return testing::positions_of(*s);
 }
 
 template <class T>
 void expect_thread_count_invariant(IntegratorKind kind, int res) {
   const Scene scene = windy_sheet(kind, res);
-  const std::vector<T> one = positions_after<T>(scene, 1, 50);
-  const std::vector<T> two = positions_after<T>(scene, 2, 50);
+  const std::vector<Vec3d> one = positions_after<T>(scene, 1, 50);
+  const std::vector<Vec3d> two = positions_after<T>(scene, 2, 50);
   ASSERT_EQ(one.size(), two.size());
-  EXPECT_EQ(std::memcmp(one.data(), two.data(), one.size() * sizeof(T)), 0)
+  EXPECT_EQ(std::memcmp(one.data(), two.data(), one.size() * sizeof(Vec3d)), 0)
       << "1 and 2 threads differ";
 }
 
@@ -229,26 +229,29 @@ TEST_P(LargeStepKind, OneAndTwoThreadsAreBitIdentical) {
 TEST_P(LargeStepKind, PinsNeverMove) {
   Scene scene = windy_sheet(GetParam(), 16);
   scene.solver.precision = Precision::f32;
-  SolverT<float> s(scene);
+  const auto s_owner = testing::solver<float>(scene);
+  Solver& s = *s_owner;
   ASSERT_TRUE(s.step(120).ok());
-  for (int p : s.model().pinned) {
-    for (int a = 0; a < 3; ++a) {
-      const auto i = static_cast<std::size_t>(p);
-      EXPECT_EQ(s.state().pos.axis(a)[i], s.model().rest_positions.axis(a)[i]) << "pin " << p;
-      EXPECT_EQ(s.state().vel.axis(a)[i], 0.0f) << "pin " << p;
-    }
+  const int n = static_cast<int>(s.vertex_count());
+  int pins = 0;
+  for (int p = 0; p < n; ++p) {
+    if (!s.pinned(p)) continue;
+    ++pins;
+    EXPECT_EQ(s.position(p), s.rest_position(p)) << "pin " << p;
+    EXPECT_EQ(s.velocity(p), (Vec3d{0.0, 0.0, 0.0})) << "pin " << p;
   }
+  EXPECT_EQ(pins, 2);
   // The cloth itself did move.
   double moved = 0.0;
-  for (std::size_t i = 0; i < s.vertex_count(); ++i)
-    moved = std::max(moved, std::abs(double(s.state().pos.z[i] - s.model().rest_positions.z[i])));
+  for (int i = 0; i < n; ++i)
+    moved = std::max(moved, std::abs(s.position(i)[2] - s.rest_position(i)[2]));
   EXPECT_GT(moved, 0.1);
 }
 
-Vec3d momentum(SolverT<double>& s) {
+Vec3d momentum(const SolverState& s) {
   Vec3d p{0.0, 0.0, 0.0};
-  for (std::size_t i = 0; i < s.vertex_count(); ++i)
-    for (int a = 0; a < 3; ++a) p[a] += s.model().mass[i] * s.state().vel.axis(a)[i];
+  for (int i = 0; i < static_cast<int>(s.vertex_count()); ++i)
+    for (int a = 0; a < 3; ++a) p[a] += s.mass(i) * s.velocity(i)[a];
   return p;
 }
 
@@ -264,20 +267,20 @@ TEST_P(LargeStepKind, MomentumIsConservedWithoutExternalForces) {
   // step moves momentum (measured 0.14 of the scale over 60 steps with 30 iterations).
   const bool vbd = GetParam() == IntegratorKind::vbd;
   if (vbd) scene.solver.iterations = 3000;
-  SolverT<double> s(scene);
+  const auto s_owner = testing::solver<double>(scene);
+  Solver& s = *s_owner;
   // A stretched, spinning, drifting start: deterministic, no symmetry.
   double scale = 0.0;  // sum m |v|
-  for (std::size_t i = 0; i < s.vertex_count(); ++i) {
+  std::vector<Vec3d> x = testing::positions_of(s), v(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
     const double u = double(i);
-    s.state().pos.x[i] *= 1.1;
-    s.state().pos.z[i] += 0.02 * std::sin(0.7 * u);
-    s.state().vel.set(i, 0.3 + std::sin(1.3 * u), -0.2 + std::cos(0.9 * u),
-                      0.5 * std::sin(2.1 * u));
-    scale += s.model().mass[i] *
-             std::sqrt(std::pow(s.state().vel.x[i], 2) + std::pow(s.state().vel.y[i], 2) +
-                       std::pow(s.state().vel.z[i], 2));
+    x[i][0] *= 1.1;
+    x[i][2] += 0.02 * std::sin(0.7 * u);
+    v[i] = {0.3 + std::sin(1.3 * u), -0.2 + std::cos(0.9 * u), 0.5 * std::sin(2.1 * u)};
+    scale += s.mass(static_cast<int>(i)) *
+             std::sqrt(std::pow(v[i][0], 2) + std::pow(v[i][1], 2) + std::pow(v[i][2], 2));
   }
-  s.state_changed();
+  s.set_state(x, v);
   const Vec3d before = momentum(s);
   ASSERT_TRUE(s.step(vbd ? 5 : 60).ok());
   const Vec3d after = momentum(s);
@@ -293,8 +296,10 @@ TEST_P(LargeStepKind, MomentumIsConservedWithoutExternalForces) {
 TEST_P(LargeStepKind, FloatFollowsDouble) {
   Scene scene = windy_sheet(GetParam(), 16);
   scene.solver.precision = Precision::f64;
-  SolverT<double> d(scene);
-  SolverT<float> f(scene);
+  const auto d_owner = testing::solver<double>(scene);
+  Solver& d = *d_owner;
+  const auto f_owner = testing::solver<float>(scene);
+  Solver& f = *f_owner;
   ASSERT_TRUE(d.step(60).ok());
   ASSERT_TRUE(f.step(60).ok());
   const double rms = rms_difference(d, f);
@@ -307,7 +312,8 @@ TEST_P(LargeStepKind, FloatFollowsDouble) {
 TEST_P(LargeStepKind, ReportsItsSweeps) {
   Scene scene = windy_sheet(GetParam(), 8);
   scene.solver.bdf2_solver = StepSolver::vbd;  // bdf2 reports its vbd solver's iterations
-  SolverT<double> s(scene);
+  const auto s_owner = testing::solver<double>(scene);
+  Solver& s = *s_owner;
   ASSERT_TRUE(s.step(2).ok());
   const IntegratorKind kind = GetParam();
   // As set (xpbd: 2); else the default: local_global 10, vbd 30.
@@ -317,7 +323,8 @@ TEST_P(LargeStepKind, ReportsItsSweeps) {
   const int expected = kind == IntegratorKind::xpbd ? 2 : fallback_count;
   EXPECT_EQ(s.last_solve().iterations, expected);
   scene.solver.iterations = 0;
-  SolverT<double> fallback(scene);
+  const auto fallback_owner = testing::solver<double>(scene);
+  Solver& fallback = *fallback_owner;
   ASSERT_TRUE(fallback.step(1).ok());
   EXPECT_EQ(fallback.last_solve().iterations, fallback_count);
 }

@@ -21,7 +21,8 @@
 #include "sim/scene/scene_error.hpp"
 #include "sim/scene/scene_parser.hpp"
 #include "sim/scene/validate.hpp"
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
+#include "test_scenes.hpp"
 #include "vis/textures/cloth_tangents.hpp"
 
 namespace clothlab {
@@ -167,7 +168,8 @@ TEST(MeshCloth, DropOntoASphereRestsWithoutSinkingOnAnyThreadCount) {
   ball.static_friction = ball.kinetic_friction = 0.5;
   ball.key = "colliders[0]";
   scene.colliders = {ball};
-  SolverT<double> one(scene);
+  const auto one_owner = testing::solver<double>(scene);
+  Solver& one = *one_owner;
   const Collider c(ball);
   double worst = -INFINITY;
   while (one.time() < 1.5) {

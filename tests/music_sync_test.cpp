@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "sim/realtime/frame_stepper.hpp"
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
 #include "test_scenes.hpp"
 
 namespace clothlab {
@@ -129,7 +129,8 @@ TEST(MusicClock, ALargeGapIsCappedByTheStepperAndTheMusicWaitsForTheSimulation) 
   // reports the frame as capped, so the solver ends where the music was sought to.
   Scene scene = testing::sheet(6, 1.0, 0.3, 400.0, IntegratorKind::symplectic_euler, 5e-4);
   scene.cloths[0].pins = {{0, 0}, {5, 0}};
-  SolverT<double> solver(scene);
+  const auto solver_owner = testing::solver<double>(scene);
+  Solver& solver = *solver_owner;
   const FrameStepper stepper(400);
   MusicClock live = started();
   const MusicPlan big =

@@ -4,7 +4,7 @@
 
 #include <memory>
 
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
 #include "test_scenes.hpp"
 #include "vis/gl/gl_error.hpp"
 #include "vis/gl/headless_context.hpp"
@@ -56,7 +56,8 @@ Scene flat_sheet() {
 }
 
 TEST_F(RenderTest, FlatClothInNormalModeShowsTheWorldUpNormal) {
-  SolverT<float> solver(flat_sheet());
+  const auto solver_owner = testing::solver<float>(flat_sheet());
+  Solver& solver = *solver_owner;
   vis::ViewSettings view = vis::default_view(solver);
   view.mode = DisplayMode::normals;
   for (float yaw : {0.0f, 70.0f, 200.0f}) {  // the colour is the world normal from any side
@@ -91,7 +92,8 @@ int luminance(const std::vector<std::uint8_t>& img, int w, glm::vec2 p) {
 }
 
 TEST_F(RenderTest, FloorIsBrighterUnderTheLightThanFarFromIt) {
-  SolverT<float> solver(flat_sheet());
+  const auto solver_owner = testing::solver<float>(flat_sheet());
+  Solver& solver = *solver_owner;
   vis::ViewSettings view = vis::default_view(solver);
   view.camera.pitch_deg = 35.0f;
   view.camera.distance *= 2.0f;
@@ -115,7 +117,8 @@ TEST_F(RenderTest, FloorIsBrighterUnderTheLightThanFarFromIt) {
 }
 
 TEST_F(RenderTest, ClothIsLitByTheSameLight) {
-  SolverT<float> solver(flat_sheet());
+  const auto solver_owner = testing::solver<float>(flat_sheet());
+  Solver& solver = *solver_owner;
   vis::ViewSettings view = vis::default_view(solver);
   view.camera.pitch_deg = 50.0f;
   const int w = 200, h = 150;

@@ -9,7 +9,8 @@
 #include <cmath>
 #include <vector>
 
-#include "sim/solver_impl.hpp"
+#include "sim/contact/self_collision.hpp"
+#include "sim/solver.hpp"
 #include "test_scenes.hpp"
 
 namespace clothlab {
@@ -83,8 +84,7 @@ Scene hammock(bool self) {
   return s;
 }
 
-template <class T>
-std::vector<V3> positions(const SolverT<T>& s) {
+std::vector<V3> positions(const SolverState& s) {
   std::vector<V3> x(s.vertex_count());
   for (std::size_t i = 0; i < x.size(); ++i) {
     const Vec3d p = s.position(int(i));
@@ -138,15 +138,17 @@ double closest_pair(const std::vector<V3>& x, const SkipRule<T>& rule) {
 // The pile: over 0.8 s (landing at about 0.1 s and settling), the closest pair at every step.
 template <class T>
 double strip_closest(bool self, int* pile_steps = nullptr) {
-  SolverT<T> s(falling_strip(self));
-  const SkipRule<T> rule(s.model());
+  const Scene scene = falling_strip(self);
+  const auto s_owner = testing::solver<T>(scene);
+  Solver& s = *s_owner;
+  const SkipRule<T> rule(build_model<T>(scene));
   double closest = INFINITY;
   for (int k = 0; k < 800; ++k) {
     EXPECT_TRUE(s.step(1).ok());
     closest = std::min(closest, closest_pair(positions(s), rule));
     if (self) {
-      EXPECT_EQ(s.self_collision()->last().dropped, 0);
-      if (pile_steps && s.self_collision()->last().pairs > 0) ++*pile_steps;
+      EXPECT_EQ(s.last_self_collision()->dropped, 0);
+      if (pile_steps && s.last_self_collision()->pairs > 0) ++*pile_steps;
     }
   }
   return closest;
@@ -175,8 +177,9 @@ template <class T>
 HammockRun run_hammock(bool self, int threads, int steps) {
   Scene scene = hammock(self);
   scene.solver.threads = threads;
-  SolverT<T> s(scene);
-  const SkipRule<T> rule(s.model());
+  const auto s_owner = testing::solver<T>(scene);
+  Solver& s = *s_owner;
+  const SkipRule<T> rule(build_model<T>(scene));
   const int lower_n = 24 * 24;
   HammockRun run;
   for (int k = 0; k < steps; ++k) {
@@ -212,19 +215,17 @@ TEST(SelfCollision, SheetFallsThroughTheHammockWithoutIt) {
 // give the same run, bit for bit (the hammock has two blocks of vertices).
 template <class T>
 void expect_thread_independent() {
-  std::vector<std::vector<T>> runs;
+  std::vector<std::vector<Vec3d>> runs;
   for (int threads : {1, 2}) {
     Scene scene = hammock(true);
     scene.solver.threads = threads;
-    SolverT<T> s(scene);
+    const auto s_owner = testing::solver<T>(scene);
+    Solver& s = *s_owner;
     EXPECT_TRUE(s.step(250).ok());
-    EXPECT_GT(s.self_collision()->last().pairs, 0);
-    const State<T>& st = s.state();
-    std::vector<T> all;
-    for (int a = 0; a < 3; ++a) {
-      all.insert(all.end(), st.pos.axis(a).begin(), st.pos.axis(a).end());
-      all.insert(all.end(), st.vel.axis(a).begin(), st.vel.axis(a).end());
-    }
+    EXPECT_GT(s.last_self_collision()->pairs, 0);
+    std::vector<Vec3d> all = testing::positions_of(s);
+    const std::vector<Vec3d> vel = testing::velocities_of(s);
+    all.insert(all.end(), vel.begin(), vel.end());
     runs.push_back(all);
   }
   ASSERT_EQ(runs[0].size(), runs[1].size());
@@ -241,11 +242,22 @@ TEST(SelfCollision, SameResultForAnyThreadCountDouble) {
 // Pairs: each once (a < b), none skipped, none twice, all closer than the query radius.
 TEST(SelfCollision, PairListHasEachNearPairOnce) {
   const Scene scene = hammock(true);
-  SolverT<double> s(scene);
+  const auto s_owner = testing::solver<double>(scene);
+  Solver& s = *s_owner;
   ASSERT_TRUE(s.step(200).ok());  // the sheet lies in the hammock
-  SelfCollision<double> sc(s.model(), scene.solver);
-  sc.find_pairs(s.model(), s.state(), s.dt(), 2);
-  const SkipRule<double> rule(s.model());
+  // The self-collision pass alone, on the model and the state the solver reached.
+  const Model<double> model = build_model<double>(scene);
+  State<double> state;
+  state.pos.resize(model.n);
+  state.vel.resize(model.n);
+  const std::vector<Vec3d> pos = testing::positions_of(s), vel = testing::velocities_of(s);
+  for (std::size_t i = 0; i < model.n; ++i) {
+    state.pos.set(i, pos[i][0], pos[i][1], pos[i][2]);
+    state.vel.set(i, vel[i][0], vel[i][1], vel[i][2]);
+  }
+  SelfCollision<double> sc(model, scene.solver);
+  sc.find_pairs(model, state, s.dt(), 2);
+  const SkipRule<double> rule(model);
   const std::vector<V3> x = positions(s);
   std::vector<std::pair<int, int>> found;
   sc.for_each_pair([&](const SelfCollision<double>::Pair& p) { found.emplace_back(p.a, p.b); });
@@ -264,8 +276,9 @@ TEST(SelfCollision, PairListHasEachNearPairOnce) {
 }
 
 TEST(SelfCollision, OffBuildsNothing) {
-  SolverT<float> s(hammock(false));
-  EXPECT_EQ(s.self_collision(), nullptr);
+  const auto s_owner = testing::solver<float>(hammock(false));
+  Solver& s = *s_owner;
+  EXPECT_FALSE(s.last_self_collision());
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 #include <numbers>
 #include <vector>
 
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
 #include "test_scenes.hpp"
 
 namespace clothlab {
@@ -28,7 +28,9 @@ struct Trajectory {
 };
 
 Trajectory simulate(IntegratorKind kind, double dt, long steps, bool with_energy = false) {
-  SolverT<double> s(testing::single_spring(kMass, kStiffness, kRest, kind, dt));
+  const auto s_owner =
+      testing::solver<double>(testing::single_spring(kMass, kStiffness, kRest, kind, dt));
+  Solver& s = *s_owner;
   Trajectory r;
   for (long k = 0; k <= steps; ++k) {
     if (k > 0) {
@@ -110,7 +112,8 @@ TEST(SingleSpring, DampedSpringSettlesAtTheEquilibriumStretch) {
   Scene scene =
       testing::single_spring(kMass, kStiffness, kRest, IntegratorKind::symplectic_euler, 1e-4);
   scene.springs.damping = 2.0;  // damping ratio 0.32: decays as e^(-10 t)
-  SolverT<double> s(scene);
+  const auto s_owner = testing::solver<double>(scene);
+  Solver& s = *s_owner;
   ASSERT_TRUE(s.advance(3.0).ok());
   EXPECT_NEAR(s.position(1)[1], -kRest - kAmplitude, 1e-9);  // stretch m g / k
   EXPECT_NEAR(s.velocity(1)[1], 0.0, 1e-8);
@@ -119,7 +122,9 @@ TEST(SingleSpring, DampedSpringSettlesAtTheEquilibriumStretch) {
 // Largest position error over [0, 0.5 s] against the closed form. (The error at one instant is
 // a poor measure: its curve crosses zero, which makes the ratio of two runs erratic.)
 double max_error_over_half_second(IntegratorKind kind, long steps) {
-  SolverT<double> s(testing::single_spring(kMass, kStiffness, kRest, kind, 0.5 / double(steps)));
+  const auto s_owner = testing::solver<double>(
+      testing::single_spring(kMass, kStiffness, kRest, kind, 0.5 / double(steps)));
+  Solver& s = *s_owner;
   double worst = 0.0;
   for (long k = 0; k < steps; ++k) {
     EXPECT_TRUE(s.step(1).ok());

@@ -6,7 +6,7 @@
 
 #include <random>
 
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
 #include "test_scenes.hpp"
 
 namespace clothlab {
@@ -52,23 +52,24 @@ std::vector<Scene> scenes() {
           two_cloths()};
 }
 
-template <class T>
-void perturb(SolverT<T>& s, unsigned seed) {
+void perturb(Solver& s, unsigned seed) {
   std::mt19937 rng(seed);
   std::normal_distribution<double> normal(0.0, 1.0);
-  for (std::size_t i = 0; i < s.model().n; ++i) {
+  std::vector<Vec3d> x = testing::positions_of(s), v(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
     for (int a = 0; a < 3; ++a) {
-      s.state().pos.axis(a)[i] += static_cast<T>(0.02 * normal(rng));
-      s.state().vel.axis(a)[i] = static_cast<T>(0.5 * normal(rng));
+      x[i][a] += 0.02 * normal(rng);
+      v[i][a] = 0.5 * normal(rng);
     }
   }
-  s.state_changed();
+  s.set_state(x, v);
 }
 
 template <class T>
 void expect_same_physics(const Scene& scene, double tolerance) {
-  SolverT<T> sweep(scene, SpringKernel::row_sweep);
-  SolverT<T> list(scene, SpringKernel::neighbour_list);
+  const auto sweep_owner = testing::solver<T>(scene, SpringKernel::row_sweep);
+  const auto list_owner = testing::solver<T>(scene, SpringKernel::neighbour_list);
+  Solver &sweep = *sweep_owner, &list = *list_owner;
   ASSERT_EQ(sweep.spring_count(), list.spring_count());
   perturb(sweep, 5);
   perturb(list, 5);
@@ -101,23 +102,22 @@ TEST(SpringKernels, RowSweepEqualsNeighbourListInFloat) {
 TEST(SpringKernels, BandsGiveTheSameBitsOnOneAndTwoThreads) {
   Scene scene = sized(64, 64);
   scene.solver.integrator = IntegratorKind::symplectic_euler;
-  SolverT<float> one(scene), two(scene);
+  const auto one_owner = testing::solver<float>(scene), two_owner = testing::solver<float>(scene);
+  Solver &one = *one_owner, &two = *two_owner;
   two.set_threads(2);
   ASSERT_EQ(two.threads(), 2);
   perturb(one, 9);
   perturb(two, 9);
   ASSERT_TRUE(one.step(40).ok());
   ASSERT_TRUE(two.step(40).ok());
-  for (int a = 0; a < 3; ++a) {
-    EXPECT_EQ(one.state().pos.axis(a), two.state().pos.axis(a)) << "axis " << a;
-    EXPECT_EQ(one.state().vel.axis(a), two.state().vel.axis(a)) << "axis " << a;
-  }
+  EXPECT_EQ(testing::positions_of(one), testing::positions_of(two));
+  EXPECT_EQ(testing::velocities_of(one), testing::velocities_of(two));
 }
 
 TEST(SpringKernels, SpringCountOnFourByFourIs82) {
   Scene s = testing::sheet(4, 1.0, 0.1, 100.0, IntegratorKind::verlet, 1e-4);
-  EXPECT_EQ(SolverT<float>(s, SpringKernel::row_sweep).spring_count(), 82u);
-  EXPECT_EQ(SolverT<float>(s, SpringKernel::neighbour_list).spring_count(), 82u);
+  EXPECT_EQ(testing::solver<float>(s, SpringKernel::row_sweep)->spring_count(), 82u);
+  EXPECT_EQ(testing::solver<float>(s, SpringKernel::neighbour_list)->spring_count(), 82u);
 }
 
 }  // namespace

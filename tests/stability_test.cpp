@@ -8,7 +8,7 @@
 #include "bench/suites/lab_scenes.hpp"
 #include "bench/suites/stability.hpp"
 #include "bench/suites/suites.hpp"
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
 #include "sim/stability/step_limit.hpp"
 #include "test_scenes.hpp"
 
@@ -76,8 +76,9 @@ TEST(StepLimit, ClosedFormsOfTheOscillator) {
 TEST(AutoStep, ExplicitMethodsTakeASafeFractionOfTheirLimit) {
   Scene scene = testing::falling_sheet(16, IntegratorKind::symplectic_euler, 1.0);
   scene.solver.dt_auto = true;
-  SolverT<double> s(scene);
-  const Spectrum sp = estimate_spectrum(s.model());
+  const auto s_owner = testing::solver<double>(scene);
+  Solver& s = *s_owner;
+  const Spectrum sp = estimate_spectrum(build_model<double>(scene));
   const double limit =
       stable_step_limit(IntegratorKind::symplectic_euler, sp.omega_max, sp.gamma_max);
   // kAutoSafety of the limit, rounded down to two significant digits.
@@ -92,14 +93,17 @@ TEST(AutoStep, ExplicitMethodsTakeASafeFractionOfTheirLimit) {
 TEST(AutoStep, LargeStepMethodsUseTheDisplayRate) {
   Scene scene = testing::falling_sheet(16, IntegratorKind::xpbd, 1.0);
   scene.solver.dt_auto = true;
-  SolverT<double> x(scene);
+  const auto x_owner = testing::solver<double>(scene);
+  Solver& x = *x_owner;
   EXPECT_NEAR(x.dt(), 1.0 / 60.0, 1e-15);
-  const StepChoice c = choose_step(IntegratorKind::xpbd, estimate_spectrum(x.model()));
+  const StepChoice c =
+      choose_step(IntegratorKind::xpbd, estimate_spectrum(build_model<double>(scene)));
   EXPECT_EQ(x.substeps(), c.substeps);
   EXPECT_NEAR(x.dt() / x.substeps(), std::min(1.0 / 60.0, kXpbdSubstepLimits * c.limit),
               kXpbdSubstepLimits * c.limit);
   scene.solver.integrator = IntegratorKind::implicit_euler;
-  SolverT<double> ie(scene);
+  const auto ie_owner = testing::solver<double>(scene);
+  Solver& ie = *ie_owner;
   EXPECT_NEAR(ie.dt(), kImplicitStep, 1e-15);
 }
 
@@ -111,8 +115,10 @@ TEST(AutoStep, XpbdSubstepsStopAtTheirCap) {
   int previous = 0;
   for (double k : {100.0, 1e3, 1e4, 1e5, 1e7}) {
     scene.springs.stiffness = k;
-    SolverT<double> x(scene);
-    const StepChoice c = choose_step(IntegratorKind::xpbd, estimate_spectrum(x.model()));
+    const auto x_owner = testing::solver<double>(scene);
+    Solver& x = *x_owner;
+    const StepChoice c =
+        choose_step(IntegratorKind::xpbd, estimate_spectrum(build_model<double>(scene)));
     const int uncapped = int(std::ceil(1.0 / 60.0 / (kXpbdSubstepLimits * c.limit)));
     EXPECT_EQ(x.substeps(), std::min(uncapped, kXpbdMaxSubsteps)) << k;
     EXPECT_GE(x.substeps(), previous) << k;
@@ -130,13 +136,15 @@ TEST(AutoStep, FollowsStiffnessAndResolution) {
       Scene scene = bench::hanging_sheet(p, IntegratorKind::verlet, 1.0);
       scene.solver.dt_auto = true;
       scene.solver.precision = Precision::f32;
-      SolverT<float> s(scene);
+      const auto s_owner = testing::solver<float>(scene);
+      Solver& s = *s_owner;
       EXPECT_TRUE(s.advance(0.3).ok()) << res << "^2, k = " << k << ", dt " << s.dt();
     }
   }
   bench::SheetParams stiff{40, 1.0, 0.2, 20000.0, 0.05};
   Scene fixed = bench::hanging_sheet(stiff, IntegratorKind::verlet, 5e-4);  // fine for 8^2, k 100
-  SolverT<double> s(fixed);
+  const auto s_owner = testing::solver<double>(fixed);
+  Solver& s = *s_owner;
   EXPECT_FALSE(s.advance(0.3).ok());
 }
 

@@ -6,7 +6,7 @@
 #include <random>
 
 #include "sim/forces/force_field.hpp"
-#include "sim/solver_impl.hpp"
+#include "sim/model/model.hpp"
 #include "test_scenes.hpp"
 
 namespace clothlab {
@@ -28,17 +28,18 @@ std::vector<Scene> shapes() {
 
 TEST(Surface, GridSweepEqualsTriangleList) {
   for (const Scene& scene : shapes()) {
-    SolverT<double> s(scene);
+    const Model<double> m = build_model<double>(scene);
+    Vec3Array<double> pos = m.rest_positions;
     std::mt19937 rng(3);
     std::normal_distribution<double> normal(0.0, 0.05);
-    for (std::size_t i = 0; i < s.model().n; ++i)
-      for (int a = 0; a < 3; ++a) s.state().pos.axis(a)[i] += normal(rng);
+    for (std::size_t i = 0; i < m.n; ++i)
+      for (int a = 0; a < 3; ++a) pos.axis(a)[i] += normal(rng);
     ForceWorkspace<double> sweep, list;
-    sweep.resize(s.model());
-    list.resize(s.model());
-    compute_surface(s.model(), s.state().pos, sweep, 1);
-    compute_surface_from_triangles(s.model(), s.state().pos, list, 1);
-    for (std::size_t i = 0; i < s.model().n; ++i) {
+    sweep.resize(m);
+    list.resize(m);
+    compute_surface(m, pos, sweep, 1);
+    compute_surface_from_triangles(m, pos, list, 1);
+    for (std::size_t i = 0; i < m.n; ++i) {
       for (int a = 0; a < 3; ++a)
         ASSERT_NEAR(sweep.normal.axis(a)[i], list.normal.axis(a)[i], 1e-12) << "vertex " << i;
       ASSERT_NEAR(sweep.vertex_area[i], list.vertex_area[i], 1e-14) << "vertex " << i;
@@ -49,14 +50,14 @@ TEST(Surface, GridSweepEqualsTriangleList) {
 TEST(Surface, VertexAreasOfAFlatSheetAddUpToItsArea) {
   Scene scene = testing::sheet(7, 1.0, 0.2, 100.0, IntegratorKind::verlet, 1e-4);
   scene.cloths[0].size = {1.5, 0.8};
-  SolverT<double> s(scene);
+  const Model<double> m = build_model<double>(scene);
   ForceWorkspace<double> ws;
-  ws.resize(s.model());
-  compute_surface(s.model(), s.state().pos, ws, 2);
+  ws.resize(m);
+  compute_surface(m, m.rest_positions, ws, 2);
   double area = 0.0;
   for (double a : ws.vertex_area) area += a;
   EXPECT_NEAR(area, 1.5 * 0.8, 1e-12);
-  for (std::size_t i = 0; i < s.model().n; ++i) EXPECT_NEAR(std::abs(ws.normal.z[i]), 1.0, 1e-12);
+  for (std::size_t i = 0; i < m.n; ++i) EXPECT_NEAR(std::abs(ws.normal.z[i]), 1.0, 1e-12);
 }
 
 }  // namespace

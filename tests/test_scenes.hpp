@@ -2,9 +2,14 @@
 #pragma once
 
 #include <cmath>
+#include <memory>
+#include <type_traits>
+#include <vector>
 
 #include "bench/suites/lab_scenes.hpp"
+#include "sim/model/model.hpp"
 #include "sim/scene/scene.hpp"
+#include "sim/solver.hpp"
 
 namespace clothlab::testing {
 
@@ -59,6 +64,26 @@ inline Scene falling_sheet(int res, IntegratorKind integrator, double dt) {
   bench::SheetParams p;
   p.resolution = res;
   return bench::hanging_sheet(p, integrator, dt);
+}
+
+// The scene's solver in float (T = float) or double (T = double), whatever precision the scene
+// names, with the row-sweep or neighbour-list spring kernel.
+template <class T>
+std::unique_ptr<Solver> solver(Scene scene, SpringKernel kernel = SpringKernel::row_sweep) {
+  scene.solver.precision = std::is_same_v<T, double> ? Precision::f64 : Precision::f32;
+  return make_solver(scene, kernel);
+}
+
+// Every vertex's position or velocity (m, m/s), for set_state after a change.
+inline std::vector<Vec3d> positions_of(const SolverState& s) {
+  std::vector<Vec3d> x(s.vertex_count());
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = s.position(static_cast<int>(i));
+  return x;
+}
+inline std::vector<Vec3d> velocities_of(const SolverState& s) {
+  std::vector<Vec3d> v(s.vertex_count());
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = s.velocity(static_cast<int>(i));
+  return v;
 }
 
 }  // namespace clothlab::testing

@@ -5,7 +5,7 @@
 #include <omp.h>
 
 #include "sim/core/parallel.hpp"
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
 #include "test_scenes.hpp"
 
 namespace clothlab {
@@ -19,21 +19,21 @@ Scene square(int res, int threads) {
 
 TEST(AutoThreads, SmallGridRunsOnOneThread) {
   static_assert(32 * 32 < kParallelMinVertices);
-  EXPECT_EQ(SolverT<float>(square(32, 0)).threads(), 1);
-  SolverT<float> solver(square(32, 2));
-  EXPECT_EQ(solver.threads(), 2);  // asked for: given
-  solver.set_threads(0);
-  EXPECT_EQ(solver.threads(), 1);
+  EXPECT_EQ(make_solver(square(32, 0))->threads(), 1);
+  const auto solver = make_solver(square(32, 2));
+  EXPECT_EQ(solver->threads(), 2);  // asked for: given
+  solver->set_threads(0);
+  EXPECT_EQ(solver->threads(), 1);
 }
 
 TEST(AutoThreads, LargeGridUsesEveryCore) {
   static_assert(128 * 128 >= kParallelMinVertices);
-  SolverT<float> solver(square(128, 0));
-  EXPECT_EQ(solver.threads(), omp_get_max_threads());
-  solver.set_threads(1);
-  EXPECT_EQ(solver.threads(), 1);
-  solver.set_threads(0);
-  EXPECT_EQ(solver.threads(), omp_get_max_threads());
+  const auto solver = make_solver(square(128, 0));
+  EXPECT_EQ(solver->threads(), omp_get_max_threads());
+  solver->set_threads(1);
+  EXPECT_EQ(solver->threads(), 1);
+  solver->set_threads(0);
+  EXPECT_EQ(solver->threads(), omp_get_max_threads());
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
 #include "sim/trace/csv_trace.hpp"
 #include "sim/trace/trace_run.hpp"
 #include "test_scenes.hpp"
@@ -64,7 +64,8 @@ TEST(Trace, HeaderIsTheDocumentedOne) {
 
 TEST(Trace, ReadsBackTheSolverValues) {
   const Scene scene = busy_scene();
-  SolverT<float> s(scene);
+  const auto s_owner = testing::solver<float>(scene);
+  Solver& s = *s_owner;
   const std::string path = temp_file("readback.csv");
   const auto r = run_trace(s, *scene.trace, false, false, whole_steps(0.1, s.dt()), path);
   ASSERT_FALSE(r.divergence);
@@ -96,7 +97,8 @@ TEST(Trace, ThreadCountDoesNotChangeTheTraceByteForByte) {
     for (int threads : {1, 2}) {
       Scene scene = busy_scene();
       scene.solver.threads = threads;
-      SolverT<float> s(scene, kernel);
+      const auto s_owner = testing::solver<float>(scene, kernel);
+      Solver& s = *s_owner;
       ASSERT_EQ(s.threads(), threads);
       const std::string path = temp_file("threads" + std::to_string(threads) + ".csv");
       ASSERT_FALSE(
@@ -115,7 +117,8 @@ TEST(Trace, DivergedRunLeavesNoFile) {
   scene.solver.integrator = IntegratorKind::explicit_euler;
   scene.forces.wind.enabled = false;
   scene.springs.damping = 0.0;
-  SolverT<float> s(scene);
+  const auto s_owner = testing::solver<float>(scene);
+  Solver& s = *s_owner;
   const std::string path = temp_file("diverged.csv");
   const auto r = run_trace(s, *scene.trace, false, false, whole_steps(5.0, s.dt()), path);
   ASSERT_TRUE(r.divergence);

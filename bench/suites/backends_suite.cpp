@@ -18,7 +18,7 @@
 #include "bench/suites/suites.hpp"
 #include "gpu/backend_solver.hpp"
 #include "sim/cloth/scene_copies.hpp"
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
 #include "vis/gl/headless_context.hpp"
 
 namespace clothlab::bench {
@@ -45,7 +45,8 @@ std::vector<Table> backends_suite(const SuiteOptions& o) {
                "vertices", "springs", "ms per step", "ns per spring-step"};
   auto measure = [&](int res, int copies) {
     for (int threads : {1, 2}) {
-      SolverT<float> cpu(sheets(res, copies, threads));
+      const auto cpu_owner = make_solver(sheets(res, copies, threads));
+      Solver& cpu = *cpu_owner;
       const double s = seconds_per_step(cpu, seconds);
       t.add({"cpu", std::to_string(threads), std::to_string(res) + "x" + std::to_string(res),
              std::to_string(copies), std::to_string(cpu.vertex_count()),

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <functional>
 #include <ostream>
+#include <string>
+#include <vector>
 
 #include "bench/bench_scenes.hpp"
 #include "bench/suites/step_timing.hpp"
@@ -50,53 +52,45 @@ void lay_flat_on_floor(Scene& s) {
   s.colliders = {floor_plane(0.0)};
 }
 
-}  // namespace
-
-std::vector<Table> features_suite(const SuiteOptions& o) {
-  const int res = o.quick ? 32 : 128;
-  const int rounds = o.quick ? 2 : 7;
-  const double seconds = o.quick ? 0.03 : 0.25;
-  // The window draws at 60 Hz; with the bench scene's step, one frame spans this many steps.
-  const Scene bare_scene = sheet_scene(res, o.threads, false);
-  const long steps_per_frame = std::max(1L, std::lround(1.0 / 60.0 / bare_scene.solver.dt));
-  std::vector<float> buffer(3 * static_cast<std::size_t>(res) * res);
+// What the window does once per displayed frame while something shows fields: every
+// `steps_per_frame` steps (per_frame) or every step.
+struct FieldExport {
+  long steps_per_frame = 1;
   long counter = 0;
-  // What the window does once per displayed frame while something shows fields.
-  auto export_fields = [&](Solver& s) {
+  std::vector<float> buffer;
+  void operator()(Solver& s) {
     s.update_force_field();
     s.copy_normals(buffer.data());
     s.copy_velocities(buffer.data());
-  };
+  }
+  void per_frame(Solver& s) {
+    if (++counter % steps_per_frame == 0) (*this)(s);
+  }
+};
 
-  const std::vector<Variant> variants = {
-      {"bare step", "reference", [](Scene&) {}, nullptr},
+ColliderSpec far_sphere(int k) {
+  return sphere_at({5.0, 0.3 * k, 0.0}, 0.1);
+}
+
+// The parts a scene may use ("used"), the references they are measured against, and parts that
+// are present but inactive ("unused", which must cost nothing).
+std::vector<Variant> feature_variants(FieldExport& fields) {
+  auto none = [](Scene&) {};
+  auto wind = [](bool enabled, Vec3d velocity, double gust) {
+    return [=](Scene& s) { s.forces.wind = {enabled, velocity, gust, 7, 1.0, 1.0}; };
+  };
+  return {
+      {"bare step", "reference", none, nullptr},
       {"+ drag", "used", [](Scene& s) { s.forces.drag = 0.001; }, nullptr},
-      {"+ steady wind", "used",
-       [](Scene& s) {
-         s.forces.wind = {true, {3.0, 0.0, 1.0}, 0.0, 7, 1.0, 1.0};
-       },
-       nullptr},
-      {"+ gusty wind", "used",
-       [](Scene& s) {
-         s.forces.wind = {true, {3.0, 0.0, 1.0}, 0.5, 7, 1.0, 1.0};
-       },
-       nullptr},
-      {"+ field export every frame (forces, normals, velocities)", "used", [](Scene&) {},
-       [&](Solver& s) {
-         if (++counter % steps_per_frame == 0) export_fields(s);
-       }},
-      {"+ field export every step", "used", [](Scene&) {}, export_fields},
-      {"+ energy every step (a trace with energy)", "used", [](Scene&) {},
+      {"+ steady wind", "used", wind(true, {3.0, 0.0, 1.0}, 0.0), nullptr},
+      {"+ gusty wind", "used", wind(true, {3.0, 0.0, 1.0}, 0.5), nullptr},
+      {"+ field export every frame (forces, normals, velocities)", "used", none,
+       [&fields](Solver& s) { fields.per_frame(s); }},
+      {"+ field export every step", "used", none, [&fields](Solver& s) { fields(s); }},
+      {"+ energy every step (a trace with energy)", "used", none,
        [](Solver& s) { (void)s.energy(); }},
-      {"wind table present, enabled = false", "unused",
-       [](Scene& s) {
-         s.forces.wind = {false, {3.0, 0.0, 1.0}, 0.5, 7, 1.0, 1.0};
-       },
-       nullptr},
-      {"wind enabled but calm (velocity 0, gust 0)", "unused",
-       [](Scene& s) {
-         s.forces.wind = {true, {0.0, 0.0, 0.0}, 0.0, 7, 1.0, 1.0};
-       },
+      {"wind table present, enabled = false", "unused", wind(false, {3.0, 0.0, 1.0}, 0.5), nullptr},
+      {"wind enabled but calm (velocity 0, gust 0)", "unused", wind(true, {0.0, 0.0, 0.0}, 0.0),
        nullptr},
       {"drag = 0 written out", "unused", [](Scene& s) { s.forces.drag = 0.0; }, nullptr},
       {"+ a sphere the sheet hangs against", "used",
@@ -122,57 +116,88 @@ std::vector<Table> features_suite(const SuiteOptions& o) {
        nullptr},
       {"ten spheres 5 m away", "unused",
        [](Scene& s) {
-         for (int k = 0; k < 10; ++k) s.colliders.push_back(sphere_at({5.0, 0.3 * k, 0.0}, 0.1));
+         for (int k = 0; k < 10; ++k) s.colliders.push_back(far_sphere(k));
        },
        nullptr},
   };
+}
 
-  std::vector<std::vector<double>> ratios(variants.size());
+// Per variant, its cost over the bare step's in each round (round-robin); the bare step's ns.
+struct RoundResults {
+  std::vector<std::vector<double>> ratios;
   std::vector<double> bare_ns;
+};
+
+RoundResults measure_rounds(const std::vector<Variant>& variants, const Scene& bare_scene,
+                            FieldExport& fields, int rounds, double seconds, std::ostream* log) {
+  RoundResults out;
+  out.ratios.resize(variants.size());
   for (int round = 0; round < rounds; ++round) {
     double bare = NAN;
     for (std::size_t v = 0; v < variants.size(); ++v) {
       Scene scene = bare_scene;
       variants[v].edit(scene);
       auto solver = make_solver(scene);
-      counter = 0;
+      fields.counter = 0;
       const double t = variants[v].per_step
                            ? seconds_per_step(*solver, seconds, variants[v].per_step)
                            : seconds_per_step(*solver, seconds);
       if (v == 0) {
         bare = t;
-        bare_ns.push_back(1e9 * t);
+        out.bare_ns.push_back(1e9 * t);
       }
-      ratios[v].push_back(t / bare);
+      out.ratios[v].push_back(t / bare);
     }
-    if (o.log) *o.log << "features: round " << round + 1 << " of " << rounds << " done\n";
+    if (log) *log << "features: round " << round + 1 << " of " << rounds << " done\n";
   }
+  return out;
+}
+
+// The table's rows, and a collider's cost per vertex in contact: the flat sheet on its floor
+// against the same sheet without it.
+void add_feature_rows(Table& table, const std::vector<Variant>& variants, const RoundResults& r,
+                      int res) {
+  for (std::size_t v = 0; v < variants.size(); ++v) {
+    const double ratio = median(r.ratios[v]);
+    std::string verdict = "-";
+    if (variants[v].kind == "unused")
+      verdict =
+          ratio - 1.0 <= kUnusedLimit ? "ok (< 2 %)" : "FAIL (costs " + pct(ratio - 1.0) + ")";
+    table.add({variants[v].name, variants[v].kind, fixed(ratio, 3), pct(ratio - 1.0), verdict});
+  }
+  auto ratio_of = [&](const std::string& prefix) -> double {
+    for (std::size_t v = 0; v < variants.size(); ++v)
+      if (variants[v].name.rfind(prefix, 0) == 0) return median(r.ratios[v]);
+    return NAN;
+  };
+  const double contact_ns = (ratio_of("sheet lying flat") - ratio_of("the same flat sheet")) *
+                            median(r.bare_ns) / (double(res) * res);
+  table.add({"collision response per vertex in contact, per collider", "used", "-",
+             fixed(contact_ns, 1) + " ns", "-"});
+}
+
+}  // namespace
+
+std::vector<Table> features_suite(const SuiteOptions& o) {
+  const int res = o.quick ? 32 : 128;
+  const int rounds = o.quick ? 2 : 7;
+  const double seconds = o.quick ? 0.03 : 0.25;
+  const Scene bare_scene = sheet_scene(res, o.threads, false);
+  // The window draws at 60 Hz; with the bench scene's step, one frame spans this many steps.
+  FieldExport fields;
+  fields.steps_per_frame = std::max(1L, std::lround(1.0 / 60.0 / bare_scene.solver.dt));
+  fields.buffer.resize(3 * static_cast<std::size_t>(res) * res);
+  const std::vector<Variant> variants = feature_variants(fields);
+  const RoundResults results = measure_rounds(variants, bare_scene, fields, rounds, seconds, o.log);
 
   Table table;
   table.title = "Feature costs: " + std::to_string(res) + "x" + std::to_string(res) +
                 " bench sheet, symplectic Euler, float, " + std::to_string(o.threads) +
-                " thread(s); bare step " + fixed(median(bare_ns) * 1e-3, 1) +
-                " us; field export per frame = every " + std::to_string(steps_per_frame) +
+                " thread(s); bare step " + fixed(median(results.bare_ns) * 1e-3, 1) +
+                " us; field export per frame = every " + std::to_string(fields.steps_per_frame) +
                 " steps; median of " + std::to_string(rounds) + " rounds";
   table.columns = {"configuration", "kind", "cost / bare step", "extra", "verdict"};
-  for (std::size_t v = 0; v < variants.size(); ++v) {
-    const double r = median(ratios[v]);
-    std::string verdict = "-";
-    if (variants[v].kind == "unused")
-      verdict = r - 1.0 <= kUnusedLimit ? "ok (< 2 %)" : "FAIL (costs " + pct(r - 1.0) + ")";
-    table.add({variants[v].name, variants[v].kind, fixed(r, 3), pct(r - 1.0), verdict});
-  }
-  // A collider's cost per vertex in contact: the flat sheet on its floor against the same sheet
-  // without it.
-  auto ratio_of = [&](const std::string& prefix) -> double {
-    for (std::size_t v = 0; v < variants.size(); ++v)
-      if (variants[v].name.rfind(prefix, 0) == 0) return median(ratios[v]);
-    return NAN;
-  };
-  const double contact_ns = (ratio_of("sheet lying flat") - ratio_of("the same flat sheet")) *
-                            median(bare_ns) / (double(res) * res);
-  table.add({"collision response per vertex in contact, per collider", "used", "-",
-             fixed(contact_ns, 1) + " ns", "-"});
+  add_feature_rows(table, variants, results, res);
   return {table};
 }
 

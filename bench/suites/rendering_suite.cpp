@@ -5,8 +5,11 @@
 // one with a sphere, a box and a torus knot beside the cloth, so shadows fall on objects too.
 // Variants are measured round-robin, several rounds, median per variant (features_suite).
 #include <algorithm>
+#include <array>
 #include <functional>
 #include <ostream>
+#include <string>
+#include <vector>
 
 #include "bench/suites/step_timing.hpp"
 #include "bench/suites/suites.hpp"
@@ -33,29 +36,14 @@ MeshSpec mesh(MeshKind kind, Vec3d centre, double radius, Vec3d colour) {
   return m;
 }
 
-}  // namespace
-
-std::vector<Table> rendering_suite(const SuiteOptions& o) {
-  const int width = o.quick ? 320 : 1280, height = o.quick ? 240 : 720;
-  const int rounds = o.quick ? 1 : 5, frames = o.quick ? 1 : 3;
-  Scene scene = read_scene_file(CLOTHLAB_DEFAULT_SCENE);
-  scene.solver.threads = o.threads;
-  scene.render.meshes = {mesh(MeshKind::sphere, {-1.4, 0.4, 0.8}, 0.4, {0.8, 0.3, 0.2}),
-                         mesh(MeshKind::box, {1.5, 0.3, 0.6}, 0.3, {0.3, 0.5, 0.8}),
-                         mesh(MeshKind::torus_knot, {0.0, 0.5, 1.4}, 0.45, {0.85, 0.75, 0.3})};
-  auto solver = make_solver(scene);
-  vis::HeadlessRenderer renderer(width, height);
-  renderer.set_cloth(*solver);
-  renderer.set_scene(scene.render, *solver);
-  const vis::ViewSettings base = vis::scene_view(scene, *solver);
-
+std::vector<Variant> render_variants() {
   auto mode = [](vis::DisplayMode m, ShadowFilter f) {
     return [m, f](vis::ViewSettings& v) {
       v.mode = m;
       v.shadows = f;
     };
   };
-  const std::vector<Variant> variants = {
+  return {
       {"mode 3, every optional pass off (no shadows, no sky)",
        [](vis::ViewSettings& v) {
          v.mode = vis::DisplayMode::lambert;
@@ -81,50 +69,45 @@ std::vector<Table> rendering_suite(const SuiteOptions& o) {
          v.arrows.force = true;
        }},
   };
+}
 
-  struct Series {
-    std::vector<double> pass[vis::kPassCount], gpu, wall;
-  };
-  std::vector<Series> series(variants.size());
-  for (int round = 0; round < rounds; ++round) {
-    for (std::size_t k = 0; k < variants.size(); ++k) {
-      vis::ViewSettings view = base;
-      variants[k].edit(view);
-      // An untimed frame first: maps and textures a variant needs are built on its first frame.
-      renderer.draw(*solver, view);
-      glFinish();
-      std::array<double, vis::kPassCount> sum{};
-      double wall = 0.0;
-      for (int f = 0; f < frames; ++f) {
-        // The frame as a user gets it, then the same frame split into passes.
-        renderer.renderer().enable_pass_timing(false);
-        Stopwatch clock;
-        (void)renderer.render(*solver, view);  // draw, resolve, read back
-        wall += clock.seconds();
-        renderer.renderer().enable_pass_timing(true);
-        renderer.draw(*solver, view);
-        const auto ms = renderer.renderer().pass_timer()->collect();
-        for (std::size_t p = 0; p < vis::kPassCount; ++p) sum[p] += ms[p];
-      }
-      double gpu = 0.0;
-      for (std::size_t p = 0; p < vis::kPassCount; ++p) {
-        series[k].pass[p].push_back(sum[p] / frames);
-        gpu += sum[p] / frames;
-      }
-      series[k].gpu.push_back(gpu);
-      series[k].wall.push_back(1e3 * wall / frames);
-    }
-    if (o.log) *o.log << "rendering: round " << round + 1 << " of " << rounds << " done\n";
+// One variant's timings over the rounds: per pass, the passes' sum, and the whole frame (ms).
+struct Series {
+  std::vector<double> pass[vis::kPassCount], gpu, wall;
+};
+
+// One round of one variant: an untimed frame first (maps and textures a variant needs are built
+// on its first frame), then `frames` frames as a user gets them (draw, resolve, read back) and
+// the same frames again split into passes.
+void time_variant(vis::HeadlessRenderer& renderer, Solver& solver, const vis::ViewSettings& view,
+                  int frames, Series& series) {
+  renderer.draw(solver, view);
+  glFinish();
+  std::array<double, vis::kPassCount> sum{};
+  double wall = 0.0;
+  for (int f = 0; f < frames; ++f) {
+    renderer.renderer().enable_pass_timing(false);
+    Stopwatch clock;
+    (void)renderer.render(solver, view);
+    wall += clock.seconds();
+    renderer.renderer().enable_pass_timing(true);
+    renderer.draw(solver, view);
+    const auto ms = renderer.renderer().pass_timer()->collect();
+    for (std::size_t p = 0; p < vis::kPassCount; ++p) sum[p] += ms[p];
   }
+  double gpu = 0.0;
+  for (std::size_t p = 0; p < vis::kPassCount; ++p) {
+    series.pass[p].push_back(sum[p] / frames);
+    gpu += sum[p] / frames;
+  }
+  series.gpu.push_back(gpu);
+  series.wall.push_back(1e3 * wall / frames);
+}
 
+Table rendering_table(const std::vector<Variant>& variants, const std::vector<Series>& series,
+                      const std::string& title) {
   Table table;
-  table.title = "Render cost per headless frame: " + std::string(CLOTHLAB_DEFAULT_SCENE) +
-                " + 3 meshes, " + std::to_string(width) + "x" + std::to_string(height) +
-                " (4x MSAA) on " + renderer.gl_renderer() +
-                "; pass times: wall clock between glFinish at each pass boundary; frame = draw + "
-                "resolve + readback, timed separately without the boundaries; "
-                "median of " +
-                std::to_string(rounds) + " rounds of " + std::to_string(frames) + " frames";
+  table.title = title;
   table.columns = {"variant",           "shadow map (ms)", "diffusion (ms)",
                    "scene (ms)",        "sky (ms)",        "overlay (ms)",
                    "passes total (ms)", "frame wall (ms)", "frame / all off"};
@@ -138,7 +121,42 @@ std::vector<Table> rendering_suite(const SuiteOptions& o) {
     row.push_back(fixed(median(s.wall) / reference, 3));
     table.add(row);
   }
-  return {table};
+  return table;
+}
+
+}  // namespace
+
+std::vector<Table> rendering_suite(const SuiteOptions& o) {
+  const int width = o.quick ? 320 : 1280, height = o.quick ? 240 : 720;
+  const int rounds = o.quick ? 1 : 5, frames = o.quick ? 1 : 3;
+  Scene scene = read_scene_file(CLOTHLAB_DEFAULT_SCENE);
+  scene.solver.threads = o.threads;
+  scene.render.meshes = {mesh(MeshKind::sphere, {-1.4, 0.4, 0.8}, 0.4, {0.8, 0.3, 0.2}),
+                         mesh(MeshKind::box, {1.5, 0.3, 0.6}, 0.3, {0.3, 0.5, 0.8}),
+                         mesh(MeshKind::torus_knot, {0.0, 0.5, 1.4}, 0.45, {0.85, 0.75, 0.3})};
+  auto solver = make_solver(scene);
+  vis::HeadlessRenderer renderer(width, height);
+  renderer.set_cloth(*solver);
+  renderer.set_scene(scene.render, *solver);
+  const vis::ViewSettings base = vis::scene_view(scene, *solver);
+  const std::vector<Variant> variants = render_variants();
+  std::vector<Series> series(variants.size());
+  for (int round = 0; round < rounds; ++round) {
+    for (std::size_t k = 0; k < variants.size(); ++k) {
+      vis::ViewSettings view = base;
+      variants[k].edit(view);
+      time_variant(renderer, *solver, view, frames, series[k]);
+    }
+    if (o.log) *o.log << "rendering: round " << round + 1 << " of " << rounds << " done\n";
+  }
+  const std::string title =
+      "Render cost per headless frame: " + std::string(CLOTHLAB_DEFAULT_SCENE) + " + 3 meshes, " +
+      std::to_string(width) + "x" + std::to_string(height) + " (4x MSAA) on " +
+      renderer.gl_renderer() +
+      "; pass times: wall clock between glFinish at each pass boundary; frame = draw + "
+      "resolve + readback, timed separately without the boundaries; median of " +
+      std::to_string(rounds) + " rounds of " + std::to_string(frames) + " frames";
+  return {rendering_table(variants, series, title)};
 }
 
 }  // namespace clothlab::bench

@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
 
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
 
 namespace clothlab::bench {
 
@@ -26,19 +27,21 @@ double gravity_scale(const Scene& scene) {
   return std::max(scale, 1e-9);
 }
 
-template <class T>
-StabilityOutcome check_with(const Scene& scene, const StabilityCheck& check) {
-  SolverT<T> s(scene);
+StabilityOutcome check_solver(const Scene& scene, const StabilityCheck& check) {
+  const auto owner = make_solver(scene);
+  Solver& s = *owner;
   // The same disturbance for every step size and method: a fixed seed.
   std::mt19937 rng(12345);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   const double amplitude = check.perturbation * edge_length(scene);
-  const Model<T>& m = s.model();
-  for (std::size_t i = 0; i < m.n; ++i) {
-    if (m.inv_mass[i] == T(0)) continue;
-    for (int a = 0; a < 3; ++a) s.state().pos.axis(a)[i] += static_cast<T>(amplitude * unit(rng));
+  std::vector<Vec3d> x(s.vertex_count()), v(s.vertex_count());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    x[i] = s.position(static_cast<int>(i));
+    v[i] = s.velocity(static_cast<int>(i));
+    if (s.pinned(static_cast<int>(i))) continue;
+    for (int a = 0; a < 3; ++a) x[i][a] += amplitude * unit(rng);
   }
-  s.state_changed();
+  s.set_state(x, v);
   const double start = s.energy().total();
   const double allowed = start + check.energy_tolerance * gravity_scale(scene);
   const long total = std::max(1L, std::lround(check.duration / s.dt()));
@@ -72,8 +75,7 @@ StabilityOutcome check_stability(const Scene& scene, double dt, const StabilityC
   Scene s = scene;
   s.solver.dt = dt;
   s.solver.dt_auto = false;
-  if (s.solver.precision == Precision::f64) return check_with<double>(s, check);
-  return check_with<float>(s, check);
+  return check_solver(s, check);
 }
 
 LimitSearch largest_stable_dt(const Scene& scene, double guess, double ceiling,

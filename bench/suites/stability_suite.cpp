@@ -8,7 +8,7 @@
 #include "bench/suites/lab_scenes.hpp"
 #include "bench/suites/stability.hpp"
 #include "bench/suites/suites.hpp"
-#include "sim/solver_impl.hpp"
+#include "sim/solver.hpp"
 #include "sim/stability/step_limit.hpp"
 
 namespace clothlab::bench {
@@ -71,6 +71,62 @@ std::string run_stress(const Stress& stress, const Scene& scene, double duration
   return "stable";
 }
 
+// The largest stable step of every integrator on one sheet (stiffness, mass, damping), against
+// the theory of step_limit.hpp, into `sweep`.
+void add_sweep_rows(const SheetParams& p, const StabilityCheck& check, double tolerance,
+                    Table& sweep, std::ostream* log) {
+  const Spectrum sp = spectrum_of(hanging_sheet(p, IntegratorKind::symplectic_euler, 1e-3));
+  const double symplectic_limit =
+      stable_step_limit(IntegratorKind::symplectic_euler, sp.omega_max, sp.gamma_max);
+  for (IntegratorKind kind : kAllIntegrators) {
+    const Scene scene = hanging_sheet(p, kind, 1e-3);
+    const double theory =
+        is_explicit(kind) ? stable_step_limit(kind, sp.omega_max, sp.gamma_max) : INFINITY;
+    const double guess =
+        is_explicit(kind) ? (theory > 0 ? theory : 0.1 * symplectic_limit) : kCeiling;
+    const LimitSearch found = largest_stable_dt(scene, guess, kCeiling, tolerance, check);
+    const bool has_theory = is_explicit(kind) && theory > 0;
+    sweep.add({num(p.stiffness), num(p.mass), num(p.damping), to_string(kind), num(sp.omega_max),
+               num(sp.omega_gershgorin), num(sp.gamma_max),
+               !is_explicit(kind) ? "inf"
+               : theory > 0       ? num(theory)
+                                  : "0 (none)",
+               num(2.0 / sp.omega_max), found.at_ceiling ? ">=" + num(found.dt) : num(found.dt),
+               has_theory ? num(found.dt / theory) : "-", std::to_string(found.runs)});
+    if (log)
+      *log << "stability: k " << p.stiffness << " m " << p.mass << " c " << p.damping << " "
+           << to_string(kind) << ": " << sweep.rows.back()[9] << " s\n";
+  }
+}
+
+// One stress scene for every integrator (xpbd in its automatic substeps and, for information,
+// in one), into `stress`: large-step methods must stay stable, explicit ones must be caught.
+void add_stress_rows(const Stress& st, int resolution, double duration, Table& stress,
+                     std::ostream* log) {
+  for (IntegratorKind kind : kAllIntegrators) {
+    // XPBD is a small-steps method: it runs the frame step in its automatic substeps (and, for
+    // information, in one substep, which a hurricane can tear apart: see README).
+    const bool xpbd = kind == IntegratorKind::xpbd;
+    for (int substeps : xpbd ? std::vector<int>{0, 1} : std::vector<int>{1}) {
+      bool caught = false;
+      const Scene scene = stress_scene(st, kind, resolution, substeps);
+      const std::string outcome = run_stress(st, scene, duration, caught);
+      const bool informational = xpbd && substeps == 1;
+      const bool expect_stable = !is_explicit(kind);
+      const bool ok = expect_stable ? outcome == "stable" : caught;
+      std::string label = to_string(kind);
+      if (xpbd) {
+        const int n = scene.solver.substeps;
+        label += " (" + std::to_string(n) + (n == 1 ? " substep)" : " substeps)");
+      }
+      stress.add({std::string(st.name) + " (" + st.what + ")", label,
+                  informational ? "-" : (expect_stable ? "stable" : "caught"), outcome,
+                  informational ? "info" : (ok ? "ok" : "FAIL")});
+      if (log) *log << "stability: stress " << st.name << " " << label << ": " << outcome << "\n";
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<Table> stability_suite(const SuiteOptions& o) {
@@ -94,36 +150,10 @@ std::vector<Table> stability_suite(const SuiteOptions& o) {
                    "integrator",      "omega_max (rad/s)", "Gershgorin bound (rad/s)",
                    "gamma (1/s)",     "theory dt (s)",     "2/omega (s)",
                    "measured dt (s)", "measured/theory",   "runs"};
-  for (double k : stiffnesses) {
-    for (double mass : masses) {
-      for (double c : dampings) {
-        SheetParams p{resolution, 1.0, mass, k, c};
-        const Spectrum sp = spectrum_of(hanging_sheet(p, IntegratorKind::symplectic_euler, 1e-3));
-        const double symplectic_limit =
-            stable_step_limit(IntegratorKind::symplectic_euler, sp.omega_max, sp.gamma_max);
-        for (IntegratorKind kind : kAllIntegrators) {
-          const Scene scene = hanging_sheet(p, kind, 1e-3);
-          const double theory =
-              is_explicit(kind) ? stable_step_limit(kind, sp.omega_max, sp.gamma_max) : INFINITY;
-          const double guess =
-              is_explicit(kind) ? (theory > 0 ? theory : 0.1 * symplectic_limit) : kCeiling;
-          const LimitSearch found = largest_stable_dt(scene, guess, kCeiling, tolerance, check);
-          const bool has_theory = is_explicit(kind) && theory > 0;
-          sweep.add({num(k), num(mass), num(c), to_string(kind), num(sp.omega_max),
-                     num(sp.omega_gershgorin), num(sp.gamma_max),
-                     !is_explicit(kind) ? "inf"
-                     : theory > 0       ? num(theory)
-                                        : "0 (none)",
-                     num(2.0 / sp.omega_max),
-                     found.at_ceiling ? ">=" + num(found.dt) : num(found.dt),
-                     has_theory ? num(found.dt / theory) : "-", std::to_string(found.runs)});
-          if (o.log)
-            *o.log << "stability: k " << k << " m " << mass << " c " << c << " " << to_string(kind)
-                   << ": " << sweep.rows.back()[9] << " s\n";
-        }
-      }
-    }
-  }
+  for (double k : stiffnesses)
+    for (double mass : masses)
+      for (double c : dampings)
+        add_sweep_rows(SheetParams{resolution, 1.0, mass, k, c}, check, tolerance, sweep, o.log);
 
   Table stress;
   stress.name = "stress";
@@ -134,31 +164,8 @@ std::vector<Table> stability_suite(const SuiteOptions& o) {
                  " sheet): large-step methods must stay stable, explicit ones must be caught by "
                  "the divergence monitor";
   stress.columns = {"scene", "integrator", "expected", "outcome", "verdict"};
-  for (const Stress& st : kStresses) {
-    for (IntegratorKind kind : kAllIntegrators) {
-      // XPBD is a small-steps method: it runs the frame step in its automatic substeps (and, for
-      // information, in one substep, which a hurricane can tear apart: see README).
-      const bool xpbd = kind == IntegratorKind::xpbd;
-      for (int substeps : xpbd ? std::vector<int>{0, 1} : std::vector<int>{1}) {
-        bool caught = false;
-        const Scene scene = stress_scene(st, kind, stress_resolution, substeps);
-        const std::string outcome = run_stress(st, scene, duration, caught);
-        const bool informational = xpbd && substeps == 1;
-        const bool expect_stable = !is_explicit(kind);
-        const bool ok = expect_stable ? outcome == "stable" : caught;
-        std::string label = to_string(kind);
-        if (xpbd) {
-          const int n = scene.solver.substeps;
-          label += " (" + std::to_string(n) + (n == 1 ? " substep)" : " substeps)");
-        }
-        stress.add({std::string(st.name) + " (" + st.what + ")", label,
-                    informational ? "-" : (expect_stable ? "stable" : "caught"), outcome,
-                    informational ? "info" : (ok ? "ok" : "FAIL")});
-        if (o.log)
-          *o.log << "stability: stress " << st.name << " " << label << ": " << outcome << "\n";
-      }
-    }
-  }
+  for (const Stress& st : kStresses)
+    add_stress_rows(st, stress_resolution, duration, stress, o.log);
   return {sweep, stress};
 }
 

@@ -33,18 +33,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "sim/contact/contact_stats.hpp"
 #include "sim/integrators/integrator.hpp"
 #include "sim/scene/scene.hpp"
 
 namespace clothlab {
-
-struct SelfCollisionStats {
-  int pairs = 0;              // candidate pairs found at the start of the step
-  int dropped = 0;            // pairs beyond the buffer's bound (0 unless the cloth is crushed)
-  int contacts = 0;           // pairs the last substep corrected
-  double max_depth = 0.0;     // m: largest thickness - distance the last substep pushed apart
-  double query_radius = 0.0;  // m: thickness + 2 vmax dt of this step
-};
 
 template <class T>
 class SelfCollision {

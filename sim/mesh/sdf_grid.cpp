@@ -31,6 +31,124 @@ V3 closest_on_triangle(const V3& p, const V3& a, const V3& b, const V3& c) {
   return a + ab * (vb * denom) + ac * (vc * denom);
 }
 
+// The grid's points: origin + cell (i, j, k), count points along each axis.
+struct Frame {
+  V3 origin;
+  double cell = 0.0;
+  std::array<int, 3> count{};
+  std::size_t size() const {
+    return std::size_t(count[0]) * std::size_t(count[1]) * std::size_t(count[2]);
+  }
+  std::size_t index(int i, int j, int k) const {
+    return static_cast<std::size_t>(i + count[0] * (j + count[1] * k));
+  }
+  V3 point(int i, int j, int k) const { return origin + cell * V3(i, j, k); }
+  bool inside(int i, int j, int k) const {
+    return i >= 0 && j >= 0 && k >= 0 && i < count[0] && j < count[1] && k < count[2];
+  }
+};
+
+// Unsigned distance and the closest triangle (-1: none yet) per grid point.
+struct Closest {
+  std::vector<double> dist;
+  std::vector<int> nearest;
+};
+
+double distance_to(const TriangleMesh& mesh, const V3& p, int t) {
+  const auto& tri = mesh.triangles[std::size_t(t)];
+  return (p - closest_on_triangle(p, mesh.positions[std::size_t(tri[0])],
+                                  mesh.positions[std::size_t(tri[1])],
+                                  mesh.positions[std::size_t(tri[2])]))
+      .norm();
+}
+
+// Pass 1: exact distances in a band of two cells round each triangle's box.
+void exact_band(const TriangleMesh& mesh, const Frame& f, Closest& c) {
+  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
+    const auto& tri = mesh.triangles[std::size_t(t)];
+    V3 tlo = mesh.positions[std::size_t(tri[0])], thi = tlo;
+    for (int v : tri) {
+      tlo = tlo.cwiseMin(mesh.positions[std::size_t(v)]);
+      thi = thi.cwiseMax(mesh.positions[std::size_t(v)]);
+    }
+    std::array<int, 3> from{}, to{};
+    for (int a = 0; a < 3; ++a) {
+      from[a] = std::max(0, static_cast<int>(std::floor((tlo[a] - f.origin[a]) / f.cell)) - 2);
+      to[a] = std::min(f.count[a] - 1,
+                       static_cast<int>(std::ceil((thi[a] - f.origin[a]) / f.cell)) + 2);
+    }
+    for (int k = from[2]; k <= to[2]; ++k)
+      for (int j = from[1]; j <= to[1]; ++j)
+        for (int i = from[0]; i <= to[0]; ++i) {
+          const double d = distance_to(mesh, f.point(i, j, k), t);
+          const std::size_t g = f.index(i, j, k);
+          if (d < c.dist[g]) c.dist[g] = d, c.nearest[g] = t;
+        }
+  }
+}
+
+// Pass 2: the closest triangles carried to every point by sweeps in the eight diagonal
+// directions, twice; each point tries the closest triangles of its three upstream neighbours.
+void propagate(const TriangleMesh& mesh, const Frame& f, Closest& c) {
+  for (int pass = 0; pass < 2; ++pass)
+    for (int dir = 0; dir < 8; ++dir) {
+      const int si = dir & 1 ? -1 : 1, sj = dir & 2 ? -1 : 1, sk = dir & 4 ? -1 : 1;
+      for (int kk = 0; kk < f.count[2]; ++kk)
+        for (int jj = 0; jj < f.count[1]; ++jj)
+          for (int ii = 0; ii < f.count[0]; ++ii) {
+            const int i = si > 0 ? ii : f.count[0] - 1 - ii, j = sj > 0 ? jj : f.count[1] - 1 - jj,
+                      k = sk > 0 ? kk : f.count[2] - 1 - kk;
+            const std::size_t g = f.index(i, j, k);
+            for (const auto& [di, dj, dk] :
+                 {std::array<int, 3>{-si, 0, 0}, {0, -sj, 0}, {0, 0, -sk}}) {
+              if (!f.inside(i + di, j + dj, k + dk)) continue;
+              const int t = c.nearest[f.index(i + di, j + dj, k + dk)];
+              if (t < 0 || t == c.nearest[g]) continue;
+              const double d = distance_to(mesh, f.point(i, j, k), t);
+              if (d < c.dist[g]) c.dist[g] = d, c.nearest[g] = t;
+            }
+          }
+    }
+}
+
+// Where the ray along +x through (y, z) crosses the mesh: the sorted x of every crossing.
+void ray_hits(const TriangleMesh& mesh, double y, double z, std::vector<double>& hits) {
+  hits.clear();
+  for (const auto& tri : mesh.triangles) {
+    const V3 &a = mesh.positions[std::size_t(tri[0])], &b = mesh.positions[std::size_t(tri[1])],
+             &c = mesh.positions[std::size_t(tri[2])];
+    // Barycentric coordinates of (y, z) in the triangle projected on the y-z plane.
+    const double det = (b.y() - a.y()) * (c.z() - a.z()) - (c.y() - a.y()) * (b.z() - a.z());
+    if (std::abs(det) < 1e-18) continue;  // edge-on to the ray
+    const double u = ((y - a.y()) * (c.z() - a.z()) - (c.y() - a.y()) * (z - a.z())) / det;
+    const double v = ((b.y() - a.y()) * (z - a.z()) - (y - a.y()) * (b.z() - a.z())) / det;
+    if (u < 0.0 || v < 0.0 || u + v > 1.0) continue;
+    hits.push_back(a.x() + u * (b.x() - a.x()) + v * (c.x() - a.x()));
+  }
+  std::sort(hits.begin(), hits.end());
+}
+
+// Pass 3: signs by ray parity along +x for each (y, z) row, the rays nudged off the grid's
+// planes by irrational fractions of a cell so no ray runs through an axis-aligned edge or vertex.
+std::vector<double> signed_distances(const TriangleMesh& mesh, const Frame& f,
+                                     const std::vector<double>& dist) {
+  std::vector<double> phi(f.size(), 0.0);
+  std::vector<double> hits;
+  for (int k = 0; k < f.count[2]; ++k)
+    for (int j = 0; j < f.count[1]; ++j) {
+      ray_hits(mesh, f.origin.y() + f.cell * (j + 1.0e-4 * std::sqrt(2.0)),
+               f.origin.z() + f.cell * (k + 1.0e-4 * std::sqrt(3.0)), hits);
+      std::size_t crossed = 0;
+      for (int i = 0; i < f.count[0]; ++i) {
+        const double x = f.origin.x() + f.cell * i;
+        while (crossed < hits.size() && hits[crossed] < x) ++crossed;
+        const std::size_t g = f.index(i, j, k);
+        phi[g] = (crossed % 2 == 1 ? -1.0 : 1.0) * dist[g];
+      }
+    }
+  return phi;
+}
+
 }  // namespace
 
 SdfGrid::SdfGrid(const TriangleMesh& mesh, int resolution, int margin) {
@@ -43,95 +161,11 @@ SdfGrid::SdfGrid(const TriangleMesh& mesh, int resolution, int margin) {
   origin_ = lo - V3::Constant(margin * cell_);
   for (int a = 0; a < 3; ++a)
     count_[a] = static_cast<int>(std::ceil((hi[a] - lo[a]) / cell_)) + 2 * margin + 1;
-  const std::size_t n = std::size_t(count_[0]) * std::size_t(count_[1]) * std::size_t(count_[2]);
-  std::vector<double> dist(n, INFINITY);
-  std::vector<int> nearest(n, -1);
-  auto index = [&](int i, int j, int k) {
-    return static_cast<std::size_t>(i + count_[0] * (j + count_[1] * k));
-  };
-  auto point = [&](int i, int j, int k) { return V3(origin_ + cell_ * V3(i, j, k)); };
-  auto distance_to = [&](const V3& p, int t) {
-    const auto& tri = mesh.triangles[std::size_t(t)];
-    return (p - closest_on_triangle(p, mesh.positions[std::size_t(tri[0])],
-                                    mesh.positions[std::size_t(tri[1])],
-                                    mesh.positions[std::size_t(tri[2])]))
-        .norm();
-  };
-
-  // 1. Exact distances in a band round each triangle.
-  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
-    const auto& tri = mesh.triangles[std::size_t(t)];
-    V3 tlo = mesh.positions[std::size_t(tri[0])], thi = tlo;
-    for (int v : tri) {
-      tlo = tlo.cwiseMin(mesh.positions[std::size_t(v)]);
-      thi = thi.cwiseMax(mesh.positions[std::size_t(v)]);
-    }
-    std::array<int, 3> from{}, to{};
-    for (int a = 0; a < 3; ++a) {
-      from[a] = std::max(0, static_cast<int>(std::floor((tlo[a] - origin_[a]) / cell_)) - 2);
-      to[a] =
-          std::min(count_[a] - 1, static_cast<int>(std::ceil((thi[a] - origin_[a]) / cell_)) + 2);
-    }
-    for (int k = from[2]; k <= to[2]; ++k)
-      for (int j = from[1]; j <= to[1]; ++j)
-        for (int i = from[0]; i <= to[0]; ++i) {
-          const double d = distance_to(point(i, j, k), t);
-          const std::size_t g = index(i, j, k);
-          if (d < dist[g]) dist[g] = d, nearest[g] = t;
-        }
-  }
-  // 2. Closest triangles carried to every point: sweeps in the eight diagonal directions, twice.
-  for (int pass = 0; pass < 2; ++pass)
-    for (int dir = 0; dir < 8; ++dir) {
-      const int si = dir & 1 ? -1 : 1, sj = dir & 2 ? -1 : 1, sk = dir & 4 ? -1 : 1;
-      for (int kk = 0; kk < count_[2]; ++kk)
-        for (int jj = 0; jj < count_[1]; ++jj)
-          for (int ii = 0; ii < count_[0]; ++ii) {
-            const int i = si > 0 ? ii : count_[0] - 1 - ii, j = sj > 0 ? jj : count_[1] - 1 - jj,
-                      k = sk > 0 ? kk : count_[2] - 1 - kk;
-            const std::size_t g = index(i, j, k);
-            for (const auto& [di, dj, dk] :
-                 {std::array<int, 3>{-si, 0, 0}, {0, -sj, 0}, {0, 0, -sk}}) {
-              const int ni = i + di, nj = j + dj, nk = k + dk;
-              if (ni < 0 || nj < 0 || nk < 0 || ni >= count_[0] || nj >= count_[1] ||
-                  nk >= count_[2])
-                continue;
-              const int t = nearest[index(ni, nj, nk)];
-              if (t < 0 || t == nearest[g]) continue;
-              const double d = distance_to(point(i, j, k), t);
-              if (d < dist[g]) dist[g] = d, nearest[g] = t;
-            }
-          }
-    }
-  // 3. Signs by ray parity along +x for each (y, z) row, nudged off the grid's planes by
-  // irrational fractions of a cell so no ray runs through an axis-aligned edge or vertex.
-  phi_.assign(n, 0.0);
-  std::vector<double> hits;
-  for (int k = 0; k < count_[2]; ++k)
-    for (int j = 0; j < count_[1]; ++j) {
-      const double y = origin_.y() + cell_ * (j + 1.0e-4 * std::sqrt(2.0)),
-                   z = origin_.z() + cell_ * (k + 1.0e-4 * std::sqrt(3.0));
-      hits.clear();
-      for (const auto& tri : mesh.triangles) {
-        const V3 &a = mesh.positions[std::size_t(tri[0])], &b = mesh.positions[std::size_t(tri[1])],
-                 &c = mesh.positions[std::size_t(tri[2])];
-        // Barycentric coordinates of (y, z) in the triangle projected on the y-z plane.
-        const double det = (b.y() - a.y()) * (c.z() - a.z()) - (c.y() - a.y()) * (b.z() - a.z());
-        if (std::abs(det) < 1e-18) continue;  // edge-on to the ray
-        const double u = ((y - a.y()) * (c.z() - a.z()) - (c.y() - a.y()) * (z - a.z())) / det;
-        const double v = ((b.y() - a.y()) * (z - a.z()) - (y - a.y()) * (b.z() - a.z())) / det;
-        if (u < 0.0 || v < 0.0 || u + v > 1.0) continue;
-        hits.push_back(a.x() + u * (b.x() - a.x()) + v * (c.x() - a.x()));
-      }
-      std::sort(hits.begin(), hits.end());
-      std::size_t crossed = 0;
-      for (int i = 0; i < count_[0]; ++i) {
-        const double x = origin_.x() + cell_ * i;
-        while (crossed < hits.size() && hits[crossed] < x) ++crossed;
-        const std::size_t g = index(i, j, k);
-        phi_[g] = (crossed % 2 == 1 ? -1.0 : 1.0) * dist[g];
-      }
-    }
+  const Frame frame{origin_, cell_, count_};
+  Closest closest{std::vector<double>(frame.size(), INFINITY), std::vector<int>(frame.size(), -1)};
+  exact_band(mesh, frame, closest);
+  propagate(mesh, frame, closest);
+  phi_ = signed_distances(mesh, frame, closest.dist);
 }
 
 double SdfGrid::distance(const V3& p, V3* gradient) const {

@@ -268,6 +268,12 @@ std::vector<Parameter> solver() {
            .widget = W::input,
            .description = "xpbd: sweeps per substep (1); local_global: per step (10); vbd and bdf2 "
                           "with bdf2_solver = vbd: per step (30); 0 = default"}),
+  };
+}
+
+// The iterative solves of the large-step methods.
+std::vector<Parameter> solver_iterations() {
+  return {
       row<&SolverSpec::chebyshev_rho>(
           {.name = "chebyshev_rho",
            .range = {0.0, 1.0, false, true},
@@ -377,8 +383,8 @@ std::vector<Parameter> contact_parameters();  // parameters_contact.cpp
 std::span<const Parameter> parameters() {
   static const std::vector<Parameter> table = [] {
     std::vector<Parameter> all;
-    for (auto part : {top_level(), cloth(), cloth_more(), dynamics(), solver(), solver_more(),
-                      trace(), render_parameters(), contact_parameters()})
+    for (auto part : {top_level(), cloth(), cloth_more(), dynamics(), solver(), solver_iterations(),
+                      solver_more(), trace(), render_parameters(), contact_parameters()})
       all.insert(all.end(), part.begin(), part.end());
     return all;
   }();
