@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sim/scene/scene.hpp"
+#include "vis/render/view_settings.hpp"
 
 namespace clothlab::app {
 
@@ -39,16 +40,9 @@ struct RenderArgs {
   // the top); the force field is computed only then.
   std::optional<std::array<int, 2>> probe;
   std::string field = "force";  // force | velocity | position
-  // Scientific views (vis::ViewSettings::color, ::arrows): empty strings keep the defaults.
-  std::string color_by;             // force | speed | strain | height
-  std::string colormap;             // viridis | magma | turbo | coolwarm
-  std::string range;                // auto | symmetric | MIN,MAX
-  bool shaded = false;              // light the colour-mapped cloth
-  std::vector<std::string> arrows;  // force, normals
-  std::string force_source;         // total | springs | gravity | drag | wind
-  int arrow_stride = 0;             // 0: automatic
-  std::string arrow_scale;          // linear | log
-  bool no_legend = false;           // no colour bars in the images
+  // Scientific views (--color-by, --colormap, --range, --shaded, --arrows, --force-source,
+  // --arrow-stride, --arrow-scale, --no-legend), parsed straight into the view's own settings.
+  vis::ScientificViews views;
 };
 
 struct ViewArgs {

@@ -1,19 +1,26 @@
 // clothlab: the command-line entry point. Only wires the command line to the subcommands.
 #include <CLI/CLI.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <new>
 #include <string>
+#include <vector>
 
 #include "apps/clothlab/commands.hpp"
 #include "apps/passive_openmp.hpp"
 #include "bench/suites/suites.hpp"
 #include "sim/core/temp_files.hpp"
+#include "sim/forces/force_source.hpp"
 #include "sim/scene/scene_error.hpp"
+#include "vis/colormap/colormap.hpp"
+#include "vis/render/scalar_field.hpp"
 
 namespace {
+
+namespace vis = clothlab::vis;
 
 void add_scene_options(CLI::App& cmd, std::string& scene, std::vector<std::string>& overrides,
                        bool scene_required = true) {
@@ -54,42 +61,82 @@ struct RenderCli {
   CLI::Option* probe_opt = nullptr;
 };
 
-// `render`'s scientific views: colour maps, arrows, legends.
-void add_render_views(CLI::App* render_cmd, RenderArgs& render) {
-  render_cmd->add_option("--color-by", render.color_by, "colour the cloth by a scalar (modes 2, 3)")
-      ->check(CLI::IsMember({"force", "speed", "strain", "height"}));
-  render_cmd->add_option("--colormap", render.colormap, "colour map for --color-by and arrows")
-      ->check(CLI::IsMember({"viridis", "magma", "turbo", "coolwarm"}));
+// An option naming one of `all` by its name (`name`, the same function the rest of ClothLab
+// prints it with): CLI11 checks the name and the value lands in `target`.
+template <class E, std::size_t N, class NameFn>
+CLI::Option* add_choice(CLI::App* cmd, const std::string& flag, E& target,
+                        const std::array<E, N>& all, NameFn name, const std::string& help) {
+  std::vector<std::string> names;
+  for (E e : all) names.emplace_back(name(e));
+  return cmd
+      ->add_option_function<std::string>(
+          flag,
+          [&target, all, name](const std::string& v) {
+            for (E e : all)
+              if (name(e) == v) target = e;
+          },
+          help)
+      ->check(CLI::IsMember(names));
+}
+
+// --range: auto, symmetric or MIN,MAX with MIN < MAX, into `color`; false when malformed.
+bool read_range(const std::string& r, vis::ColorSettings& color) {
+  if (r == "auto" || r == "symmetric") {
+    color.range = r == "auto" ? vis::RangeMode::automatic : vis::RangeMode::symmetric;
+    return true;
+  }
+  double lo = 0.0, hi = 0.0;
+  char comma = 0, rest = 0;
+  if (std::sscanf(r.c_str(), "%lf%c%lf%c", &lo, &comma, &hi, &rest) != 3 || comma != ',' ||
+      !std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi))
+    return false;
+  color.range = vis::RangeMode::fixed;
+  color.fixed = {lo, hi};
+  return true;
+}
+
+// `render`'s scientific views: colour maps, arrows, legends, into vis::ScientificViews.
+void add_render_views(CLI::App* render_cmd, vis::ScientificViews& views) {
+  add_choice(render_cmd, "--color-by", views.color.field, vis::kColourScalars,
+             vis::scalar_field_name, "colour the cloth by a scalar (modes 2, 3)");
+  add_choice(render_cmd, "--colormap", views.color.map, vis::kAllColorMaps, vis::colormap_name,
+             "colour map for --color-by and arrows");
   render_cmd
-      ->add_option("--range", render.range,
-                   "colour range: auto (min..max), symmetric (-a..a) or MIN,MAX")
+      ->add_option_function<std::string>(
+          "--range", [&views](const std::string& r) { read_range(r, views.color); },
+          "colour range: auto (min..max), symmetric (-a..a) or MIN,MAX")
       ->check(CLI::Validator(
           [](std::string& r) {
-            double lo = 0.0, hi = 0.0;
-            char comma = 0, rest = 0;
-            if (r == "auto" || r == "symmetric") return std::string();
-            return std::sscanf(r.c_str(), "%lf%c%lf%c", &lo, &comma, &hi, &rest) == 3 &&
-                           comma == ',' && std::isfinite(lo) && std::isfinite(hi) && lo < hi
+            vis::ColorSettings scratch;
+            return read_range(r, scratch)
                        ? std::string()
                        : std::string("must be auto, symmetric or MIN,MAX with MIN < MAX");
           },
           "RANGE"));
-  render_cmd->add_flag("--shaded", render.shaded, "light the colour-mapped cloth");
-  render_cmd->add_option("--arrows", render.arrows, "arrows at the vertices: force, normals")
+  render_cmd->add_flag("--shaded", views.color.shaded, "light the colour-mapped cloth");
+  render_cmd
+      ->add_option_function<std::vector<std::string>>(
+          "--arrows",
+          [&views](const std::vector<std::string>& kinds) {
+            for (const std::string& k : kinds)
+              (k == "force" ? views.arrows.force : views.arrows.normals) = true;
+          },
+          "arrows at the vertices: force, normals")
       ->delimiter(',')
       ->check(CLI::IsMember({"force", "normals"}));
-  render_cmd
-      ->add_option(
-          "--force-source", render.force_source,
-          "force shown by arrows and --color-by force: total, springs, gravity, drag, wind")
-      ->check(CLI::IsMember({"total", "springs", "gravity", "drag", "wind"}));
-  render_cmd->add_option("--arrow-stride", render.arrow_stride, "an arrow every N vertices")
+  add_choice(render_cmd, "--force-source", views.force_source, clothlab::kAllForceSources,
+             clothlab::force_source_name,
+             "force shown by arrows and --color-by force: total, springs, gravity, drag, wind");
+  render_cmd->add_option("--arrow-stride", views.arrows.stride, "an arrow every N vertices")
       ->check(CLI::Range(1, 100000));
-  render_cmd->add_option("--arrow-scale", render.arrow_scale, "force arrow length: linear or log")
-      ->check(CLI::IsMember({"linear", "log"}));
-
-  render_cmd->add_flag("--no-legend", render.no_legend,
-                       "no colour bars (they show with --color-by and force arrows)");
+  add_choice(
+      render_cmd, "--arrow-scale", views.arrows.scale,
+      std::array{vis::ArrowScale::linear, vis::ArrowScale::log},
+      [](vis::ArrowScale s) { return s == vis::ArrowScale::log ? "log" : "linear"; },
+      "force arrow length: linear or log");
+  render_cmd->add_flag_callback(
+      "--no-legend", [&views] { views.legends = false; },
+      "no colour bars (they show with --color-by and force arrows)");
 }
 
 // `render`: a scene headless (EGL) to PNGs or MP4.
@@ -134,7 +181,7 @@ CLI::App* add_render(CLI::App& app, RenderCli& cli) {
   render_cmd->add_option("--field", render.field, "probed field: force, velocity or position")
       ->check(CLI::IsMember({"force", "velocity", "position"}));
 
-  add_render_views(render_cmd, render);
+  add_render_views(render_cmd, render.views);
   return render_cmd;
 }
 

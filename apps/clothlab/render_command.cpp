@@ -63,27 +63,6 @@ void print_probe(Solver& solver, vis::HeadlessRenderer& renderer, const vis::Vie
               n[1], n[2]);
 }
 
-// The scientific-view options onto the view (CLI11 has checked every value).
-void apply_view_options(const RenderArgs& args, vis::ViewSettings& view) {
-  if (!args.color_by.empty()) view.color.field = *vis::parse_scalar_field(args.color_by);
-  if (!args.colormap.empty()) view.color.map = *vis::parse_colormap(args.colormap);
-  if (args.range == "auto") {
-    view.color.range = vis::RangeMode::automatic;
-  } else if (args.range == "symmetric") {
-    view.color.range = vis::RangeMode::symmetric;
-  } else if (!args.range.empty()) {
-    view.color.range = vis::RangeMode::fixed;
-    std::sscanf(args.range.c_str(), "%lf,%lf", &view.color.fixed.min, &view.color.fixed.max);
-  }
-  view.color.shaded = args.shaded;
-  for (const std::string& a : args.arrows)
-    (a == "force" ? view.arrows.force : view.arrows.normals) = true;
-  if (!args.force_source.empty()) view.force_source = *parse_force_source(args.force_source);
-  view.arrows.stride = args.arrow_stride;
-  if (args.arrow_scale == "log") view.arrows.scale = vis::ArrowScale::log;
-  view.legends = !args.no_legend;
-}
-
 // One line on what the last frame's scientific views showed: the colour range with its unit
 // and the arrows (nothing when no view was on).
 void print_views(const vis::Diagnostics& d, const vis::ViewSettings& view) {
@@ -196,7 +175,7 @@ int render_scene(const RenderArgs& args, Scene& scene) {
   renderer.set_scene(scene.render, *solver, scene.colliders);
   vis::ViewSettings view = vis::scene_view(scene, *solver);
   if (args.mode != 0) view.mode = static_cast<vis::DisplayMode>(args.mode);
-  apply_view_options(args, view);
+  static_cast<vis::ScientificViews&>(view) = args.views;  // --color-by, --arrows, ...
   const MusicTrack* music = nullptr;
   const std::unique_ptr<VideoPipe> video = open_outputs(args, scene, music);
   const FrameTimes t = render_frames(args, *solver, renderer, view, video.get());

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -116,15 +117,10 @@ long step_count(const TraceArgs& args, const Scene& scene, double dt) {
   return -1;
 }
 
-}  // namespace
-
-int run_trace_command(const TraceArgs& args) {
-  if (!out_writable(args.out)) return kBadInput;
-  std::optional<Scene> loaded = load_scene("trace", args.scene, args.overrides);
-  if (!loaded) return kBadInput;
-  Scene& scene = *loaded;
-  // solver.backend = "gpu" steps the cloth in a headless GL context of its own.
-  std::optional<vis::HeadlessContext> context;
+// The scene's solver; solver.backend = "gpu" steps the cloth in a headless GL context of its
+// own (`context`), and without one on the CPU, saying why.
+std::unique_ptr<Solver> make_trace_solver(Scene& scene,
+                                          std::optional<vis::HeadlessContext>& context) {
   std::string no_context;
   if (scene.solver.backend == Backend::gpu) {
     try {
@@ -135,9 +131,68 @@ int run_trace_command(const TraceArgs& args) {
     }
   }
   std::string backend_note;
-  const auto solver = gpu::make_backend_solver(scene, backend_note);
+  auto solver = gpu::make_backend_solver(scene, backend_note);
   if (backend_note.empty()) backend_note = no_context;
   if (!backend_note.empty()) std::printf("clothlab trace: %s\n", backend_note.c_str());
+  return solver;
+}
+
+// The summary of a finished trace: time, steps, cost, method, threads, energy and the file; the
+// iterative methods' work (PCG iterations or sweeps per substep) on a second line.
+void print_summary(const TraceArgs& args, const Scene& scene, const Solver& solver,
+                   const TraceRunResult& r) {
+  const bool doubles = scene.solver.precision == Precision::f64;
+  const double ms_per_step = r.steps > 0 ? 1e3 * r.step_seconds / r.steps : 0.0;
+  char substeps[64] = "";
+  if (solver.substeps() > 1)
+    std::snprintf(substeps, sizeof substeps, " (%d substeps)", solver.substeps());
+  std::printf(
+      "trace: %.6g s simulated in %ld steps of %g s%s%s, %.4g ms/step (%s, %s, %s, %d thread(s), "
+      "%s wait, %zu vertices), final energy %.6g J (kinetic %.4g, elastic %.4g, gravity %.6g); "
+      "wrote %s "
+      "(%ld steps)\n",
+      r.simulated_time, r.steps, solver.dt(), scene.solver.dt_auto ? " (auto)" : "", substeps,
+      ms_per_step, to_string(scene.solver.integrator), doubles ? "double" : "float",
+      backend_name(solver), solver.threads(), openmp_wait_policy(), solver.vertex_count(),
+      r.final_energy.total(), r.final_energy.kinetic, r.final_energy.elastic,
+      r.final_energy.gravity, args.out.c_str(), r.rows);
+  const SolveTotals& t = solver.solve_totals();
+  if (t.iterations > 0)
+    std::printf(
+        "solver: %.3g iterations per substep (max %d), largest relative residual %.3g, %ld "
+        "substeps stopped at the iteration cap\n",
+        double(t.iterations) / double(t.substeps), t.max_iterations, t.max_residual, t.unconverged);
+}
+
+// The exit status of a run that did not finish: refused as too long (2, with the estimate) or
+// diverged (1, with the replay command).
+int unfinished(const TraceArgs& args, const Solver& solver, const TraceRunResult& r, long total,
+               const TraceWatch& watch) {
+  if (r.stopped) {
+    std::fprintf(stderr,
+                 "clothlab trace: %ld steps of %g s would take about %s here (%.3g ms/step over "
+                 "the first %ld steps; at most %s): shorten --duration or raise solver.dt; no "
+                 "trace written\n",
+                 total, solver.dt(), duration_words(watch.estimate()).c_str(),
+                 1e3 * r.step_seconds / double(r.steps), r.steps,
+                 duration_words(kMaxTraceSeconds).c_str());
+    return kBadInput;
+  }
+  std::fprintf(stderr, "clothlab trace: %s\n  no trace written; replay with: %s\n",
+               r.divergence->message().c_str(),
+               replay_command(args.scene, args.overrides, r.divergence->time).c_str());
+  return 1;
+}
+
+}  // namespace
+
+int run_trace_command(const TraceArgs& args) {
+  if (!out_writable(args.out)) return kBadInput;
+  std::optional<Scene> loaded = load_scene("trace", args.scene, args.overrides);
+  if (!loaded) return kBadInput;
+  Scene& scene = *loaded;
+  std::optional<vis::HeadlessContext> context;
+  const auto solver = make_trace_solver(scene, context);
   const TraceSpec spec = scene.trace ? *scene.trace : default_trace(scene);
   const bool doubles = scene.solver.precision == Precision::f64;
   const long total = step_count(args, scene, solver->dt());
@@ -150,43 +205,8 @@ int run_trace_command(const TraceArgs& args) {
     std::fprintf(stderr, "clothlab trace: %s\n", e.what());
     return 1;
   }
-  if (r.stopped) {
-    std::fprintf(stderr,
-                 "clothlab trace: %ld steps of %g s would take about %s here (%.3g ms/step over "
-                 "the first %ld steps; at most %s): shorten --duration or raise solver.dt; no "
-                 "trace written\n",
-                 total, solver->dt(), duration_words(watch.estimate()).c_str(),
-                 1e3 * r.step_seconds / double(r.steps), r.steps,
-                 duration_words(kMaxTraceSeconds).c_str());
-    return kBadInput;
-  }
-  if (r.divergence) {
-    std::fprintf(stderr, "clothlab trace: %s\n  no trace written; replay with: %s\n",
-                 r.divergence->message().c_str(),
-                 replay_command(args.scene, args.overrides, r.divergence->time).c_str());
-    return 1;
-  }
-  const double ms_per_step = r.steps > 0 ? 1e3 * r.step_seconds / r.steps : 0.0;
-  char substeps[64] = "";
-  if (solver->substeps() > 1)
-    std::snprintf(substeps, sizeof substeps, " (%d substeps)", solver->substeps());
-  std::printf(
-      "trace: %.6g s simulated in %ld steps of %g s%s%s, %.4g ms/step (%s, %s, %s, %d thread(s), "
-      "%s wait, %zu vertices), final energy %.6g J (kinetic %.4g, elastic %.4g, gravity %.6g); "
-      "wrote %s "
-      "(%ld steps)\n",
-      r.simulated_time, r.steps, solver->dt(), scene.solver.dt_auto ? " (auto)" : "", substeps,
-      ms_per_step, to_string(scene.solver.integrator), doubles ? "double" : "float",
-      backend_name(*solver), solver->threads(), openmp_wait_policy(), solver->vertex_count(),
-      r.final_energy.total(), r.final_energy.kinetic, r.final_energy.elastic,
-      r.final_energy.gravity, args.out.c_str(), r.rows);
-  // The iterative methods' work: PCG iterations (implicit_euler) or sweeps per substep.
-  const SolveTotals& t = solver->solve_totals();
-  if (t.iterations > 0)
-    std::printf(
-        "solver: %.3g iterations per substep (max %d), largest relative residual %.3g, %ld "
-        "substeps stopped at the iteration cap\n",
-        double(t.iterations) / double(t.substeps), t.max_iterations, t.max_residual, t.unconverged);
+  if (r.stopped || r.divergence) return unfinished(args, *solver, r, total, watch);
+  print_summary(args, scene, *solver, r);
   return 0;
 }
 

@@ -113,23 +113,42 @@ bool SelfCollision<T>::skipped(std::size_t i, std::size_t j, const Model<T>& m) 
 
 template <class T>
 void SelfCollision<T>::find_pairs(const Model<T>& m, const State<T>& s, double dt, int threads) {
-  const std::size_t n = m.n;
-  // vmax: the largest speed, per block and then over the blocks (a max is exact in any order).
-  for_each_block_indexed(n, threads, [&](std::size_t block, std::size_t b, std::size_t e) {
-    double top = 0.0;
-    for (std::size_t i = b; i < e; ++i) top = std::max(top, load3(s.vel, i).squaredNorm());
-    block_speed2_[block] = top;
-  });
-  double speed2 = 0.0;
-  for (double v : block_speed2_) speed2 = std::max(speed2, v);
-  // Two vertices closing at up to 2 vmax meet within the step only if they start closer than
-  // this; the cell is as wide, so every such pair lies in the 27 cells around a vertex (visited
-  // as the half stencil above, each pair of cells once).
-  const double radius = thickness_ + 2.0 * std::sqrt(speed2) * dt;
-  const double inv_cell = 1.0 / radius;
+  const double radius = query_radius(s, dt, threads);
   stats_ = {};
   stats_.query_radius = radius;
+  bucket_vertices(s, 1.0 / radius, threads);
+  collect_pairs(m, s, radius, threads);
+  for (std::size_t block = 0; block < block_pairs_.size(); ++block) {
+    stats_.pairs += block_pairs_[block];
+    stats_.dropped += block_dropped_[block];
+  }
+}
 
+// Two vertices closing at up to 2 vmax meet within the step only if they start closer than
+// thickness + 2 vmax dt; the cell is as wide, so every such pair lies in the 27 cells around a
+// vertex (visited as the half stencil, each pair of cells once). vmax: the largest speed, per
+// block and then over the blocks (a max is exact in any order).
+template <class T>
+double SelfCollision<T>::query_radius(const State<T>& s, double dt, int threads) {
+  for_each_block_indexed(s.vel.size(), threads,
+                         [&](std::size_t block, std::size_t b, std::size_t e) {
+                           double top = 0.0;
+                           for (std::size_t i = b; i < e; ++i)
+                             top = std::max(top, load3(s.vel, i).squaredNorm());
+                           block_speed2_[block] = top;
+                         });
+  double speed2 = 0.0;
+  for (double v : block_speed2_) speed2 = std::max(speed2, v);
+  return thickness_ + 2.0 * std::sqrt(speed2) * dt;
+}
+
+// Each vertex's cell and bucket, then a counting sort into buckets, serially in vertex order:
+// cell_start_ counts, becomes the end of each bucket by a prefix sum, and walking the vertices
+// backwards moves each bucket's end down to its start, leaving every bucket's vertices in
+// ascending order.
+template <class T>
+void SelfCollision<T>::bucket_vertices(const State<T>& s, double inv_cell, int threads) {
+  const std::size_t n = s.pos.size();
   for_each_block(n, threads, [&](std::size_t b, std::size_t e) {
     for (std::size_t i = b; i < e; ++i) {
       const V3 x = load3(s.pos, i) * inv_cell;
@@ -137,18 +156,20 @@ void SelfCollision<T>::find_pairs(const Model<T>& m, const State<T>& s, double d
       bucket_[i] = hash(cell_[i]);
     }
   });
-  // Counting sort into buckets, serially in vertex order: cell_start_ counts, becomes the end
-  // of each bucket by a prefix sum, and walking the vertices backwards moves each bucket's end
-  // down to its start, leaving every bucket's vertices in ascending order.
   std::fill(cell_start_.begin(), cell_start_.end(), 0);
   for (std::size_t i = 0; i < n; ++i) ++cell_start_[bucket_[i]];
   for (std::size_t h = 1; h < cell_start_.size(); ++h) cell_start_[h] += cell_start_[h - 1];
   for (std::size_t i = n; i-- > 0;)
     entries_[std::size_t(--cell_start_[bucket_[i]])] = {cell_[i], std::int32_t(i), s.pos.x[i],
                                                         s.pos.y[i], s.pos.z[i]};
+}
 
+// Each block writes its pairs (in vertex, cell, entry order) into its own slice of the buffer.
+template <class T>
+void SelfCollision<T>::collect_pairs(const Model<T>& m, const State<T>& s, double radius,
+                                     int threads) {
   const double r2 = radius * radius;
-  for_each_block_indexed(n, threads, [&](std::size_t block, std::size_t b, std::size_t e) {
+  for_each_block_indexed(m.n, threads, [&](std::size_t block, std::size_t b, std::size_t e) {
     Pair* out = pairs_.data() + block * block_capacity_;
     int count = 0, dropped = 0;
     for (std::size_t i = b; i < e; ++i) {
@@ -176,10 +197,6 @@ void SelfCollision<T>::find_pairs(const Model<T>& m, const State<T>& s, double d
     block_pairs_[block] = count;
     block_dropped_[block] = dropped;
   });
-  for (std::size_t block = 0; block < block_pairs_.size(); ++block) {
-    stats_.pairs += block_pairs_[block];
-    stats_.dropped += block_dropped_[block];
-  }
 }
 
 template <class T>

@@ -80,6 +80,11 @@ class SelfCollision {
   static const std::array<Cell, 14> kHalfStencil;
   std::uint32_t hash(const Cell& c) const;
   bool skipped(std::size_t i, std::size_t j, const Model<T>& m) const;
+  // The steps of find_pairs: the query radius from the fastest vertex, the vertices' cells sorted
+  // into the hash's buckets, and each block's pairs.
+  double query_radius(const State<T>& s, double dt, int threads);
+  void bucket_vertices(const State<T>& s, double inv_cell, int threads);
+  void collect_pairs(const Model<T>& m, const State<T>& s, double radius, int threads);
 
   double thickness_ = 0.0;
   double skip_distance_ = 0.0;

@@ -9,6 +9,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "sim/scene/name_list.hpp"
 #include "sim/scene/parameter_keys.hpp"
 #include "sim/scene/parameters.hpp"
 #include "sim/scene/scene.hpp"
@@ -60,6 +61,12 @@ void read_value(TomlReader& in, void* object) {
   }
 }
 
+// A text member, read-only (validate_scene checks it against the record's choices).
+template <auto M>
+const std::string* text_of(const void* object) {
+  return &(static_cast<const StructOf<M>*>(object)->*M);
+}
+
 // The numbers validate_scene checks (none for text and booleans; none for an absent optional).
 template <auto M>
 int values_of(const void* object, double* out) {
@@ -109,6 +116,8 @@ Parameter row(Parameter p) {
   p.read = &read_value<M>;
   p.values = &values_of<M>;
   p.address = &address_of<M>;
+  if constexpr (std::is_same_v<T, std::string> && std::is_same_v<T, TypeOf<M>>)
+    p.text = &text_of<M>;
   p.optional = !std::is_same_v<T, TypeOf<M>>;
   return p;
 }
@@ -130,11 +139,8 @@ void read_choice(TomlReader& in, void* object) {
 // "a, b, c": the spellings of an enum's name table, made once.
 template <auto& Names>
 std::string_view joined_names() {
-  static const std::string names = [] {
-    std::string text;
-    for (const auto& entry : Names) text += (text.empty() ? "" : ", ") + std::string(entry.second);
-    return text;
-  }();
+  static const std::string names =
+      comma_list(Names, [](const auto& entry) { return std::string_view(entry.second); });
   return names;
 }
 

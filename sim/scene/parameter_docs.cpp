@@ -2,6 +2,7 @@
 // Markdown table `clothlab params` prints.
 #include <string>
 
+#include "sim/scene/name_list.hpp"
 #include "sim/scene/parameters.hpp"
 #include "sim/scene/scene_error.hpp"
 
@@ -77,25 +78,17 @@ const Parameter* find_parameter(Section section, std::string_view name) {
 }
 
 std::string_view choice_name(const Parameter& p, int n) {
-  std::string_view rest = p.choices;
-  for (int i = 0; i < n && !rest.empty(); ++i) {
-    const std::size_t comma = rest.find(", ");
-    rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 2);
-  }
-  return rest.substr(0, rest.find(", "));
+  return list_item(p.choices, n);
 }
 
 bool applies_to(const Parameter& p, std::string_view integrator) {
-  if (p.only_for.empty()) return true;
-  for (int n = 0; !choice_name({.choices = p.only_for}, n).empty(); ++n)
-    if (choice_name({.choices = p.only_for}, n) == integrator) return true;
-  return false;
+  return p.only_for.empty() || listed(p.only_for, integrator);
 }
 
 std::string key_list(Section section) {
   std::string text;
   for (const Parameter& p : parameters())
-    if (p.section == section) text += (text.empty() ? "" : ", ") + std::string(p.name);
+    if (p.section == section) add_to_list(text, p.name);
   return text;
 }
 

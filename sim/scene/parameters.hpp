@@ -97,6 +97,8 @@ struct Parameter {
   void (*read)(TomlReader& reader, void* object) = nullptr;
   int (*values)(const void* object, double* out) = nullptr;
   void* (*address)(void* object) = nullptr;
+  // text values: the string (validate_scene checks it against `choices`).
+  const std::string* (*text)(const void* object) = nullptr;
   // choice (and the integrator): the value's place in `choices`, and setting it by place.
   int (*choice_index)(const void* object) = nullptr;
   void (*choose)(void* object, int index) = nullptr;

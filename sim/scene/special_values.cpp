@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "sim/scene/name_list.hpp"
+
 // GCC 12 at -O3 reports a false -Wrestrict inside std::string for `"text" + std::string(...)`
 // (GCC bug 105329); the message texts below are built that way throughout.
 #if defined(__GNUC__) && !defined(__clang__) && __GNUC__ == 12
@@ -138,12 +140,8 @@ void read_cloth_springs(TomlReader& in, void* object) {
 }
 
 std::string_view integrator_names() {
-  static const std::string names = [] {
-    std::string text;
-    for (IntegratorKind k : kAllIntegrators)
-      text += (text.empty() ? "" : ", ") + std::string(to_string(k));
-    return text;
-  }();
+  static const std::string names =
+      comma_list(kAllIntegrators, [](IntegratorKind k) { return std::string_view(to_string(k)); });
   return names;
 }
 

@@ -5,6 +5,7 @@
 #include "sim/cloth/mesh_cloth.hpp"
 #include "sim/core/vec3_math.hpp"
 #include "sim/mesh/triangle_mesh.hpp"
+#include "sim/scene/name_list.hpp"
 #include "sim/scene/parameter_binding.hpp"
 
 #include <Eigen/Geometry>
@@ -112,16 +113,10 @@ class Validator {
 
   // A string that must be one of the record's choices ("grid, tube, mesh").
   void one_of(const Parameter& p, const void* object, const std::string& prefix) const {
-    const std::string& value =
-        *static_cast<const std::string*>(p.address(const_cast<void*>(object)));
-    const std::string_view choices = p.choices;
-    for (std::size_t start = 0; start <= choices.size();) {
-      const std::size_t end = std::min(choices.find(", ", start), choices.size());
-      if (choices.substr(start, end - start) == value) return;
-      start = end + 2;
-    }
+    const std::string& value = *p.text(object);
+    if (listed(p.choices, value)) return;
     fail(join_key(prefix, p.name), std::string(p.name) + " \"" + value +
-                                       "\" is unknown (valid: " + std::string(choices) + ")");
+                                       "\" is unknown (valid: " + std::string(p.choices) + ")");
   }
 
   [[noreturn]] void fail(const std::string& key, const std::string& message) const {

@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <optional>
 
 #include "sim/forces/force_source.hpp"
@@ -74,13 +75,23 @@ struct ArrowSettings {
   float length = 0.9f;
 };
 
-struct ViewSettings {
-  DisplayMode mode = DisplayMode::lambert;
+// The scalars the cloth can be coloured by (ScalarField::none aside).
+inline constexpr std::array<ScalarField, 4> kColourScalars{
+    ScalarField::force, ScalarField::speed, ScalarField::strain, ScalarField::height};
+
+// The scientific views: what the colours and arrows show. A scene file leaves them at these
+// defaults; the window's keys and panel and `render`'s options (--color-by, --arrows, ...) set
+// them.
+struct ScientificViews {
   ColorSettings color;
   ArrowSettings arrows;
   bool legends = true;  // colour bars for the colour-by scalar and the force arrows
   // Which force the |force| colouring and the force arrows show (probes show the total).
   ForceSource force_source = ForceSource::total;
+};
+
+struct ViewSettings : ScientificViews {
+  DisplayMode mode = DisplayMode::lambert;
   OrbitCamera camera;
   // The scene's light ([render.light]): a spot at light_position aimed at light_target (the
   // scene's centre when unset), or a directional light travelling along light_direction.

@@ -56,14 +56,29 @@ struct SkyModel {
     }
     const float theta_s = std::acos(std::clamp(model_sun.y, 0.0f, 1.0f));
 
-    // Appendix A.2: distribution coefficients, linear in turbidity.
+    set_distributions(T);
+    set_zenith(T, theta_s);
+    const float cos_s = std::cos(theta_s);
+    norm_Y = 1.0f / perez_Y(1.0f, theta_s, cos_s);
+    norm_x = 1.0f / perez_x(1.0f, theta_s, cos_s);
+    norm_y = 1.0f / perez_y(1.0f, theta_s, cos_s);
+    exposure = p.exposure > 0.0f && std::isfinite(p.exposure) ? p.exposure : auto_exposure();
+    ground = glm::vec3(std::max(p.ground_albedo, 0.0f) * Yz * exposure);
+    ground_blend = std::max(p.ground_blend_deg, 0.01f) * kPi / 180.0f;
+    set_disc(p, min_disc_radius);
+  }
+
+  // Appendix A.2: distribution coefficients, linear in turbidity.
+  void set_distributions(float T) {
     perez_Y = {0.1787f * T - 1.4630f, -0.3554f * T + 0.4275f, -0.0227f * T + 5.3251f,
                0.1206f * T - 2.5771f, -0.0670f * T + 0.3703f};
     perez_x = {-0.0193f * T - 0.2592f, -0.0665f * T + 0.0008f, -0.0004f * T + 0.2125f,
                -0.0641f * T - 0.8989f, -0.0033f * T + 0.0452f};
     perez_y = {-0.0167f * T - 0.2608f, -0.0950f * T + 0.0092f, -0.0079f * T + 0.2102f,
                -0.0441f * T - 1.6537f, -0.0109f * T + 0.0529f};
+  }
 
+  void set_zenith(float T, float theta_s) {
     // Zenith luminance (kcd/m^2): Y_z = (4.0453 T - 4.9710) tan(chi) - 0.2155 T + 2.4192,
     // chi = (4/9 - T/120) (pi - 2 theta_s).
     const float chi = (4.0f / 9.0f - T / 120.0f) * (kPi - 2.0f * theta_s);
@@ -76,42 +91,33 @@ struct SkyModel {
     yz = t2 * (0.00275f * s3 - 0.00610f * s2 + 0.00317f * s1) +
          T * (-0.04214f * s3 + 0.08970f * s2 - 0.04153f * s1 + 0.00516f) +
          (0.15346f * s3 - 0.26756f * s2 + 0.06670f * s1 + 0.26688f);
+  }
 
-    const float cos_s = std::cos(theta_s);
-    norm_Y = 1.0f / perez_Y(1.0f, theta_s, cos_s);
-    norm_x = 1.0f / perez_x(1.0f, theta_s, cos_s);
-    norm_y = 1.0f / perez_y(1.0f, theta_s, cos_s);
-
-    exposure = 1.0f;
-    if (p.exposure > 0.0f && std::isfinite(p.exposure)) {
-      exposure = p.exposure;
-    } else {
-      // Brightest point of the model's sky. Across the sun's vertical plane the circumsolar term
-      // falls off with gamma and the gradation term (A < 0 for T < 8.2) rises towards the
-      // horizon, so the maximum lies on that great circle: towards the sun, or (low turbidity)
-      // on the horizon below it. Search it at 1 degree steps, plus the sun itself.
-      float brightest = luminance(model_sun);
-      const glm::vec2 h(model_sun.x, model_sun.z);
-      const float hl = glm::length(h);
-      const glm::vec2 az = hl > 1e-6f ? h / hl : glm::vec2(1.0f, 0.0f);
-      for (int k = 0; k <= 180; ++k) {
-        const float a = kPi * float(k) / 180.0f;  // from one horizon over the zenith to the other
-        const glm::vec3 d(std::cos(a) * az.x, std::sin(a), std::cos(a) * az.y);
-        brightest = std::max(brightest, luminance(d));
-      }
-      exposure = 1.0f / std::max(brightest, 1e-6f);
+  // 1 / the brightest point of the model's sky. Across the sun's vertical plane the
+  // circumsolar term falls off with gamma and the gradation term (A < 0 for T < 8.2) rises
+  // towards the horizon, so the maximum lies on that great circle: towards the sun, or (low
+  // turbidity) on the horizon below it. Searched at 1 degree steps, plus the sun itself.
+  float auto_exposure() const {
+    float brightest = luminance(model_sun);
+    const glm::vec2 h(model_sun.x, model_sun.z);
+    const float hl = glm::length(h);
+    const glm::vec2 az = hl > 1e-6f ? h / hl : glm::vec2(1.0f, 0.0f);
+    for (int k = 0; k <= 180; ++k) {
+      const float a = kPi * float(k) / 180.0f;  // from one horizon over the zenith to the other
+      const glm::vec3 d(std::cos(a) * az.x, std::sin(a), std::cos(a) * az.y);
+      brightest = std::max(brightest, luminance(d));
     }
-    ground = glm::vec3(std::max(p.ground_albedo, 0.0f) * Yz * exposure);
-    ground_blend = std::max(p.ground_blend_deg, 0.01f) * kPi / 180.0f;
+    return 1.0f / std::max(brightest, 1e-6f);
+  }
 
+  void set_disc(const SkyParams& p, float min_disc_radius) {
     draw_disc = p.draw_sun_disc && p.sun_disc_radius_deg > 0.0f && p.sun_disc_intensity > 0.0f;
-    if (draw_disc) {
-      const float r =
-          std::max(std::min(p.sun_disc_radius_deg, 45.0f) * kPi / 180.0f, min_disc_radius);
-      cos_disc_outer = std::cos(r);
-      cos_disc_inner = std::cos(0.8f * r);  // soft edge over the outer fifth of the radius
-      sun_disc = p.sun_disc_intensity * sky_above(model_sun);
-    }
+    if (!draw_disc) return;
+    const float r =
+        std::max(std::min(p.sun_disc_radius_deg, 45.0f) * kPi / 180.0f, min_disc_radius);
+    cos_disc_outer = std::cos(r);
+    cos_disc_inner = std::cos(0.8f * r);  // soft edge over the outer fifth of the radius
+    sun_disc = p.sun_disc_intensity * sky_above(model_sun);
   }
 
   static float clamp_cos(float c) { return std::max(c, 1e-3f); }

@@ -166,6 +166,59 @@ void scene_picker(const SimSession& session, PanelState& state) {
   ImGui::EndCombo();
 }
 
+// A wrapped error line, when there is one.
+void error_line(const std::string& text, const char* prefix = "") {
+  if (text.empty()) return;
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextColored(kErrorColour, "%s%s", prefix, text.c_str());
+  ImGui::PopTextWrapPos();
+}
+
+// The display modes 1-7 (the keys), in two rows: one row does not fit the panel's width.
+void display_mode_editor(ViewSettings& view) {
+  int mode = static_cast<int>(view.mode);
+  ImGui::AlignTextToFramePadding();
+  ImGui::Text("display");
+  ImGui::SameLine();
+  ImGui::RadioButton("1 springs", &mode, 1);
+  ImGui::SameLine();
+  ImGui::RadioButton("2 normals", &mode, 2);
+  ImGui::SameLine();
+  ImGui::RadioButton("3 shaded", &mode, 3);
+  ImGui::RadioButton("4 cloth", &mode, 4);
+  ImGui::SameLine();
+  ImGui::RadioButton("5 sheer", &mode, 5);
+  ImGui::SameLine();
+  ImGui::RadioButton("6 weave", &mode, 6);
+  ImGui::SameLine();
+  ImGui::RadioButton("7 light depth", &mode, 7);
+  view.mode = static_cast<DisplayMode>(mode);
+}
+
+// The scene's parameters: dynamics (applied at once), the push, the structure (applied on
+// Reset) and the parallel switch; returns a clicked action.
+std::optional<Action> scene_editors(SimSession& session, PanelState& state) {
+  std::optional<Action> clicked;
+  Scene& draft = session.draft();
+  if (dynamics_editors(draft, session.solver())) session.apply_dynamics();
+  error_line(session.error(), "not applied: ");
+
+  const double push_lo = 0.0, push_hi = 10.0;
+  ImGui::SliderScalar("push (N*s)", ImGuiDataType_Double, &state.push_strength, &push_lo, &push_hi,
+                      "%.3g");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("P")) clicked = Action::push;
+
+  if (structure_editors(draft)) session.check_structure();
+  if (session.structure_pending() && session.structure_error().empty())
+    ImGui::TextColored(kWarningColour, "new resolution applies on Reset (R)");
+  error_line(session.structure_error());
+
+  bool parallel = session.parallel();
+  if (ImGui::Checkbox("parallel solver (M)", &parallel)) clicked = Action::toggle_parallel;
+  return clicked;
+}
+
 }  // namespace
 
 std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view, PanelState& state,
@@ -183,51 +236,8 @@ std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view
   ImGui::SameLine();
   ImGui::TextDisabled("(H: keys)");
   clicked = buttons(session);
-
-  Scene& draft = session.draft();
-  if (dynamics_editors(draft, session.solver())) session.apply_dynamics();
-  if (!session.error().empty()) {
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextColored(kErrorColour, "not applied: %s", session.error().c_str());
-    ImGui::PopTextWrapPos();
-  }
-
-  const double push_lo = 0.0, push_hi = 10.0;
-  ImGui::SliderScalar("push (N*s)", ImGuiDataType_Double, &state.push_strength, &push_lo, &push_hi,
-                      "%.3g");
-  ImGui::SameLine();
-  if (ImGui::SmallButton("P")) clicked = Action::push;
-
-  if (structure_editors(draft)) session.check_structure();
-  if (session.structure_pending() && session.structure_error().empty())
-    ImGui::TextColored(kWarningColour, "new resolution applies on Reset (R)");
-  if (!session.structure_error().empty()) {
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextColored(kErrorColour, "%s", session.structure_error().c_str());
-    ImGui::PopTextWrapPos();
-  }
-
-  bool parallel = session.parallel();
-  if (ImGui::Checkbox("parallel solver (M)", &parallel)) clicked = Action::toggle_parallel;
-
-  int mode = static_cast<int>(view.mode);
-  ImGui::AlignTextToFramePadding();
-  ImGui::Text("display");
-  ImGui::SameLine();
-  ImGui::RadioButton("1 springs", &mode, 1);
-  ImGui::SameLine();
-  ImGui::RadioButton("2 normals", &mode, 2);
-  ImGui::SameLine();
-  ImGui::RadioButton("3 shaded", &mode, 3);
-  // The realistic modes on a second row: one row does not fit the panel's width.
-  ImGui::RadioButton("4 cloth", &mode, 4);
-  ImGui::SameLine();
-  ImGui::RadioButton("5 sheer", &mode, 5);
-  ImGui::SameLine();
-  ImGui::RadioButton("6 weave", &mode, 6);
-  ImGui::SameLine();
-  ImGui::RadioButton("7 light depth", &mode, 7);
-  view.mode = static_cast<DisplayMode>(mode);
+  if (const auto edited = scene_editors(session, state)) clicked = edited;
+  display_mode_editor(view);
   shadow_editors(view);
   ImGui::Text("probe (8 force, 9 velocity, 0 position): %s",
               state.probe ? field_name(*state.probe) : "off");
