@@ -610,3 +610,36 @@ TEST(Validate, SceneBuiltInCode) {
 
 }  // namespace
 }  // namespace clothlab
+
+namespace clothlab {
+namespace {
+
+// The scene stays plain data: the parser reads no file a scene names and leaves every loaded
+// part empty; the load step (load/) alone fills them (docs/design.md, "Data flow").
+TEST(SceneParser, ParserLeavesTheLoadedPartsToTheLoadStep) {
+  const std::string dir = std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/";
+  for (const char* name : {"chair.toml", "round_cloth.toml", "dance.toml"}) {
+    SCOPED_TRACE(name);
+    const Scene parsed = parse_scene_file(dir + name);
+    for (const ClothSpec& c : parsed.cloths) EXPECT_EQ(c.mesh, nullptr);
+    for (const ColliderSpec& c : parsed.colliders) {
+      EXPECT_EQ(c.mesh, nullptr);
+      EXPECT_EQ(c.body, nullptr);
+    }
+    for (const MeshSpec& m : parsed.render.meshes) EXPECT_EQ(m.obj, nullptr);
+    if (parsed.music) EXPECT_EQ(parsed.music->track, nullptr);
+    if (parsed.mannequin) EXPECT_EQ(parsed.mannequin->motion, nullptr);
+
+    const Scene loaded = read_scene_file(dir + name);
+    int filled = 0;
+    for (const ClothSpec& c : loaded.cloths) filled += c.mesh != nullptr;
+    for (const ColliderSpec& c : loaded.colliders) filled += (c.mesh != nullptr) + (c.body != nullptr);
+    for (const MeshSpec& m : loaded.render.meshes) filled += m.obj != nullptr;
+    if (loaded.music) filled += loaded.music->track != nullptr;
+    if (loaded.mannequin) filled += loaded.mannequin->motion != nullptr;
+    EXPECT_GT(filled, 0) << "the load step filled nothing";
+  }
+}
+
+}  // namespace
+}  // namespace clothlab
