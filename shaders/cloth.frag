@@ -5,10 +5,8 @@
 #include "weave.glsl"
 
 // Colour by a scalar through a colour map (ViewSettings::color), or
-// 2: world-space normal as colour (n * 0.5 + 0.5); 3: Lambert with the fabric texture.
-layout(location = 0) uniform int u_mode;
+// 2: world-space normal as colour (n * 0.5 + 0.5); 3: Lambert with the fabric texture; 4-6 below.
 layout(location = 1) uniform float u_texture_repeat;  // fabric repeats per cloth
-layout(location = 2) uniform int u_color_by;   // 1: colour by the scalar through the map
 layout(location = 3) uniform vec2 u_range;      // the scalar's min and max
 layout(location = 4) uniform int u_shaded;      // 1: the mapped colour lit as an albedo
 // Mode 4, the cloth's look ([render.cloth]): x Oren-Nayar roughness, y sheen strength, z sheen
@@ -119,35 +117,39 @@ vec3 weave_lit(vec3 n_seen, vec3 albedo) {
   return albedo * (e + vec3(light_color.a));
 }
 
+// CLOTH_MODE (2-6) and CLOTH_COLOR_BY (1: coloured by a scalar) are compile-time choices, one
+// program per mode (vis/passes/cloth_pass.cpp): llvmpipe runs every branch on a uniform with its
+// lanes masked off, so one shader for all modes cost mode 3 the BRDF and the weave as well.
+#ifndef CLOTH_MODE
+#define CLOTH_MODE 3
+#endif
+#ifndef CLOTH_COLOR_BY
+#define CLOTH_COLOR_BY 0
+#endif
+
 void main() {
   // Cloth has two sides: shade the side we see, with the normal turned towards us.
   vec3 n = normalize(v_normal);
   if (!gl_FrontFacing) n = -n;
-  if (u_color_by == 1) {
-    // Mapped per fragment (the interpolated scalar, not interpolated colours), clamped at the
-    // ends; texel centres at (0.5 + 255 t) / 256 so t = 0 and 1 give the table's end entries.
-    float t = clamp((v_scalar - u_range.x) / (u_range.y - u_range.x), 0.0, 1.0);
-    vec3 mapped = isnan(v_scalar) ? kNanColor : texture(u_lut, vec2((0.5 + 255.0 * t) / 256.0, 0.5)).rgb;
-    color = vec4(u_shaded == 1 ? lambert_lit(v_world, n, mapped) : mapped, 1.0);
-    return;
-  }
-  if (u_mode == 2) {
-    color = vec4(srgb_to_linear(n * 0.5 + 0.5), 1.0);
-    return;
-  }
+#if CLOTH_COLOR_BY
+  // Mapped per fragment (the interpolated scalar, not interpolated colours), clamped at the
+  // ends; texel centres at (0.5 + 255 t) / 256 so t = 0 and 1 give the table's end entries.
+  float t = clamp((v_scalar - u_range.x) / (u_range.y - u_range.x), 0.0, 1.0);
+  vec3 mapped = isnan(v_scalar) ? kNanColor : texture(u_lut, vec2((0.5 + 255.0 * t) / 256.0, 0.5)).rgb;
+  color = vec4(u_shaded == 1 ? lambert_lit(v_world, n, mapped) : mapped, 1.0);
+#elif CLOTH_MODE == 2
+  color = vec4(srgb_to_linear(n * 0.5 + 0.5), 1.0);
+#else
   vec3 albedo = u_use_flat == 1 ? srgb_to_linear(u_flat_albedo)
                                 : texture(u_fabric, v_uv * u_texture_repeat).rgb;
-  if (u_mode == 5) {
-    color = translucent_lit(n, albedo);
-    return;
-  }
-  if (u_mode == 4) {
-    color = vec4(cloth_brdf_lit(n, albedo), 1.0);
-    return;
-  }
-  if (u_mode == 6) {
-    color = vec4(weave_lit(n, albedo), 1.0);
-    return;
-  }
+#if CLOTH_MODE == 5
+  color = translucent_lit(n, albedo);
+#elif CLOTH_MODE == 4
+  color = vec4(cloth_brdf_lit(n, albedo), 1.0);
+#elif CLOTH_MODE == 6
+  color = vec4(weave_lit(n, albedo), 1.0);
+#else
   color = vec4(lambert_lit(v_world, n, albedo), 1.0);
+#endif
+#endif
 }

@@ -14,6 +14,9 @@ out vec2 v_uv;
 out float v_scalar;
 out vec4 v_tangent;
 out vec2 v_atlas_uv;
+#if SHADOW_FAST_COORD
+out vec4 v_shadow_clip;
+#endif
 
 void main() {
   v_world = position;  // the solver works in world space
@@ -23,4 +26,7 @@ void main() {
   v_tangent = tangent;
   v_atlas_uv = atlas_uv;
   gl_Position = view_proj * vec4(position, 1.0);
+#if SHADOW_FAST_COORD
+  v_shadow_clip = shadow_clip_vertex(position, normal);
+#endif
 }

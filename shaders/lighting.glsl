@@ -1,5 +1,7 @@
 // Shadowed lighting for fragment shaders (include after frame.glsl): the scene's shadow map and
 // the lit surface models that use it. Fragment-only: the kernels turn with gl_FragCoord.
+//
+// The filter, coloured shadows and the kernel's taps are compile-time choices (frame.glsl).
 
 // The shadow map (vis/render/shadow_pass.cpp): one depth texture read through two samplers, a
 // comparing one for PCF and a plain one for the blocker search (docs/rendering.md section 0).
@@ -24,6 +26,23 @@ const vec2 kPoisson[16] = vec2[](
     vec2(0.53742981, -0.47373420), vec2(-0.26496911, -0.41893023), vec2(0.79197514, 0.19090188),
     vec2(-0.24188840, 0.99706507), vec2(-0.81409955, 0.91437590), vec2(0.19984126, 0.78641367),
     vec2(0.14383161, -0.14100790));
+// The fast kernels: 4 points of a rotated grid (the 4-sample rotated-grid pattern of
+// anti-aliasing) at about the Poisson disk's mean radius, and a diagonal pair of them. Each tap is
+// a hardware 2x2 comparison, so two taps already blend four texels across the edge.
+const vec2 kRotatedGrid[4] = vec2[](vec2(0.75, 0.25), vec2(-0.25, 0.75), vec2(-0.75, -0.25),
+                                    vec2(0.25, -0.75));
+const vec2 kDiagonalPair[2] = vec2[](vec2(0.5, 0.5), vec2(-0.5, -0.5));
+
+// The kernel's i-th point in the unit circle.
+vec2 kernel_point(int i) {
+#if SHADOW_TAPS == 2
+  return kDiagonalPair[i];
+#elif SHADOW_TAPS == 4
+  return kRotatedGrid[i];
+#else
+  return kPoisson[i];
+#endif
+}
 
 // A depth-map value as distance from the light along its axis (m): perspective maps store
 // non-linear depth (LearnOpenGL "Shadow mapping", linearised depth); orthographic ones are linear.
@@ -42,20 +61,19 @@ float linear_light_depth(float d) {
 // light and the cloth stays untinted.
 vec3 pcf(vec3 coord, vec2 dz_duv, float radius, mat2 rotation) {
   vec3 lit = vec3(0.0);
-  bool coloured = shadow_range.w > 0.5;
-  for (int i = 0; i < 16; ++i) {
-    vec2 offset = rotation * kPoisson[i] * radius;
+  for (int i = 0; i < SHADOW_TAPS; ++i) {
+    vec2 offset = rotation * kernel_point(i) * radius;
     vec3 tap = vec3(coord.xy + offset, coord.z + dot(dz_duv, offset));
     float all_casters = texture(u_shadow_compare, tap);
-    if (coloured) {
-      float opaque = texture(u_shadow_opaque, tap);
-      vec3 c = texture(u_shadow_colour, tap.xy).rgb;
-      lit += opaque * (all_casters + (1.0 - all_casters) * c);
-    } else {
-      lit += vec3(all_casters);
-    }
+#if SHADOW_COLOURED
+    float opaque = texture(u_shadow_opaque, tap);
+    vec3 c = texture(u_shadow_colour, tap.xy).rgb;
+    lit += opaque * (all_casters + (1.0 - all_casters) * c);
+#else
+    lit += vec3(all_casters);
+#endif
   }
-  return lit / 16.0;
+  return lit / float(SHADOW_TAPS);
 }
 
 // Percentage-closer soft shadows (Fernando 2005; NVIDIA's "PCSS Integration" formulas): the
@@ -71,8 +89,8 @@ vec3 pcss(vec3 coord, vec2 dz_duv, mat2 rotation) {
   float search = ortho ? light_uv * (z_receiver - n) : light_uv * (z_receiver - n) / z_receiver;
   search = clamp(search, 2.0 * shadow.y, 0.08);
   float blockers = 0.0, sum = 0.0;
-  for (int i = 0; i < 16; ++i) {
-    vec2 offset = rotation * kPoisson[i] * search;
+  for (int i = 0; i < SHADOW_TAPS; ++i) {
+    vec2 offset = rotation * kernel_point(i) * search;
     float d = texture(u_shadow_depth, coord.xy + offset).r;
     // A blocker lies in front of the receiver's plane at that tap (plus a texel's slack).
     if (d < coord.z + dot(dz_duv, offset) - 2.0 * shadow.y * length(dz_duv) - 1e-5) {
@@ -93,26 +111,52 @@ vec3 pcss(vec3 coord, vec2 dz_duv, mat2 rotation) {
 // translucent cloth) on a surface of normal n. The receiver
 // is moved along its normal by about a texel (normal-offset shadows, Holbert 2011) and the
 // casters were drawn with a slope-scaled depth offset, so neither acne nor peter-panning shows.
+#if SHADOW_FAST_COORD
+in vec4 v_shadow_clip;  // shadow_clip() of the vertex shader, interpolated
+#endif
+
 vec3 shadow_visibility(vec3 p, vec3 n) {
-  if (shadow.x < 0.5) return vec3(1.0);
-  vec3 l = light_vector(p);
-  float slope = 1.0 - abs(dot(n, l));
-  vec4 c = light_view_proj * vec4(p + n * shadow.w * (0.5 + slope), 1.0);
+#if SHADOW_FILTER == 0
+  return vec3(1.0);
+#else
+#if SHADOW_FAST_COORD
+  vec4 c = v_shadow_clip;
+#else
+  vec4 c = shadow_clip(p, n);
+#endif
   vec3 coord = c.xyz / c.w * 0.5 + 0.5;
   // The receiver's depth gradient in shadow-map uv, from its screen-space derivatives (taken
   // here, in uniform control flow: callers must not branch around this function).
+#if SHADOW_TAPS <= 4 && SHADOW_FILTER == 1
+  // The small fast kernel (1.5 texels) relies on the normal offset and the casters' slope-scaled
+  // offset alone: the receiver plane's derivatives cost a CPU renderer more than the taps. PCSS
+  // keeps them: its search and penumbrae reach far beyond a texel.
+  vec2 dz_duv = vec2(0.0);
+#else
   vec3 dx = dFdx(coord), dy = dFdy(coord);
   float det = dx.x * dy.y - dx.y * dy.x;
   vec2 dz_duv = abs(det) > 1e-12 ? vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z) / det
                                  : vec2(0.0);
   dz_duv = clamp(dz_duv, vec2(-8.0), vec2(8.0));  // grazing receivers: bounded
+#endif
   // Beyond the map's depth range or its borders: lit (the map covers every caster).
   if (coord.z >= 1.0 || any(lessThan(coord.xy, vec2(0.0))) || any(greaterThan(coord.xy, vec2(1.0))))
     return vec3(1.0);
+#if SHADOW_TAPS <= 4
+  // The rotated grid as it is: with four taps a per-pixel rotation would show as grain, and its
+  // sine and cosine cost a CPU renderer more than the taps.
+  mat2 rotation = mat2(1.0);
+#else
   float angle = 6.2831853 * interleaved_gradient_noise(gl_FragCoord.xy);
   mat2 rotation = mat2(cos(angle), sin(angle), -sin(angle), cos(angle));
-  if (shadow.x < 1.5) return pcf(coord, dz_duv, 1.5 * shadow.y, rotation);
+#endif
+#if SHADOW_FILTER == 1
+  // 1.5 texels of the full map; the fast map has half its texels (vis/render/renderer.cpp).
+  return pcf(coord, dz_duv, (SHADOW_TAPS <= 4 ? 0.75 : 1.5) * shadow.y, rotation);
+#else
   return pcss(coord, dz_duv, rotation);
+#endif
+#endif
 }
 
 // Lambert (1760) under the scene's light, shadowed, plus a constant ambient: outgoing radiance

@@ -202,7 +202,7 @@ clothlab_cli_test(bench.views_quick 0
   bench --suite views --quick --out ${CLOTHLAB_TRACE_OUT}/bench/views.csv)
 set_tests_properties(cli.bench.views_quick PROPERTIES ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
 clothlab_cli_test(bench.rendering_quick 0
-  "Render cost per headless frame: .*mode 3, every optional pass off.*mode 7 light depth map.*wrote .*rendering\\.csv"
+  "Render cost per headless frame, quality full: .*mode 3, every optional pass off.*mode 7 light depth map.*quality fast: .*mode 7 light depth map.*wrote .*rendering\\.csv"
   bench --suite rendering --quick --out ${CLOTHLAB_TRACE_OUT}/bench/rendering.csv)
 set_tests_properties(cli.bench.rendering_quick PROPERTIES ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}")
 

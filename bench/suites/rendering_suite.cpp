@@ -50,6 +50,8 @@ std::vector<Variant> render_variants() {
          v.shadows = ShadowFilter::none;
          v.sky = false;
        }},
+      {"mode 1 springs, PCF", mode(vis::DisplayMode::springs, ShadowFilter::pcf)},
+      {"mode 2 normals, PCF", mode(vis::DisplayMode::normals, ShadowFilter::pcf)},
       {"mode 3, sky, no shadows", mode(vis::DisplayMode::lambert, ShadowFilter::none)},
       {"mode 3, sky, PCF (the default)", mode(vis::DisplayMode::lambert, ShadowFilter::pcf)},
       {"mode 3, sky, PCSS", mode(vis::DisplayMode::lambert, ShadowFilter::pcss)},
@@ -124,6 +126,26 @@ Table rendering_table(const std::vector<Variant>& variants, const std::vector<Se
   return table;
 }
 
+// Every variant at one render quality, round-robin over `rounds` rounds.
+std::vector<Series> measure_quality(vis::HeadlessRenderer& renderer, Solver& solver,
+                                    const vis::ViewSettings& base, RenderQuality quality,
+                                    const std::vector<Variant>& variants, int rounds, int frames,
+                                    std::ostream* log) {
+  std::vector<Series> series(variants.size());
+  for (int round = 0; round < rounds; ++round) {
+    for (std::size_t k = 0; k < variants.size(); ++k) {
+      vis::ViewSettings view = base;
+      variants[k].edit(view);
+      view.quality = quality;
+      time_variant(renderer, solver, view, frames, series[k]);
+    }
+    if (log)
+      *log << "rendering: " << to_string(quality) << " round " << round + 1 << " of " << rounds
+           << " done\n";
+  }
+  return series;
+}
+
 }  // namespace
 
 std::vector<Table> rendering_suite(const SuiteOptions& o) {
@@ -140,23 +162,22 @@ std::vector<Table> rendering_suite(const SuiteOptions& o) {
   renderer.set_scene(scene.render, *solver);
   const vis::ViewSettings base = vis::scene_view(scene, *solver);
   const std::vector<Variant> variants = render_variants();
-  std::vector<Series> series(variants.size());
-  for (int round = 0; round < rounds; ++round) {
-    for (std::size_t k = 0; k < variants.size(); ++k) {
-      vis::ViewSettings view = base;
-      variants[k].edit(view);
-      time_variant(renderer, *solver, view, frames, series[k]);
-    }
-    if (o.log) *o.log << "rendering: round " << round + 1 << " of " << rounds << " done\n";
+  std::vector<Table> tables;
+  for (RenderQuality quality : {RenderQuality::full, RenderQuality::fast}) {
+    const std::vector<Series> series =
+        measure_quality(renderer, *solver, base, quality, variants, rounds, frames, o.log);
+    const std::string title =
+        "Render cost per headless frame, quality " + std::string(to_string(quality)) + ": " +
+        std::string(CLOTHLAB_DEFAULT_SCENE) + " + 3 meshes, " + std::to_string(width) + "x" +
+        std::to_string(height) + " on " + renderer.gl_renderer() +
+        "; pass times: wall clock between glFinish at each pass boundary; frame = draw + "
+        "resolve + readback, timed separately without the boundaries; median of " +
+        std::to_string(rounds) + " rounds of " + std::to_string(frames) + " frames";
+    Table t = rendering_table(variants, series, title);
+    if (quality == RenderQuality::fast) t.name = "fast";
+    tables.push_back(std::move(t));
   }
-  const std::string title =
-      "Render cost per headless frame: " + std::string(CLOTHLAB_DEFAULT_SCENE) + " + 3 meshes, " +
-      std::to_string(width) + "x" + std::to_string(height) + " (4x MSAA) on " +
-      renderer.gl_renderer() +
-      "; pass times: wall clock between glFinish at each pass boundary; frame = draw + "
-      "resolve + readback, timed separately without the boundaries; median of " +
-      std::to_string(rounds) + " rounds of " + std::to_string(frames) + " frames";
-  return {rendering_table(variants, series, title)};
+  return tables;
 }
 
 }  // namespace clothlab::bench

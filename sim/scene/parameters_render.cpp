@@ -21,6 +21,11 @@ std::vector<Parameter> render_table() {
                               .range_text = "a display mode from 1 to 7",
                               .fallback = "3",
                               .description = "the display mode (key 1-7) the view starts in"}),
+      choice_row<&RenderSpec::quality, kRenderQualityNames, "render quality">(
+          {.name = "quality",
+           .fallback = "\"auto\"",
+           .description = "full, fast (same look, cheaper on a CPU renderer), or auto: fast on a "
+                          "software renderer"}),
       choice_row<&RenderSpec::shadows, kShadowFilterNames, "shadow filter">(
           {.name = "shadows", .fallback = "\"pcf\"", .description = "the shadow filter"}),
       row<&RenderSpec::shadow_map_size>({.name = "shadow_map_size",

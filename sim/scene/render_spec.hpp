@@ -17,6 +17,10 @@ struct TriangleMesh;
 using Vec3d = std::array<double, 3>;
 
 enum class ShadowFilter { none, pcf, pcss };
+// How much a frame may cost (docs/rendering.md, "Render quality"): full is the reference look;
+// fast keeps every mode's meaning and look at a fraction of the cost on a software renderer;
+// automatic picks fast on one (llvmpipe, softpipe, swrast) and full elsewhere.
+enum class RenderQuality { automatic, full, fast };
 enum class LightType { spot, directional };
 enum class MeshKind { sphere, box, torus_knot, obj };
 enum class ThreadMetal { none, gold, silver };
@@ -86,6 +90,7 @@ struct CameraSpec {
 
 struct RenderSpec {
   int mode = 3;  // the display mode (keys 1-7) the view starts in
+  RenderQuality quality = RenderQuality::automatic;
   ShadowFilter shadows = ShadowFilter::pcf;
   int shadow_map_size = 2048;
   LightSpec light;
@@ -98,11 +103,13 @@ struct RenderSpec {
 
 // Names as written in scene files, in enum order (the parser and the UI list them).
 extern const std::array<std::pair<ShadowFilter, const char*>, 3> kShadowFilterNames;
+extern const std::array<std::pair<RenderQuality, const char*>, 3> kRenderQualityNames;
 extern const std::array<std::pair<LightType, const char*>, 2> kLightTypeNames;
 extern const std::array<std::pair<MeshKind, const char*>, 4> kMeshKindNames;
 extern const std::array<std::pair<ThreadMetal, const char*>, 3> kThreadMetalNames;
 
 const char* to_string(ShadowFilter filter);
+const char* to_string(RenderQuality quality);
 const char* to_string(MeshKind kind);
 const char* to_string(ThreadMetal metal);
 

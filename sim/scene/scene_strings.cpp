@@ -51,6 +51,14 @@ const std::array<std::pair<ThreadMetal, const char*>, 3> kThreadMetalNames{
 const char* to_string(ColliderKind kind) {
   return name_of(kColliderKindNames, kind);
 }
+const std::array<std::pair<RenderQuality, const char*>, 3> kRenderQualityNames{
+    {{RenderQuality::automatic, "auto"},
+     {RenderQuality::full, "full"},
+     {RenderQuality::fast, "fast"}}};
+
+const char* to_string(RenderQuality quality) {
+  return name_of(kRenderQualityNames, quality);
+}
 const char* to_string(ShadowFilter filter) {
   return name_of(kShadowFilterNames, filter);
 }

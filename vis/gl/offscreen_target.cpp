@@ -9,13 +9,16 @@ namespace clothlab::vis {
 OffscreenTarget::OffscreenTarget(int width, int height, int samples)
     : width_(width),
       height_(height),
+      samples_(samples),
       msaa_fbo_(make_framebuffer()),
       resolve_fbo_(make_framebuffer()),
       msaa_color_(make_renderbuffer()),
       msaa_depth_(make_renderbuffer()),
       resolve_color_(make_renderbuffer()) {
-  glNamedRenderbufferStorageMultisample(msaa_color_.get(), samples, GL_SRGB8_ALPHA8, width, height);
-  glNamedRenderbufferStorageMultisample(msaa_depth_.get(), samples, GL_DEPTH_COMPONENT32F, width,
+  // 0 samples: plain single-sampled storage (1 would still be a multisample buffer).
+  const int stored = samples > 1 ? samples : 0;
+  glNamedRenderbufferStorageMultisample(msaa_color_.get(), stored, GL_SRGB8_ALPHA8, width, height);
+  glNamedRenderbufferStorageMultisample(msaa_depth_.get(), stored, GL_DEPTH_COMPONENT32F, width,
                                         height);
   glNamedFramebufferRenderbuffer(msaa_fbo_.get(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
                                  msaa_color_.get());
@@ -40,10 +43,11 @@ void OffscreenTarget::bind() const {
 }
 
 std::vector<std::uint8_t> OffscreenTarget::read_rgba() {
-  glBlitNamedFramebuffer(msaa_fbo_.get(), resolve_fbo_.get(), 0, 0, width_, height_, 0, 0, width_,
-                         height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  if (samples_ > 1)
+    glBlitNamedFramebuffer(msaa_fbo_.get(), resolve_fbo_.get(), 0, 0, width_, height_, 0, 0, width_,
+                           height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo_.get());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, samples_ > 1 ? resolve_fbo_.get() : msaa_fbo_.get());
   glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rows_.data());
   // GL's row 0 is the bottom; images have row 0 at the top.
   std::vector<std::uint8_t> image(rows_.size());

@@ -1,5 +1,6 @@
-// A framebuffer to render into without a window: multisampled colour and depth, resolved into a
-// plain RGBA8 framebuffer that is read back to memory.
+// A framebuffer to render into without a window: colour and depth, multisampled (samples > 1)
+// and resolved into a plain RGBA8 framebuffer that is read back to memory, or single-sampled
+// (samples 1) and read back directly.
 #pragma once
 
 #include <cstdint>
@@ -13,16 +14,17 @@ class OffscreenTarget {
  public:
   OffscreenTarget(int width, int height, int samples = 4);
 
-  // Binds the multisampled framebuffer and sets the viewport.
+  // Binds the framebuffer drawn into and sets the viewport.
   void bind() const;
   GLuint framebuffer() const { return msaa_fbo_.get(); }
   // Resolves and reads the image: RGBA8, row 0 at the top.
   std::vector<std::uint8_t> read_rgba();
   int width() const { return width_; }
   int height() const { return height_; }
+  int samples() const { return samples_; }
 
  private:
-  int width_, height_;
+  int width_, height_, samples_;
   Framebuffer msaa_fbo_, resolve_fbo_;
   Renderbuffer msaa_color_, msaa_depth_, resolve_color_;
   std::vector<std::uint8_t> rows_;

@@ -77,15 +77,25 @@ GLenum stage_of(const std::string& file) {
                     ": unknown shader stage (expected .vert, .geom, .frag, .comp)");
 }
 
+// `defines` after the first line (#version), then a #line directive so that the stage's next
+// line is still its line 2 of source string 0.
+std::string with_defines(const std::string& text, const std::string& defines) {
+  if (defines.empty()) return text;
+  const std::size_t end = text.find('\n');
+  if (end == std::string::npos) return text + "\n" + defines;
+  return text.substr(0, end + 1) + defines + "#line 2 0\n" + text.substr(end + 1);
+}
+
 }  // namespace
 
-Program link_program(const std::vector<ShaderStage>& stages) {
+Program link_program(const std::vector<ShaderStage>& stages, const std::string& defines) {
   std::vector<Shader> shaders;
   std::string names;
   for (const ShaderStage& stage : stages) {
     Shader shader(glCreateShader(stage.type));
     std::vector<std::string> files;
-    const std::string expanded = expand_includes(stage.text, stage.file, files);
+    const std::string expanded =
+        with_defines(expand_includes(stage.text, stage.file, files), defines);
     const char* text = expanded.c_str();
     glShaderSource(shader.get(), 1, &text, nullptr);
     glCompileShader(shader.get());
@@ -109,10 +119,10 @@ Program link_program(const std::vector<ShaderStage>& stages) {
   return program;
 }
 
-Program build_program(const std::vector<std::string>& files) {
+Program build_program(const std::vector<std::string>& files, const std::string& defines) {
   std::vector<ShaderStage> stages;
   for (const std::string& f : files) stages.push_back({stage_of(f), f, shader_text(f)});
-  return link_program(stages);
+  return link_program(stages, defines);
 }
 
 }  // namespace clothlab::vis

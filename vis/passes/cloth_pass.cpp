@@ -9,6 +9,7 @@
 #include "vis/gl/uploads.hpp"
 #include "vis/passes/diffusion_pass.hpp"
 #include "vis/render/cloth_geometry.hpp"
+#include "vis/render/shading_variant.hpp"
 #include "vis/textures/fabric_texture.hpp"
 #include "vis/textures/weave_maps.hpp"
 
@@ -16,31 +17,38 @@ namespace clothlab::vis {
 namespace {
 
 // Explicit uniform locations of shaders/cloth.frag (no lookups per frame).
-constexpr GLint kClothMode = 0, kClothTextureRepeat = 1, kClothColorBy = 2, kClothRange = 3,
-                kClothShaded = 4, kClothLook = 5, kClothMetalF0 = 6, kClothGlints = 7,
-                kClothFlatAlbedo = 9, kClothUseFlat = 10, kClothTranslucency = 11,
-                kClothDiffusionWeights = 12, kClothSubsurface = 15, kClothGlintsOn = 16;
+constexpr GLint kClothTextureRepeat = 1, kClothRange = 3, kClothShaded = 4, kClothLook = 5,
+                kClothMetalF0 = 6, kClothGlints = 7, kClothFlatAlbedo = 9, kClothUseFlat = 10,
+                kClothTranslucency = 11, kClothDiffusionWeights = 12, kClothSubsurface = 15,
+                kClothGlintsOn = 16;
 // Mode 6's diffusion weights per channel (sharp term, then the three blurs of DiffusionPass;
 // each row sums to 1): red light travels farthest through the dyed yarn, blue least.
 constexpr float kDiffusionWeights[3][4] = {
     {0.40f, 0.25f, 0.20f, 0.15f}, {0.60f, 0.25f, 0.11f, 0.04f}, {0.72f, 0.20f, 0.06f, 0.02f}};
 constexpr int kThreadTextureSize = 256;  // as the fabric albedo, so the weaves line up
 
+// The cloth shader's own compile-time choices (shaders/cloth.frag), after the shading variant's.
+std::string cloth_defines(DisplayMode mode, bool color_by) {
+  return "#define CLOTH_MODE " + std::to_string(static_cast<int>(mode)) +
+         "\n#define CLOTH_COLOR_BY " + (color_by ? "1" : "0") + "\n";
+}
+
 }  // namespace
 
 ClothPass::ClothPass()
-    : program_(build_program({"cloth.vert", "cloth.frag"})),
+    : programs_({"cloth.vert", "cloth.frag"},
+                ShadingVariant{}.defines() + cloth_defines(DisplayMode::lambert, false)),
       fabric_(upload_texture(make_fabric_texture())) {
   glObjectLabel(GL_TEXTURE, fabric_.get(), -1, "fabric albedo");
 }
 
 void ClothPass::draw(const ViewSettings& view, ClothGeometry& cloth, ScalarRange range,
-                     GLuint colormap, const DiffusionPass* diffusion) {
-  const GLuint p = program_.get();
+                     GLuint colormap, const DiffusionPass* diffusion, const std::string& shading) {
+  program_ =
+      programs_.get(shading + cloth_defines(view.mode, view.color.field != ScalarField::none));
+  const GLuint p = program_;
   glUseProgram(p);
-  glProgramUniform1i(p, kClothMode, static_cast<int>(view.mode));
   glProgramUniform1f(p, kClothTextureRepeat, view.fabric_repeat);
-  glProgramUniform1i(p, kClothColorBy, view.color.field != ScalarField::none ? 1 : 0);
   glProgramUniform2f(p, kClothRange, static_cast<float>(range.min), static_cast<float>(range.max));
   glProgramUniform1i(p, kClothShaded, view.color.shaded ? 1 : 0);
   glBindTextureUnit(0, fabric_.get());
@@ -66,7 +74,7 @@ void ClothPass::draw(const ViewSettings& view, ClothGeometry& cloth, ScalarRange
 
 // A plain albedo instead of the weave, and mode 5's coverage and transmission.
 void ClothPass::set_material(const ViewSettings& view) {
-  const GLuint p = program_.get();
+  const GLuint p = program_;
   const auto& c = view.look.color;
   const glm::vec3 flat = c ? glm::vec3((*c)[0], (*c)[1], (*c)[2]) : glm::vec3(1.0f);
   glProgramUniform3f(p, kClothFlatAlbedo, flat.r, flat.g, flat.b);
@@ -86,15 +94,15 @@ void ClothPass::set_weave(const ViewSettings& view, ClothGeometry& cloth,
     w[c][0] = 1.0f - s * (1.0f - kDiffusionWeights[c][0]);
     for (int k = 1; k < 4; ++k) w[c][k] = s * kDiffusionWeights[c][k];
   }
-  glProgramUniform4fv(program_.get(), kClothDiffusionWeights, 3, &w[0][0]);
-  glProgramUniform1i(program_.get(), kClothSubsurface, diffusion ? 1 : 0);
+  glProgramUniform4fv(program_, kClothDiffusionWeights, 3, &w[0][0]);
+  glProgramUniform1i(program_, kClothSubsurface, diffusion ? 1 : 0);
   if (diffusion) diffusion->bind_results();
 }
 
 // Mode 4: the BRDF's parameters, the metal threads and two glint lights beside the camera
 // (specular only), so the threads sparkle from where one looks.
 void ClothPass::set_brdf(const ViewSettings& view, ClothGeometry& cloth) {
-  const GLuint p = program_.get();
+  const GLuint p = program_;
   cloth.update_tangents();
   set_thread_fraction(view.look.thread_fraction);
   glBindTextureUnit(2, threads_.get());

@@ -4,7 +4,10 @@
 // (mode 6, sections 3 and 4). Owns the cloth's textures. Needs a current GL 4.5 context.
 #pragma once
 
+#include <string>
+
 #include "vis/gl/objects.hpp"
+#include "vis/gl/program_variants.hpp"
 #include "vis/render/view_settings.hpp"
 
 namespace clothlab {
@@ -22,8 +25,9 @@ class ClothPass {
 
   // Draws the cloth into the bound framebuffer in view.mode. `colormap`: the colour map's table;
   // `diffusion`: mode 6's blurred irradiance, or null without subsurface light.
+  // `shading`: the lit shader's variant (ShadingVariant::defines).
   void draw(const ViewSettings& view, ClothGeometry& cloth, ScalarRange range, GLuint colormap,
-            const DiffusionPass* diffusion);
+            const DiffusionPass* diffusion, const std::string& shading);
   // Binds mode 6's normal map (the weave at this relief, or set_normal_map's) to unit 3.
   void bind_weave(double bump);
   // Replaces the procedural weave normal map with `map` until called with nullptr.
@@ -37,7 +41,8 @@ class ClothPass {
   void set_thread_fraction(double fraction);
   void upload_normal_map(const Image& map);
 
-  Program program_;
+  ProgramVariants programs_;
+  GLuint program_ = 0;  // the variant this draw uses
   Texture fabric_;
   Texture threads_;  // r: metal thread mask, g: weft on top
   double thread_fraction_ = -1.0;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "vis/gl/program.hpp"
+#include "vis/render/shading_variant.hpp"
 
 namespace clothlab::vis {
 namespace {
@@ -25,7 +26,8 @@ Texture atlas_texture(int size, const char* label, GLenum format = GL_RGBA16F) {
 
 DiffusionPass::DiffusionPass(int size)
     : size_(size),
-      irradiance_program_(build_program({"tsd_irradiance.vert", "tsd_irradiance.frag"})),
+      irradiance_programs_({"tsd_irradiance.vert", "tsd_irradiance.frag"},
+                           ShadingVariant{}.defines()),
       blur_program_(build_program({"tsd_blur.vert", "tsd_blur.frag"})),
       fbo_(make_framebuffer()),
       irradiance_(atlas_texture(size, "diffusion: irradiance")),
@@ -48,7 +50,8 @@ void DiffusionPass::blur(const Texture& source, const Texture& target, float sig
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void DiffusionPass::run(GLuint vao, GLsizei index_count, glm::vec2 atlas_per_metre, float repeat) {
+void DiffusionPass::run(GLuint vao, GLsizei index_count, glm::vec2 atlas_per_metre, float repeat,
+                        const std::string& shading) {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
   glNamedFramebufferTexture(fbo_.get(), GL_COLOR_ATTACHMENT0, irradiance_.get(), 0);
   glNamedFramebufferTexture(fbo_.get(), GL_COLOR_ATTACHMENT1, stretch_.get(), 0);
@@ -62,9 +65,10 @@ void DiffusionPass::run(GLuint vao, GLsizei index_count, glm::vec2 atlas_per_met
   const float clear[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   glClearBufferfv(GL_COLOR, 0, clear);
   glClearBufferfv(GL_COLOR, 1, clear);
-  glUseProgram(irradiance_program_.get());
-  glProgramUniform1f(irradiance_program_.get(), kRepeat, repeat);
-  glProgramUniform1f(irradiance_program_.get(), kAtlasSize, static_cast<float>(size_));
+  const GLuint irradiance = irradiance_programs_.get(shading);
+  glUseProgram(irradiance);
+  glProgramUniform1f(irradiance, kRepeat, repeat);
+  glProgramUniform1f(irradiance, kAtlasSize, static_cast<float>(size_));
   glBindVertexArray(vao);
   glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, nullptr);
   // The blurs read the stretch map: it must not stay attached while they draw.

@@ -8,8 +8,10 @@
 
 #include <array>
 #include <glm/glm.hpp>
+#include <string>
 
 #include "vis/gl/objects.hpp"
+#include "vis/gl/program_variants.hpp"
 
 namespace clothlab::vis {
 
@@ -26,7 +28,9 @@ class DiffusionPass {
   // bound; leaves its own framebuffer bound. The blurs are as wide in metres of the cloth as it
   // is now, stretched or not (a stretch map from the irradiance pass); atlas_per_metre serves
   // only outside the cloth, where the blurs dilate its border.
-  void run(GLuint vao, GLsizei index_count, glm::vec2 atlas_per_metre, float repeat);
+  // `shading`: the irradiance shader's variant (ShadingVariant::defines).
+  void run(GLuint vao, GLsizei index_count, glm::vec2 atlas_per_metre, float repeat,
+           const std::string& shading);
   // Binds the three blurs to units 10, 11 and 12 (shaders/cloth.frag).
   void bind_results() const;
   int size() const { return size_; }
@@ -36,7 +40,8 @@ class DiffusionPass {
   void blur(const Texture& source, const Texture& target, float sigma);
 
   int size_;
-  Program irradiance_program_, blur_program_;
+  ProgramVariants irradiance_programs_;
+  Program blur_program_;
   Framebuffer fbo_;
   Texture irradiance_, stretch_, temp_;
   std::array<Texture, 3> blurred_;

@@ -2,6 +2,7 @@
 
 #include "vis/gl/program.hpp"
 #include "vis/gl/uploads.hpp"
+#include "vis/render/shading_variant.hpp"
 #include "vis/textures/floor_texture.hpp"
 
 namespace clothlab::vis {
@@ -13,15 +14,16 @@ constexpr GLint kFloorHalfSize = 0, kFloorTileSize = 1;
 }  // namespace
 
 FloorPass::FloorPass()
-    : program_(build_program({"floor.vert", "floor.frag"})),
+    : programs_({"floor.vert", "floor.frag"}, ShadingVariant{}.defines()),
       tiles_(upload_texture(make_floor_texture())) {
   glObjectLabel(GL_TEXTURE, tiles_.get(), -1, "floor tiles");
 }
 
-void FloorPass::draw(const ViewSettings& view, GLuint empty_vao) const {
-  glUseProgram(program_.get());
-  glProgramUniform1f(program_.get(), kFloorHalfSize, view.floor_half_size);
-  glProgramUniform1f(program_.get(), kFloorTileSize, view.floor_tile_size);
+void FloorPass::draw(const ViewSettings& view, GLuint empty_vao, const std::string& shading) {
+  const GLuint program = programs_.get(shading);
+  glUseProgram(program);
+  glProgramUniform1f(program, kFloorHalfSize, view.floor_half_size);
+  glProgramUniform1f(program, kFloorTileSize, view.floor_tile_size);
   glBindTextureUnit(0, tiles_.get());
   glBindVertexArray(empty_vao);
   glDrawArrays(GL_TRIANGLES, 0, 6);

@@ -2,7 +2,10 @@
 // (shaders/floor.vert, floor.frag). Needs a current GL 4.5 context.
 #pragma once
 
+#include <string>
+
 #include "vis/gl/objects.hpp"
+#include "vis/gl/program_variants.hpp"
 #include "vis/render/view_settings.hpp"
 
 namespace clothlab::vis {
@@ -10,11 +13,12 @@ namespace clothlab::vis {
 class FloorPass {
  public:
   FloorPass();
-  // Draws into the bound framebuffer (the Frame block bound, depth test on).
-  void draw(const ViewSettings& view, GLuint empty_vao) const;
+  // Draws into the bound framebuffer (the Frame block bound, depth test on), lit by the shading
+  // variant's shader (ShadingVariant::defines).
+  void draw(const ViewSettings& view, GLuint empty_vao, const std::string& shading);
 
  private:
-  Program program_;
+  ProgramVariants programs_;
   Texture tiles_;
 };
 

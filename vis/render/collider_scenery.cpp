@@ -10,6 +10,7 @@
 #include "vis/meshes/shapes.hpp"
 #include "vis/passes/shadow_pass.hpp"
 #include "vis/render/floor_collider.hpp"
+#include "vis/render/shading_variant.hpp"
 
 namespace clothlab::vis {
 namespace {
@@ -76,7 +77,8 @@ glm::mat4 model_matrix(const ColliderPose& pose) {
 
 }  // namespace
 
-ColliderScenery::ColliderScenery() : program_(build_program({"object.vert", "object.frag"})) {}
+ColliderScenery::ColliderScenery()
+    : programs_({"object.vert", "object.frag"}, ShadingVariant{}.defines()) {}
 
 void ColliderScenery::set_colliders(const std::vector<ColliderSpec>& colliders,
                                     const Solver& solver) {
@@ -127,13 +129,14 @@ void ColliderScenery::update(double t) {
   }
 }
 
-void ColliderScenery::draw() const {
+void ColliderScenery::draw(const std::string& shading) {
   if (objects_.empty()) return;
-  glUseProgram(program_.get());
-  glProgramUniform3f(program_.get(), kColor, kColliderColor.r, kColliderColor.g, kColliderColor.b);
+  const GLuint program = programs_.get(shading);
+  glUseProgram(program);
+  glProgramUniform3f(program, kColor, kColliderColor.r, kColliderColor.g, kColliderColor.b);
   glEnable(GL_CULL_FACE);  // closed meshes; planes have a face for each side
   for (const Object& o : objects_) {
-    glProgramUniformMatrix4fv(program_.get(), kModel, 1, GL_FALSE, &o.model[0][0]);
+    glProgramUniformMatrix4fv(program, kModel, 1, GL_FALSE, &o.model[0][0]);
     glBindVertexArray(o.mesh.vao.get());
     glDrawElements(GL_TRIANGLES, o.mesh.indices, GL_UNSIGNED_INT, nullptr);
   }

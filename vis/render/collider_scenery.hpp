@@ -6,11 +6,13 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <string>
 #include <vector>
 
 #include "sim/contact/collider.hpp"
 #include "sim/scene/collider_spec.hpp"
 #include "vis/gl/objects.hpp"
+#include "vis/gl/program_variants.hpp"
 #include "vis/render/gpu_mesh.hpp"
 
 namespace clothlab {
@@ -34,7 +36,7 @@ class ColliderScenery {
   // Model matrices and bounds at time t (s); allocates nothing (every frame).
   void update(double t);
   // Main pass (the Frame block and the shadow map bound).
-  void draw() const;
+  void draw(const std::string& shading);  // lit by ShadingVariant::defines()
   void draw_shadow(ShadowPass& pass) const;
 
   std::size_t object_count() const { return objects_.size(); }
@@ -55,7 +57,7 @@ class ColliderScenery {
     glm::mat4 model{1.0f};
   };
 
-  Program program_;
+  ProgramVariants programs_;
   std::vector<Object> objects_;
   bool bounded_ = false;
   glm::vec3 lo_{0.0f}, hi_{0.0f};

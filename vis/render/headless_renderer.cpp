@@ -3,6 +3,7 @@
 #include "sim/solver.hpp"
 #include "vis/overlay/headless_overlay.hpp"
 #include "vis/overlay/legends.hpp"
+#include "vis/render/render_quality.hpp"
 
 namespace clothlab::vis {
 
@@ -10,6 +11,8 @@ HeadlessRenderer::HeadlessRenderer(int width, int height) : target_(width, heigh
 HeadlessRenderer::~HeadlessRenderer() = default;
 
 void HeadlessRenderer::draw(Solver& solver, const ViewSettings& view) {
+  const int samples = msaa_samples(renderer_.quality(view), view.mode);
+  if (samples != target_.samples()) target_ = OffscreenTarget(width(), height(), samples);
   renderer_.update_cloth(solver);
   diagnostics_.update(solver, view, renderer_);
   target_.bind();

@@ -1,5 +1,7 @@
 #include "vis/render/renderer.hpp"
 
+#include <algorithm>
+
 #include "sim/solver.hpp"
 #include "vis/colormap/colormap_texture.hpp"
 #include "vis/gl/program.hpp"
@@ -7,7 +9,9 @@
 #include "vis/passes/shadow_pass.hpp"
 #include "vis/passes/sky_pass.hpp"
 #include "vis/render/collider_scenery.hpp"
+#include "vis/render/render_quality.hpp"
 #include "vis/render/scenery.hpp"
+#include "vis/render/shading_variant.hpp"
 
 namespace clothlab::vis {
 namespace {
@@ -51,6 +55,7 @@ FrameBlock make_frame(const ViewSettings& view, const LightRig& light, int width
 Renderer::Renderer()
     : depth_view_program_(build_program({"depth_view.vert", "depth_view.frag"})),
       scenery_(std::make_unique<Scenery>()),
+      gl_renderer_(reinterpret_cast<const char*>(glGetString(GL_RENDERER))),
       frame_ubo_(make_buffer()),
       empty_vao_(make_vertex_array()) {
   glNamedBufferStorage(frame_ubo_.get(), sizeof(FrameBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -58,6 +63,10 @@ Renderer::Renderer()
 }
 
 Renderer::~Renderer() = default;
+
+RenderQuality Renderer::quality(const ViewSettings& view) const {
+  return resolve_quality(view.quality, gl_renderer_);
+}
 
 void Renderer::enable_pass_timing(bool on) {
   if (on && !timer_) timer_ = std::make_unique<PassTimer>();
@@ -93,7 +102,16 @@ void Renderer::set_normal_map(const Image* map) {
   cloth_pass_.set_normal_map(map);
 }
 
+// render.quality fast draws with maps of half the size: the shadow map (its kernel keeps its
+// width in the world: 0.75 of its texels, shaders/lighting.glsl) and mode 6's diffusion atlas.
 void Renderer::draw(const ViewSettings& view, int width, int height) {
+  if (quality(view) != RenderQuality::fast) return draw_at(view, false, width, height);
+  ViewSettings half = view;
+  half.shadow_map_size = shadow_map_texels(RenderQuality::fast, view.shadow_map_size);
+  draw_at(half, true, width, height);
+}
+
+void Renderer::draw_at(const ViewSettings& view, bool fast, int width, int height) {
   GLint target = 0;  // the caller's framebuffer: the shadow pass binds its own first
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
   const bool depth_view = view.mode == DisplayMode::light_depth;
@@ -103,6 +121,8 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
   const bool translucent =
       view.mode == DisplayMode::translucent && view.shadows != ShadowFilter::none;
   const glm::mat4 view_proj = upload_frame(view, width, height, translucent);
+  const ShadingVariant variant{shadows ? view.shadows : ShadowFilter::none, translucent, fast};
+  const std::string shading = variant.defines();
   if (shadows) {
     if (timer_) timer_->begin(Pass::shadow);
     draw_shadow_map(view, translucent);
@@ -110,7 +130,7 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
   } else {
     shadow_.reset();  // nothing needs the map: its memory goes too
   }
-  const bool subsurface = run_diffusion(view);
+  const bool subsurface = run_diffusion(view, shading, fast);
   if (timer_) timer_->begin(Pass::scene);
   // The main pass draws into what the caller bound (the shadow pass bound its own).
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
@@ -125,18 +145,25 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
   glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
   if (depth_view) return draw_depth_view(width, height);
 
-  floor_.draw(view, empty_vao_.get());
-  scenery_->draw();
-  if (colliders_) colliders_->draw();
+  // The opaque surfaces before the floor, which covers most of the image: the depth test then
+  // skips the floor behind them, and a CPU renderer shades only what it keeps. The translucent
+  // cloth (mode 5) goes last, over everything opaque and the sky.
+  scenery_->draw(shading);
+  if (colliders_) colliders_->draw(shading);
   const bool blended_cloth = view.mode == DisplayMode::translucent;
-  if (blended_cloth) draw_sky(view, view_proj, centre);  // behind the translucent cloth
+  if (!blended_cloth) draw_cloth(view, shading, subsurface);
+  floor_.draw(view, empty_vao_.get(), shading);
+  draw_sky(view, view_proj, centre);
+  if (blended_cloth) draw_cloth(view, shading, subsurface);
+  glBindVertexArray(0);
+}
+
+void Renderer::draw_cloth(const ViewSettings& view, const std::string& shading, bool subsurface) {
   if (view.mode == DisplayMode::springs)
     springs_.draw(cloth_);
   else
     cloth_pass_.draw(view, cloth_, scalar_range_, colormap_texture(view.color.map),
-                     subsurface ? diffusion_.get() : nullptr);
-  glBindVertexArray(0);
-  if (!blended_cloth) draw_sky(view, view_proj, centre);
+                     subsurface ? diffusion_.get() : nullptr, shading);
 }
 
 // The light fitted to the casters it must see: the cloth, the scenery and the colliders (planes
@@ -165,7 +192,7 @@ glm::mat4 Renderer::upload_frame(const ViewSettings& view, int width, int height
 }
 
 // Mode 6's light through the yarn: its own passes before the main one. Returns whether they ran.
-bool Renderer::run_diffusion(const ViewSettings& view) {
+bool Renderer::run_diffusion(const ViewSettings& view, const std::string& shading, bool fast) {
   const bool subsurface = view.mode == DisplayMode::weave && view.look.subsurface > 0.0 &&
                           cloth_.triangle_indices() > 0;
   if (!subsurface) {
@@ -173,11 +200,13 @@ bool Renderer::run_diffusion(const ViewSettings& view) {
     return false;
   }
   if (timer_) timer_->begin(Pass::diffusion);
-  if (!diffusion_) diffusion_ = std::make_unique<DiffusionPass>();
+  const int atlas = diffusion_atlas_texels(fast ? RenderQuality::fast : RenderQuality::full);
+  if (!diffusion_ || diffusion_->size() != atlas)
+    diffusion_ = std::make_unique<DiffusionPass>(atlas);
   cloth_.update_tangents();
   cloth_pass_.bind_weave(view.look.bump);
   diffusion_->run(cloth_.cloth_vao(), cloth_.triangle_indices(), cloth_.atlas_per_metre(),
-                  view.fabric_repeat);
+                  view.fabric_repeat, shading);
   return true;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <memory>
+#include <string>
 
 #include "sim/model/model.hpp"
 #include "sim/scene/collider_spec.hpp"
@@ -61,6 +62,9 @@ class Renderer {
   // Draws the scene into the bound framebuffer of the given size: first the shadow map when
   // the view needs one (a shadow filter, or key 7), then the view.
   void draw(const ViewSettings& view, int width, int height);
+  // view.quality for this context's GL renderer: full or fast (render_quality.hpp).
+  RenderQuality quality(const ViewSettings& view) const;
+  const std::string& gl_renderer() const { return gl_renderer_; }
   // Time per pass (benchmarks): on, draw() brackets its passes (vis/gl/pass_timer.hpp).
   void enable_pass_timing(bool on);
   PassTimer* pass_timer() { return timer_.get(); }
@@ -96,7 +100,9 @@ class Renderer {
  private:
   glm::vec3 fit_light_to_casters(const ViewSettings& view);
   glm::mat4 upload_frame(const ViewSettings& view, int width, int height, bool translucent);
-  bool run_diffusion(const ViewSettings& view);
+  void draw_at(const ViewSettings& view, bool fast, int width, int height);
+  void draw_cloth(const ViewSettings& view, const std::string& shading, bool subsurface);
+  bool run_diffusion(const ViewSettings& view, const std::string& shading, bool fast);
   void draw_depth_view(int width, int height);
   void draw_shadow_map(const ViewSettings& view, bool translucent);
   void draw_shadow_casters();
@@ -114,6 +120,7 @@ class Renderer {
   std::unique_ptr<Scenery> scenery_;
   std::unique_ptr<ColliderScenery> colliders_;  // only while the scene has colliders
   LightRig light_;
+  std::string gl_renderer_;  // GL_RENDERER of this context
   Buffer frame_ubo_;
   ScalarRange scalar_range_;
   std::array<Texture, kAllColorMaps.size()> colormaps_;

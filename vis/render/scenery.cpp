@@ -11,6 +11,7 @@
 #include "vis/meshes/shapes.hpp"
 #include "vis/passes/shadow_pass.hpp"
 #include "vis/render/gpu_mesh.hpp"
+#include "vis/render/shading_variant.hpp"
 
 namespace clothlab::vis {
 namespace {
@@ -38,7 +39,7 @@ glm::mat4 rotate_x_to(glm::vec3 d) {
 
 }  // namespace
 
-Scenery::Scenery() : program_(build_program({"object.vert", "object.frag"})) {}
+Scenery::Scenery() : programs_({"object.vert", "object.frag"}, ShadingVariant{}.defines()) {}
 
 void Scenery::add(const Mesh& mesh, const glm::mat4& model, glm::vec3 color) {
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
@@ -109,13 +110,14 @@ void Scenery::set_scene(const RenderSpec& spec, const SolverState& solver) {
   }
 }
 
-void Scenery::draw() const {
+void Scenery::draw(const std::string& shading) {
   if (objects_.empty()) return;
-  glUseProgram(program_.get());
+  const GLuint program = programs_.get(shading);
+  glUseProgram(program);
   glEnable(GL_CULL_FACE);  // closed meshes
   for (const Object& o : objects_) {
-    glProgramUniformMatrix4fv(program_.get(), kModel, 1, GL_FALSE, &o.model[0][0]);
-    glProgramUniform3f(program_.get(), kColor, o.color.r, o.color.g, o.color.b);
+    glProgramUniformMatrix4fv(program, kModel, 1, GL_FALSE, &o.model[0][0]);
+    glProgramUniform3f(program, kColor, o.color.r, o.color.g, o.color.b);
     glBindVertexArray(o.mesh.vao.get());
     glDrawElements(GL_TRIANGLES, o.mesh.indices, GL_UNSIGNED_INT, nullptr);
   }

@@ -4,10 +4,12 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <string>
 #include <vector>
 
 #include "sim/scene/render_spec.hpp"
 #include "vis/gl/objects.hpp"
+#include "vis/gl/program_variants.hpp"
 #include "vis/render/gpu_mesh.hpp"
 
 namespace clothlab {
@@ -27,7 +29,7 @@ class Scenery {
   // pins lie on a line) and the meshes of `spec`.
   void set_scene(const RenderSpec& spec, const SolverState& solver);
   // Main pass (the Frame block and the shadow map bound).
-  void draw() const;
+  void draw(const std::string& shading);  // lit by ShadingVariant::defines()
   void draw_shadow(ShadowPass& pass) const;
 
   bool empty() const { return objects_.empty(); }
@@ -44,7 +46,7 @@ class Scenery {
   };
   void add(const Mesh& mesh, const glm::mat4& model, glm::vec3 color);
 
-  Program program_;
+  ProgramVariants programs_;
   std::vector<Object> objects_;
   glm::vec3 lo_{0.0f}, hi_{0.0f};
 };

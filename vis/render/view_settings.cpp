@@ -119,6 +119,7 @@ ViewSettings scene_view(const Scene& scene, const SolverState& solver) {
   if (r.camera.distance) s.camera.distance = static_cast<float>(*r.camera.distance);
   s.mode = static_cast<DisplayMode>(r.mode);
   s.shadows = r.shadows;
+  s.quality = r.quality;
   s.shadow_map_size = r.shadow_map_size;
   s.sky = r.sky.enabled;
   s.sky_turbidity = static_cast<float>(r.sky.turbidity);

@@ -92,6 +92,9 @@ struct ScientificViews {
 
 struct ViewSettings : ScientificViews {
   DisplayMode mode = DisplayMode::lambert;
+  // render.quality as the scene says it; the renderer resolves automatic for its GL renderer
+  // (vis/render/render_quality.hpp).
+  RenderQuality quality = RenderQuality::automatic;
   OrbitCamera camera;
   // The scene's light ([render.light]): a spot at light_position aimed at light_target (the
   // scene's centre when unset), or a directional light travelling along light_direction.
