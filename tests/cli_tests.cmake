@@ -220,9 +220,14 @@ clothlab_cli_test(trace.bad_set 2 "--set cloth\\.resolution=\\[0,4\\]: cloth\\.r
 # sanitizers they run with the GL tests' environment (tests/CMakeLists.txt); render re-executes
 # itself with a passive OpenMP wait policy.
 clothlab_cli_test(render.small 0
-  "render: 3 frames of 64x48 \\(mode 1\\) on .*ms/frame simulation .*ms/frame rendering"
+  "render: 3 frames of 64x48 \\(mode 1, quality (full|fast) \\(auto\\)\\) on .*ms/frame simulation .*ms/frame rendering"
   render ${CLOTHLAB_DEFAULT_SCENE} --frames 3 --size 64x48 --mode 1 --quiet
   --out ${CLOTHLAB_TRACE_OUT}/render_small)
+clothlab_cli_test(render.quality_set 0 "quality full\\) on "
+  render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 64x48 --quiet --set render.quality=\"full\"
+  --out ${CLOTHLAB_TRACE_OUT}/render_full)
+clothlab_cli_test(render.nothing_to_write 2 "nothing to write: give --out DIR"
+  render ${CLOTHLAB_DEFAULT_SCENE} --frames 2)
 clothlab_cli_test(render.bad_size 2 "--size: must be WxH"
   render ${CLOTHLAB_DEFAULT_SCENE} --size 64 --out ${CLOTHLAB_TRACE_OUT}/render_bad)
 clothlab_cli_test(render.bad_mode 2 "--mode: Value 8 not in range"

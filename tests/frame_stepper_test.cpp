@@ -19,7 +19,8 @@ Scene hanging() {
 }
 
 // Runs `seconds` of a fake clock at `fps` frames per second, with a little jitter in the frame
-// times (as a real display has) that still adds up to the same total.
+// times (as a real display has) that still adds up to the same total; the solver's steps cost
+// 10 us each (far below its share of any of these frames).
 std::unique_ptr<Solver> run_at(double fps, double seconds) {
   auto solver = make_solver(hanging());
   const FrameStepper stepper;
@@ -27,7 +28,8 @@ std::unique_ptr<Solver> run_at(double fps, double seconds) {
   double clock = 0.0, last = 0.0;
   for (int f = 1; f <= frames; ++f) {
     clock = f / fps + (f < frames ? 0.2 / fps * ((f % 3) - 1) : 0.0);
-    const FrameAdvance a = stepper.advance(*solver, clock - last);
+    const double wall = clock - last;
+    const FrameAdvance a = stepper.advance(*solver, wall, stepper.cap(wall, 1e-5, solver->dt()));
     EXPECT_FALSE(a.capped);
     last = clock;
   }
@@ -42,18 +44,48 @@ TEST(FrameStepper, ThirtyAndHundredFortyFourFramesPerSecondGiveTheSameMotion) {
   EXPECT_NE(slow->position(143), hanging().cloths[0].origin);  // it did move
 }
 
-TEST(FrameStepper, SlowFramesAreCappedAndReportTheDroppedTime) {
+// A frame of a whole second (a software renderer drawing slowly) still gets every step real
+// time asks for when the solver is cheap: its speed never depends on the drawing's.
+TEST(FrameStepper, ASlowFrameWithCheapStepsKeepsRealTime) {
+  const auto owner = make_solver(hanging());  // dt = 0.5 ms
+  const FrameStepper stepper;
+  const FrameCap cap = stepper.cap(1.0, 1e-6, owner->dt());  // 1 us per step: 2 ms of work
+  const FrameAdvance a = stepper.advance(*owner, 1.0, cap);
+  EXPECT_FALSE(a.capped);
+  EXPECT_EQ(a.steps, 2000);
+  EXPECT_EQ(a.dropped_seconds, 0.0);
+}
+
+// A solver slower than its share of real time takes half the frame's wall time and no more,
+// and the frame says that the solver held it back.
+TEST(FrameStepper, ASolverSlowerThanRealTimeIsCappedAndSaysSo) {
   const auto owner = make_solver(hanging());
   Solver& solver = *owner;
-  const FrameStepper stepper(100);
-  const FrameAdvance a = stepper.advance(solver, 0.2);  // asks for 400 steps
+  const FrameStepper stepper;
+  // 1 ms per 0.5 ms step (half real time); a 0.1 s frame: 0.05 s of solver time, 50 steps.
+  const FrameAdvance a = stepper.advance(solver, 0.1, stepper.cap(0.1, 1e-3, solver.dt()));
   EXPECT_TRUE(a.capped);
-  EXPECT_EQ(a.steps, 100);
-  EXPECT_NEAR(a.dropped_seconds, 0.15, 1e-12);
-  const FrameAdvance paused = stepper.advance(solver, 0.2, 1.0, true);
-  EXPECT_EQ(paused.steps, 0);
-  const FrameAdvance slow_motion = stepper.advance(solver, 0.02, 0.25);  // 5 ms simulated
-  EXPECT_EQ(slow_motion.steps, 10);
+  EXPECT_EQ(a.limit, FrameLimit::solver);
+  EXPECT_EQ(a.steps, 50);
+  EXPECT_NEAR(a.dropped_seconds, 0.075, 1e-12);
+  // A new solver's cost is not known: one step, to measure it.
+  const FrameAdvance first = stepper.advance(solver, 0.1, stepper.cap(0.1, 0.0, solver.dt()));
+  EXPECT_EQ(first.limit, FrameLimit::unknown);
+  EXPECT_EQ(first.steps, 1);
+  // After a stall of 10 s the frame makes up for 2 s, no more.
+  const FrameAdvance stalled = stepper.advance(solver, 10.0, stepper.cap(10.0, 1e-6, solver.dt()));
+  EXPECT_EQ(stalled.limit, FrameLimit::stall);
+  EXPECT_EQ(stalled.steps, 4000);
+  EXPECT_NEAR(stalled.dropped_seconds, 8.0, 1e-12);
+}
+
+TEST(FrameStepper, PausedAndSlowMotion) {
+  const auto owner = make_solver(hanging());
+  Solver& solver = *owner;
+  const FrameStepper stepper;
+  const FrameCap cap = stepper.cap(0.2, 1e-6, solver.dt());
+  EXPECT_EQ(stepper.advance(solver, 0.2, cap, true).steps, 0);
+  EXPECT_EQ(stepper.advance(solver, 0.02 * 0.25, cap).steps, 10);  // 5 ms simulated
 }
 
 }  // namespace

@@ -105,7 +105,7 @@ Image check_golden(vis::HeadlessRenderer& renderer, Solver& solver, const vis::V
   actual.rgba = renderer.render(solver, view);
   const fs::path golden_path = fs::path(CLOTHLAB_SOURCE_DIR) / "tests" / "golden" / (name + ".png");
   if (const char* update = std::getenv("CLOTHLAB_UPDATE_GOLDEN"); update && *update == '1') {
-    write_png(actual, golden_path.string());
+    write_png(actual, golden_path.string(), PngCompression::small);  // kept in the repository
     std::printf("regenerated %s\n", golden_path.c_str());
     return actual;
   }

@@ -131,11 +131,11 @@ TEST(MusicClock, ALargeGapIsCappedByTheStepperAndTheMusicWaitsForTheSimulation) 
   scene.cloths[0].pins = {{0, 0}, {5, 0}};
   const auto solver_owner = testing::solver<double>(scene);
   Solver& solver = *solver_owner;
-  const FrameStepper stepper(400);
+  const FrameStepper stepper;
+  const FrameCap cap{400 * solver.dt(), FrameLimit::solver};
   MusicClock live = started();
-  const MusicPlan big =
-      live.plan(at(2.0, solver.time()), kFrame, stepper.max_steps_per_frame() * solver.dt());
-  const FrameAdvance a = stepper.advance(solver, big.advance);
+  const MusicPlan big = live.plan(at(2.0, solver.time()), kFrame, cap.seconds);
+  const FrameAdvance a = stepper.advance(solver, big.advance, cap);
   EXPECT_TRUE(a.capped);
   EXPECT_EQ(a.steps, 400);
   ASSERT_TRUE(big.seek);

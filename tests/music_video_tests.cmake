@@ -12,14 +12,18 @@ endif()
 set(CLOTHLAB_VIDEO_OUT ${CMAKE_CURRENT_BINARY_DIR}/music_video)
 file(MAKE_DIRECTORY ${CLOTHLAB_VIDEO_OUT})
 
-# clothlab_video_test(NAME SCENE AUDIO REGEX): renders 30 frames of SCENE at 30 fps into
+# clothlab_video_test(NAME SCENE AUDIO FRAMES REGEX): renders 30 frames of SCENE at 30 fps into
 # NAME_test.mp4 (summary matching REGEX), then checks 1 s of video and, with AUDIO=ON, as much
 # audio.
-function(clothlab_video_test name scene audio regex)
+# With FRAMES=ON the PNG frames are written too (--out), else the video alone.
+function(clothlab_video_test name scene audio frames regex)
   set(video ${CMAKE_CURRENT_BINARY_DIR}/${name}_test.mp4)
+  set(out)
+  if(frames)
+    set(out --out ${CLOTHLAB_VIDEO_OUT}/${name})
+  endif()
   clothlab_cli_test(render.video_${name} 0 "${regex}"
-    render ${scene} --frames 30 --fps 30 --size 160x120 --quiet
-    --out ${CLOTHLAB_VIDEO_OUT}/${name} --video ${video})
+    render ${scene} --frames 30 --fps 30 --size 160x120 --quiet ${out} --video ${video})
   add_test(NAME cli.render.video_${name}_streams
     COMMAND ${CMAKE_COMMAND} -DFFPROBE=${FFPROBE} -DFILE=${video} -DDURATION=1 -DFPS=30
       -DAUDIO=${audio} -P ${CMAKE_CURRENT_LIST_DIR}/check_video.cmake)
@@ -29,9 +33,11 @@ function(clothlab_video_test name scene audio regex)
     FIXTURES_REQUIRED video_${name} LABELS video)
 endfunction()
 
-clothlab_video_test(dance ${PROJECT_SOURCE_DIR}/scenes/dance.toml ON
-  "dance_test\\.mp4 with music: generated drum track")
-clothlab_video_test(silent ${CLOTHLAB_DEFAULT_SCENE} OFF "and [^ ]*silent_test\\.mp4")
+clothlab_video_test(dance ${PROJECT_SOURCE_DIR}/scenes/dance.toml ON ON
+  "and [^ ]*dance_test\\.mp4 with music: generated drum track")
+# The video alone: the summary names no frame directory.
+clothlab_video_test(silent ${CLOTHLAB_DEFAULT_SCENE} OFF OFF
+  "ms/frame writing; [^ ]*silent_test\\.mp4")
 
 # --music-out: the scene's generated 40 s drum track as 16-bit mono WAV at 44.1 kHz (44-byte
 # header + 40 * 44100 * 2 bytes), and a scene without music is refused.

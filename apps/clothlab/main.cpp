@@ -167,8 +167,11 @@ CLI::App* add_render(CLI::App& app, RenderCli& cli) {
           "WxH"));
   render_cmd->add_option("--fps", render.fps, "frames per simulated second")
       ->check(CLI::Range(1.0, 10000.0));
-  render_cmd->add_option("--out", render.out, "directory for the numbered PNGs")->required();
-  render_cmd->add_option("--video", render.video, "also write an MP4 (Debian's ffmpeg)");
+  render_cmd->add_option("--out", render.out,
+                         "directory for the numbered PNGs (at least one of --out and --video)");
+  render_cmd->add_option("--video", render.video,
+                         "an MP4 through Debian's ffmpeg: the frames go straight to it, and to "
+                         "PNGs only with --out as well");
   render_cmd->add_option("--music-out", render.music_out,
                          "also write the scene's [music] (e.g. its generated drum track) as WAV");
   render_cmd->add_flag("--quiet", render.quiet, "no progress bar");
@@ -188,6 +191,12 @@ CLI::App* add_render(CLI::App& app, RenderCli& cli) {
 // The image size, and --probe checked against it (known only once --size is parsed).
 int run_render_cli(RenderCli& cli) {
   RenderArgs& render = cli.args;
+  if (render.out.empty() && render.video.empty()) {
+    std::fprintf(stderr,
+                 "clothlab render: nothing to write: give --out DIR for PNG frames, --video "
+                 "FILE.mp4 for a video, or both\n");
+    return kBadInput;
+  }
   std::sscanf(cli.size.c_str(), "%dx%d", &render.width, &render.height);
   // --probe is checked against the image size, known only once --size is parsed.
   if (*cli.probe_opt) {

@@ -1,6 +1,6 @@
-// `clothlab render`: the scene headless through EGL, one PNG per frame (and an MP4 with
-// --video), with a progress bar and a summary that splits the frame time into simulation and
-// rendering.
+// `clothlab render`: the scene headless through EGL, one PNG per frame with --out and an MP4
+// with --video (its frames go straight to ffmpeg), with a progress bar and a summary that splits
+// the frame time into simulation, rendering and writing.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -121,7 +121,7 @@ FrameTimes render_frames(const RenderArgs& args, Solver& solver, vis::HeadlessRe
     image.rgba = renderer.render(solver, view);
     t.draw += seconds_since(t0);
     t0 = Clock::now();
-    write_png(image, frame_path(args.out, frame));
+    if (!args.out.empty()) write_png(image, frame_path(args.out, frame));
     if (video) video->write(image.rgba);
     t.output += seconds_since(t0);
     progress.update(frame + 1);
@@ -149,14 +149,19 @@ void print_summary(const RenderArgs& args, const FrameTimes& t, const Solver& so
                    const vis::HeadlessRenderer& renderer, const vis::ViewSettings& view,
                    const MusicTrack* music) {
   const double frames = args.frames;
+  const RenderQuality quality = renderer.renderer().quality(view);
+  const std::string chosen = view.quality == RenderQuality::automatic
+                                 ? std::string(to_string(quality)) + " (auto)"
+                                 : std::string(to_string(quality));
+  const std::string written =
+      args.out + (args.out.empty() || args.video.empty() ? "" : " and ") + args.video;
   std::printf(
-      "render: %d frames of %dx%d (mode %d) on %s: %.2f ms/frame simulation (%.1f steps of "
-      "%g s on the %s), %.2f ms/frame rendering, %.2f ms/frame writing; %s%s%s%s%s\n",
-      args.frames, args.width, args.height, static_cast<int>(view.mode),
+      "render: %d frames of %dx%d (mode %d, quality %s) on %s: %.2f ms/frame simulation (%.1f "
+      "steps of %g s on the %s), %.2f ms/frame rendering, %.2f ms/frame writing; %s%s%s\n",
+      args.frames, args.width, args.height, static_cast<int>(view.mode), chosen.c_str(),
       renderer.gl_renderer().c_str(), 1e3 * t.simulate / frames,
       frames > 1 ? double(t.steps) / (frames - 1) : 0.0, solver.dt(), backend_name(solver),
-      1e3 * t.draw / frames, 1e3 * t.output / frames, args.out.c_str(),
-      args.video.empty() ? "" : " and ", args.video.c_str(), music ? " with music: " : "",
+      1e3 * t.draw / frames, 1e3 * t.output / frames, written.c_str(), music ? " with music: " : "",
       music ? music->source.c_str() : "");
 }
 
@@ -193,8 +198,8 @@ int run_render(const RenderArgs& args) {
   std::optional<Scene> loaded = load_scene("render", args.scene, args.overrides);
   if (!loaded) return kBadInput;
   std::error_code ec;
-  std::filesystem::create_directories(args.out, ec);
-  if (ec || !std::filesystem::is_directory(args.out)) {
+  if (!args.out.empty()) std::filesystem::create_directories(args.out, ec);
+  if (!args.out.empty() && (ec || !std::filesystem::is_directory(args.out))) {
     std::fprintf(stderr, "clothlab render: --out: cannot create directory '%s'\n",
                  args.out.c_str());
     return 2;

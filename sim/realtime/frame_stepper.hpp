@@ -1,39 +1,77 @@
 // Real time for an interactive view: each frame advances the solver by the wall-clock time since
 // the previous frame, in whole fixed steps (the solver carries the remainder), so the motion is
-// the same at 30 and at 144 frames per second. When the machine cannot keep up, a frame runs at
-// most max_steps_per_frame steps and drops the rest of the time (reported, so the view can warn)
-// instead of falling ever further behind.
+// the same at 30 and at 144 frames per second, and on a machine that draws a frame a second it
+// is still real time. A frame may give the solver at most a share of its wall time (kSolverShare;
+// the rest is the drawing's): only a solver slower than that share of real time slows the
+// simulation down, and the frame then says so (FrameLimit::solver). How long the drawing takes
+// never does. A frame that comes after a stall (longer than kMaxFrameSeconds: the window moved,
+// a debugger paused it) makes up for no more than that.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <optional>
 
 #include "sim/solver.hpp"
 
 namespace clothlab {
 
+// What held a frame's simulation back.
+enum class FrameLimit {
+  none,     // every step real time asked for was taken
+  solver,   // the solver is slower than its share of real time: it took its share, no more
+  unknown,  // the solver's cost is not known yet (a new solver): one step, to measure it
+  stall,    // the frame came after a stall: the time beyond kMaxFrameSeconds is dropped
+};
+
+// The most simulated time a frame may advance, and what sets that bound.
+struct FrameCap {
+  double seconds = std::numeric_limits<double>::infinity();
+  FrameLimit limit = FrameLimit::none;
+  static FrameCap unlimited() { return {}; }
+};
+
 struct FrameAdvance {
-  long steps = 0;                // steps taken this frame
-  bool capped = false;           // real time asked for more than the cap
-  double dropped_seconds = 0.0;  // simulated time given up this frame
+  long steps = 0;                       // steps taken this frame
+  bool capped = false;                  // real time asked for more than the cap
+  FrameLimit limit = FrameLimit::none;  // what capped it
+  double dropped_seconds = 0.0;         // simulated time given up this frame
   std::optional<Divergence> divergence;
 };
 
 class FrameStepper {
  public:
-  explicit FrameStepper(long max_steps_per_frame = 400) : max_steps_(max_steps_per_frame) {}
+  static constexpr double kSolverShare = 0.5;      // of a frame's wall time
+  static constexpr double kMaxFrameSeconds = 2.0;  // of wall time one frame makes up for
 
-  // wall_seconds: time since the previous frame; time_scale: simulated seconds per real second
-  // (slow motion below 1). A paused view passes paused = true and steps nothing.
-  FrameAdvance advance(Solver& solver, double wall_seconds, double time_scale = 1.0,
+  explicit FrameStepper(double solver_share = kSolverShare,
+                        double max_frame_seconds = kMaxFrameSeconds)
+      : share_(solver_share), max_frame_(max_frame_seconds) {}
+
+  // The cap for a frame that came wall_seconds after the previous one, for a solver whose step
+  // of dt seconds costs seconds_per_step of wall time (0: not known yet).
+  FrameCap cap(double wall_seconds, double seconds_per_step, double dt) const {
+    const double wall = wall_seconds < max_frame_ ? wall_seconds : max_frame_;
+    double steps = 1.0;
+    if (seconds_per_step > 0.0) steps = std::max(1.0, std::floor(share_ * wall / seconds_per_step));
+    const double by_solver = steps * dt;
+    if (by_solver < max_frame_)
+      return {by_solver, seconds_per_step > 0.0 ? FrameLimit::solver : FrameLimit::unknown};
+    return {max_frame_, FrameLimit::stall};
+  }
+
+  // Advances by `request` simulated seconds (wall time times the time scale, or what the music
+  // asks for), at most cap.seconds. A paused view passes paused = true and steps nothing.
+  FrameAdvance advance(Solver& solver, double request, const FrameCap& cap,
                        bool paused = false) const {
     FrameAdvance out;
-    if (paused || !(wall_seconds > 0.0)) return out;
-    double request = wall_seconds * time_scale;
-    const double cap = static_cast<double>(max_steps_) * solver.dt();
-    if (request > cap) {
+    if (paused || !(request > 0.0)) return out;
+    if (request > cap.seconds) {
       out.capped = true;
-      out.dropped_seconds = request - cap;
-      request = cap;
+      out.limit = cap.limit;
+      out.dropped_seconds = request - cap.seconds;
+      request = cap.seconds;
     }
     const AdvanceResult r = solver.advance(request);
     out.steps = r.steps;
@@ -41,10 +79,10 @@ class FrameStepper {
     return out;
   }
 
-  long max_steps_per_frame() const { return max_steps_; }
+  double solver_share() const { return share_; }
 
  private:
-  long max_steps_;
+  double share_, max_frame_;
 };
 
 }  // namespace clothlab

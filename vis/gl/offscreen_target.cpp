@@ -42,6 +42,11 @@ void OffscreenTarget::bind() const {
   glViewport(0, 0, width_, height_);
 }
 
+void OffscreenTarget::resolve_into(GLuint framebuffer) const {
+  glBlitNamedFramebuffer(msaa_fbo_.get(), framebuffer, 0, 0, width_, height_, 0, 0, width_, height_,
+                         GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
 std::vector<std::uint8_t> OffscreenTarget::read_rgba() {
   if (samples_ > 1)
     glBlitNamedFramebuffer(msaa_fbo_.get(), resolve_fbo_.get(), 0, 0, width_, height_, 0, 0, width_,

@@ -19,6 +19,8 @@ class OffscreenTarget {
   GLuint framebuffer() const { return msaa_fbo_.get(); }
   // Resolves and reads the image: RGBA8, row 0 at the top.
   std::vector<std::uint8_t> read_rgba();
+  // Resolves (or copies) the image into `framebuffer` (a window's: 0) of the same size.
+  void resolve_into(GLuint framebuffer) const;
   int width() const { return width_; }
   int height() const { return height_; }
   int samples() const { return samples_; }

@@ -51,6 +51,7 @@ class HeadlessRenderer {
   int height() const { return target_.height(); }
   std::string gl_renderer() const { return context_.renderer(); }
   Renderer& renderer() { return renderer_; }  // e.g. to time its passes (benchmarks)
+  const Renderer& renderer() const { return renderer_; }
   // The light as the last render() placed it (its shadow-map matrices).
   const LightRig& light() const { return renderer_.light(); }
   // The colour-by range and the arrows of the last render().

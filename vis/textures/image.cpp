@@ -1,7 +1,7 @@
 #include "vis/textures/image.hpp"
 
+#include <png.h>
 #include <stb/stb_image.h>
-#include <stb/stb_image_write.h>
 
 #include <algorithm>
 #include <cmath>
@@ -31,17 +31,46 @@ void Image::set_rgb(int x, int y, float r, float g, float b) {
   p[3] = 255;
 }
 
-void write_png(const Image& image, const std::string& path) {
+namespace {
+
+// libpng reports errors by longjmp to png_jmpbuf: everything that must be released is set up
+// before that point and released on both paths.
+bool encode_png(std::FILE* file, const Image& image, PngCompression compression) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  if (!png) return false;
+  png_infop info = png_create_info_struct(png);
+  if (!info || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return false;
+  }
+  png_init_io(png, file);
+  const bool fast = compression == PngCompression::fast;
+  png_set_compression_level(png, fast ? 1 : 9);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, fast ? PNG_FILTER_SUB : PNG_ALL_FILTERS);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
+               static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGB_ALPHA,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  for (int y = 0; y < image.height; ++y) png_write_row(png, image.at(0, y));
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  return true;
+}
+
+}  // namespace
+
+void write_png(const Image& image, const std::string& path, PngCompression compression) {
   if (image.width <= 0 || image.height <= 0 ||
       image.rgba.size() != std::size_t(image.width) * std::size_t(image.height) * 4) {
     throw std::runtime_error("write_png: invalid image for '" + path + "'");
   }
   const std::string tmp = path + ".tmp";
   const TempFileGuard guard(tmp);  // removed on SIGINT / SIGTERM too
-  const int ok =
-      stbi_write_png(tmp.c_str(), image.width, image.height, 4, image.rgba.data(), image.width * 4);
+  std::FILE* file = std::fopen(tmp.c_str(), "wb");
+  bool ok = file && encode_png(file, image, compression);
+  if (file) ok = std::fclose(file) == 0 && ok;
   if (!ok) {
-    std::remove(tmp.c_str());  // stb may leave a partial file when a write fails midway
+    std::remove(tmp.c_str());  // a write that failed midway leaves a partial file
     throw std::runtime_error("write_png: cannot write '" + path + "'");
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "sim/scene/parameter_keys.hpp"
+#include "vis/render/render_quality.hpp"
 #include "vis/window/parameter_editors.hpp"
 #include "vis/window/scene_edit.hpp"
 #include "vis/window/views_panel.hpp"
@@ -65,6 +66,23 @@ bool structure_editors(Scene& draft) {
 }
 
 // Shadows: the filter and the map's size (docs/rendering.md section 6).
+// render.quality: auto says what it chose for this GL renderer.
+void quality_editor(ViewSettings& view, const std::string& gl_renderer) {
+  const RenderQuality chosen = resolve_quality(view.quality, gl_renderer);
+  const std::string shown = view.quality == RenderQuality::automatic
+                                ? std::string("auto: ") + to_string(chosen)
+                                : std::string(to_string(view.quality));
+  if (ImGui::BeginCombo("render quality", shown.c_str())) {
+    for (const auto& [quality, name] : kRenderQualityNames)
+      if (ImGui::Selectable(name, quality == view.quality)) view.quality = quality;
+    ImGui::EndCombo();
+  }
+  if (view.quality == RenderQuality::automatic) {
+    ImGui::SameLine();
+    ImGui::TextDisabled(software_renderer(gl_renderer) ? "(software renderer)" : "(GPU)");
+  }
+}
+
 void shadow_editors(ViewSettings& view) {
   if (ImGui::BeginCombo("shadows", to_string(view.shadows))) {
     for (const auto& [filter, name] : kShadowFilterNames)
@@ -134,9 +152,12 @@ void messages(const SimSession& session, const FrameStats& stats, const PanelSta
     ImGui::TextColored(kErrorColour, "Stopped. Press R to reset.");
     ImGui::PopTextWrapPos();
   }
-  if (stats.behind() && !session.paused && !session.divergence())
-    ImGui::TextColored(kWarningColour, "can't keep up: slowed to %.0f %% of real time",
-                       stats.real_time_percent());
+  if (stats.behind() && !session.paused && !session.divergence()) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(kWarningColour, "%s (the drawing is not the cause)",
+                       stats.behind_reason(session.solver().dt()).c_str());
+    ImGui::PopTextWrapPos();
+  }
   if (!state.message.empty()) ImGui::TextWrapped("%s", state.message.c_str());
 }
 
@@ -238,6 +259,7 @@ std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view
   clicked = buttons(session);
   if (const auto edited = scene_editors(session, state)) clicked = edited;
   display_mode_editor(view);
+  quality_editor(view, state.gl_renderer);
   shadow_editors(view);
   ImGui::Text("probe (8 force, 9 velocity, 0 position): %s",
               state.probe ? field_name(*state.probe) : "off");
@@ -326,10 +348,7 @@ void draw_status_overlay(const SimSession& session, const FrameStats& stats) {
     line = "Paused  (Space runs, . steps)";
     colour = ImVec4(1, 1, 1, 1);
   } else if (stats.behind()) {
-    char text[96];
-    std::snprintf(text, sizeof text, "can't keep up: slowed to %.0f %% of real time",
-                  stats.real_time_percent());
-    line = text;
+    line = stats.behind_reason(session.solver().dt());
   }
   if (line.empty()) return;
   const ImGuiViewport* viewport = ImGui::GetMainViewport();

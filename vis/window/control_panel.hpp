@@ -25,6 +25,7 @@ struct PanelState {
   // user chose this frame, for the app to open.
   std::vector<std::string> scene_files;
   std::optional<std::string> open_scene;
+  std::string gl_renderer;  // GL_RENDERER, for what render.quality = "auto" chose
 };
 
 // Draws the panel. Applies edits to the session (values that keep the topology at once, a

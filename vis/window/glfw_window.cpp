@@ -50,10 +50,11 @@ GlfwWindow::GlfwWindow(const std::string& title, int width, int height) {
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  // The renderer writes linear colour and lets GL encode sRGB (GL_FRAMEBUFFER_SRGB), and
-  // smooths edges with multisampling, as the headless target does.
+  // The renderer writes linear colour and lets GL encode sRGB (GL_FRAMEBUFFER_SRGB).
   glfwWindowHint(GLFW_SRGB_CAPABLE, GLFW_TRUE);
-  glfwWindowHint(GLFW_SAMPLES, 4);
+  // Single-sampled: the scene is drawn into a multisampled target of its own when the render
+  // quality asks for MSAA (vis/render/render_quality.hpp), the panel straight into the window.
+  glfwWindowHint(GLFW_SAMPLES, 0);
 #ifndef NDEBUG
   glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, GLFW_TRUE);
 #endif

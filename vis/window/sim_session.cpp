@@ -29,6 +29,7 @@ SimSession::SimSession(Scene scene, SolverFactory factory)
 
 void SimSession::rebuilt() {
   built_ = with_copies(applied_, copies_, spacing_);
+  ++builds_;
 }
 
 void SimSession::choose_threads() {
@@ -179,9 +180,9 @@ void SimSession::push(const Vec3d& impulse) {
   solver_->apply_impulse(centre, std::max(0.05, 0.25 * diagonal), impulse);
 }
 
-FrameAdvance SimSession::advance(const FrameStepper& stepper, double wall_seconds) {
-  if (recorder_) return advance_recording(stepper, wall_seconds);
-  const FrameAdvance r = stepper.advance(*solver_, wall_seconds, 1.0, paused || divergence_);
+FrameAdvance SimSession::advance(const FrameStepper& stepper, double request, const FrameCap& cap) {
+  if (recorder_) return advance_recording(request, cap);
+  const FrameAdvance r = stepper.advance(*solver_, request, cap, paused || divergence_.has_value());
   if (r.divergence) divergence_ = r.divergence;
   return r;
 }
@@ -195,16 +196,15 @@ void SimSession::single_step() {
 
 // The same real-time rule as FrameStepper (the cap included), one step at a time so that each
 // step can be written: the steps whose end lies within the simulated time asked for so far.
-FrameAdvance SimSession::advance_recording(const FrameStepper& stepper, double wall_seconds) {
+FrameAdvance SimSession::advance_recording(double request, const FrameCap& cap) {
   FrameAdvance out;
-  if (paused || divergence_ || !(wall_seconds > 0.0)) return out;
+  if (paused || divergence_ || !(request > 0.0)) return out;
   const double dt = solver_->dt();
-  double request = wall_seconds;
-  const double cap = static_cast<double>(stepper.max_steps_per_frame()) * dt;
-  if (request > cap) {
+  if (request > cap.seconds) {
     out.capped = true;
-    out.dropped_seconds = request - cap;
-    request = cap;
+    out.limit = cap.limit;
+    out.dropped_seconds = request - cap.seconds;
+    request = cap.seconds;
   }
   record_clock_ += request;
   // Whole steps only, as Solver::advance takes them (the remainder waits for the next frame).

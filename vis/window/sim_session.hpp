@@ -38,6 +38,9 @@ class SimSession {
   // Counts rebuilds from scratch: when it changes, the cloth's topology may have changed and
   // the renderer needs set_cloth.
   long generation() const { return generation_; }
+  // Counts every solver built, a parameter edit that keeps the motion included (its cost per
+  // step may differ from the last one's).
+  long builds() const { return builds_; }
 
   // Applies the draft's integrator, dt, springs, drag and wind to the running motion. On a bad
   // value sets error() and leaves the solver alone.
@@ -74,8 +77,10 @@ class SimSession {
   // P: momentum `impulse` (N*s) into the free vertices around the cloth's centre.
   void push(const Vec3d& impulse);
 
-  // One frame of real time (FrameStepper); nothing while paused or diverged.
-  FrameAdvance advance(const FrameStepper& stepper, double wall_seconds);
+  // One frame: `request` simulated seconds (real time, or the music's advance) within `cap`
+  // (FrameStepper::cap); nothing while paused or diverged.
+  FrameAdvance advance(const FrameStepper& stepper, double request,
+                       const FrameCap& cap = FrameCap::unlimited());
   void single_step();  // `.` while paused
   bool paused = false;
 
@@ -101,7 +106,7 @@ class SimSession {
   std::unique_ptr<Solver> build(const Scene& scene);
   void rebuilt();         // after applied_ or copies_ changed: the built scene follows
   void choose_threads();  // while the user has not pressed M
-  FrameAdvance advance_recording(const FrameStepper& stepper, double wall_seconds);
+  FrameAdvance advance_recording(double request, const FrameCap& cap);
   void record_step();
 
   bool parallel_chosen_ = false;  // M was pressed: keep the user's choice
@@ -114,6 +119,7 @@ class SimSession {
   std::optional<Divergence> divergence_;
   std::string error_, structure_error_;
   long generation_ = 0;
+  long builds_ = 0;
 
   std::unique_ptr<TraceWriter> recorder_;
   TraceSpec record_spec_;

@@ -25,6 +25,7 @@
 namespace clothlab::vis {
 
 class Diagnostics;
+class OffscreenTarget;
 class FieldPass;
 class ImGuiLayer;
 class Renderer;
@@ -94,6 +95,7 @@ class ViewApp {
   void stop_recording();
   TraceSpec record_spec() const;
   void take_screenshot(const std::string& path, int width, int height);
+  void bind_scene_target(int width, int height);
   void update_title();
   void push();
   void release_pins();
@@ -112,6 +114,7 @@ class ViewApp {
   MusicSync music_;  // the scene's music, and the audio clock while it plays
   MusicPlot music_plot_;
   std::unique_ptr<Renderer> renderer_;
+  std::unique_ptr<OffscreenTarget> scene_target_;  // only while the quality asks for MSAA
   // Only while a probe is on (and for the pick of a Ctrl + drag); sized to the framebuffer.
   std::unique_ptr<FieldPass> field_pass_;
   std::unique_ptr<Diagnostics> diagnostics_;  // colour-by scalar and arrows (what is on)
@@ -127,6 +130,8 @@ class ViewApp {
   ClothGrab grab_;  // Ctrl + left drag
   PanelState panel_;
   FrameStepper stepper_;
+  double step_cost_ = 0.0;  // s of wall time per solver step, smoothed; 0: not measured yet
+  long costed_build_ = -1;  // the session's build step_cost_ belongs to
   FrameStats stats_;
   FrameSample run_totals_;  // summed over the run from the second frame, printed on exit
   long run_frames_ = 0;
