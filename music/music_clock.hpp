@@ -54,7 +54,7 @@ class MusicClock {
       : duration_(duration), max_lag_(max_lag) {}
 
   // One frame's plan. wall_seconds: time since the previous frame; max_advance: the most
-  // simulated time the FrameStepper takes in one frame (max_steps_per_frame * dt), to decide
+  // simulated time the FrameStepper takes in this frame (FrameStepper::cap), to decide
   // whether the music must wait for the simulation. The advance itself is not capped here: the
   // stepper caps it and reports the frame as capped (the panel's "can't keep up").
   MusicPlan plan(const MusicReading& reading, double wall_seconds, double max_advance);

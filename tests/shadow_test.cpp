@@ -116,25 +116,28 @@ TEST_F(ShadowTest, CosineLawInLinearLight) {
 // No acne: a floor with nothing above it looks the same with shadows as without, at a light
 // 0, 45 and 75 degrees off the vertical (every pixel of the floor region within 1/255).
 TEST_F(ShadowTest, LitFloorHasNoAcne) {
-  for (float angle : {0.0f, 45.0f, 75.0f}) {
-    for (ShadowFilter f : {ShadowFilter::pcf, ShadowFilter::pcss}) {
-      // A box far off (the light's region must hold a caster) that shadows nothing in view.
-      const std::vector<MeshSpec> away = {box({-4.0, 0.2, 3.0}, {0.2, 0.2, 0.2})};
-      const Shot plain = shoot(away, view(angle, ShadowFilter::none));
-      const Shot shadowed = shoot(away, view(angle, f));
-      long differ = 0, total = 0;
-      for (int y = kH / 4; y < 3 * kH / 4; ++y)
-        for (int x = kW / 4; x < 3 * kW / 4; ++x, ++total)
-          for (int c = 0; c < 3; ++c)
-            if (std::abs(plain.byte(x, y, c) - shadowed.byte(x, y, c)) > 1) {
-              ++differ;
-              break;
-            }
-      EXPECT_LE(double(differ) / double(total), 0.001)
-          << differ << " of " << total << " pixels differ at " << angle << " degrees, "
-          << to_string(f);
+  for (RenderQuality quality : {RenderQuality::full, RenderQuality::fast})
+    for (float angle : {0.0f, 45.0f, 75.0f}) {
+      for (ShadowFilter f : {ShadowFilter::pcf, ShadowFilter::pcss}) {
+        // A box far off (the light's region must hold a caster) that shadows nothing in view.
+        const std::vector<MeshSpec> away = {box({-4.0, 0.2, 3.0}, {0.2, 0.2, 0.2})};
+        vis::ViewSettings lit = view(angle, ShadowFilter::none), shaded = view(angle, f);
+        lit.quality = shaded.quality = quality;
+        const Shot plain = shoot(away, lit);
+        const Shot shadowed = shoot(away, shaded);
+        long differ = 0, total = 0;
+        for (int y = kH / 4; y < 3 * kH / 4; ++y)
+          for (int x = kW / 4; x < 3 * kW / 4; ++x, ++total)
+            for (int c = 0; c < 3; ++c)
+              if (std::abs(plain.byte(x, y, c) - shadowed.byte(x, y, c)) > 1) {
+                ++differ;
+                break;
+              }
+        EXPECT_LE(double(differ) / double(total), 0.001)
+            << differ << " of " << total << " pixels differ at " << angle << " degrees, "
+            << to_string(f) << ", quality " << to_string(quality);
+      }
     }
-  }
 }
 
 // How much light reaches the floor point p: the shadowed render over the same render without
@@ -151,14 +154,18 @@ double visibility(const Shot& shadowed, const Shot& plain, const vis::ViewSettin
 // +x face get under 20 % of the light, points beside it and behind it (-x) all of it (> 90 %).
 TEST_F(ShadowTest, PostShadowTouchesItsFoot) {
   const std::vector<MeshSpec> post = {box({0.0, 0.5, 0.0}, {0.05, 0.5, 0.05})};
-  vis::ViewSettings v = view(45.0f, ShadowFilter::pcf);
-  const Shot s = shoot(post, v);
-  v.shadows = ShadowFilter::none;
-  const Shot plain = shoot(post, v);
-  EXPECT_LT(visibility(s, plain, v, {0.07f, 0.0f, 0.0f}), 0.2);
-  EXPECT_LT(visibility(s, plain, v, {0.15f, 0.0f, 0.0f}), 0.2);
-  EXPECT_GT(visibility(s, plain, v, {0.0f, 0.0f, 0.4f}), 0.9);
-  EXPECT_GT(visibility(s, plain, v, {-0.1f, 0.0f, 0.0f}), 0.9);
+  for (RenderQuality quality : {RenderQuality::full, RenderQuality::fast}) {
+    SCOPED_TRACE(to_string(quality));
+    vis::ViewSettings v = view(45.0f, ShadowFilter::pcf);
+    v.quality = quality;
+    const Shot s = shoot(post, v);
+    v.shadows = ShadowFilter::none;
+    const Shot plain = shoot(post, v);
+    EXPECT_LT(visibility(s, plain, v, {0.07f, 0.0f, 0.0f}), 0.2);
+    EXPECT_LT(visibility(s, plain, v, {0.15f, 0.0f, 0.0f}), 0.2);
+    EXPECT_GT(visibility(s, plain, v, {0.0f, 0.0f, 0.4f}), 0.9);
+    EXPECT_GT(visibility(s, plain, v, {-0.1f, 0.0f, 0.0f}), 0.9);
+  }
 }
 
 // The shadow falls away from the light, whichever way the light comes from: with the light 45

@@ -241,14 +241,15 @@ void Renderer::draw_sky(const ViewSettings& view, const glm::mat4& view_proj, gl
 void Renderer::draw_shadow_map(const ViewSettings& view, bool translucent) {
   if (!shadow_) shadow_ = std::make_unique<ShadowPass>();
   shadow_->begin(view.shadow_map_size);
-  shadow_->draw_floor(view.floor_height, view.floor_half_size);
+  // The floor last: it covers the whole map, and the depth test skips it behind the casters.
   if (cloth_.triangle_indices() > 0)
     shadow_->draw_triangles(cloth_.cloth_vao(), cloth_.triangle_indices(), glm::mat4(1.0f));
   draw_shadow_casters();
+  shadow_->draw_floor(view.floor_height, view.floor_half_size);
   if (translucent) {
     shadow_->begin_opaque();
-    shadow_->draw_floor(view.floor_height, view.floor_half_size);
     draw_shadow_casters();
+    shadow_->draw_floor(view.floor_height, view.floor_half_size);
     if (cloth_.triangle_indices() > 0) {
       shadow_->begin_transmittance();
       const auto& c = view.look.color;

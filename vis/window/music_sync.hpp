@@ -25,7 +25,7 @@ class MusicSync {
   // The simulated seconds to ask the FrameStepper for this frame: audio time - solver time while
   // the music plays, the wall time without music or after its end, 0 while paused. Also seeks,
   // plays and pauses the playback to keep it with the session (reset, pause, single steps).
-  // max_advance: the stepper's cap in seconds (max_steps_per_frame * dt).
+  // max_advance: the frame's cap in simulated seconds (FrameStepper::cap).
   double frame_advance(const SimSession& session, double wall_seconds, double max_advance);
 
   bool audible() const { return playback_.has_value(); }
