@@ -44,6 +44,13 @@ struct Bounds {
   }
 };
 
+// One collider over a substep: its poses at the start and the end, and the box round both
+// grown by its thickness.
+struct ColliderSweep {
+  ColliderPose start, end;
+  Bounds box;
+};
+
 class Collider {
  public:
   explicit Collider(const ColliderSpec& spec) : Collider(spec, true) {}

@@ -80,6 +80,7 @@ ContactResponse<T>::ContactResponse(const std::vector<ColliderSpec>& colliders, 
     if (spec.kind == ColliderKind::mesh) feature = 0.0;  // a mesh may have any sharp edge
     edges_ = edges_ || feature < 2.0 * longest;
   }
+  features_ = FeatureContacts<T>(colliders_, m, longest);
   if (!edges_) return;
   mesh_edges_ = mesh_edge_list;
   for (const ClothRange& c : m.cloths) {
@@ -162,7 +163,7 @@ bool ContactResponse<T>::point(const V3& x0, V3& x1, V3& v, double h, double& de
   bool changed = false;
   for (std::size_t c = 0; c < colliders_.size(); ++c) {
     const Collider& collider = colliders_[c];
-    const Sweep& sweep = sweeps_[c];
+    const ColliderSweep& sweep = sweeps_[c];
     // This point's path against the collider's box over the substep.
     const Bounds path{x0.cwiseMin(x1), x0.cwiseMax(x1)};
     if (!path.overlaps(sweep.box)) continue;
@@ -260,7 +261,7 @@ bool ContactResponse<T>::respond(const Model<T>& m, State<T>& s, double t, doubl
   stats_ = {};
   if (!active_) return false;  // begin() found nothing within reach
   for (std::size_t c = 0; c < colliders_.size(); ++c) {
-    Sweep& sweep = sweeps_[c];
+    ColliderSweep& sweep = sweeps_[c];
     sweep.start = colliders_[c].pose(t);
     sweep.end = colliders_[c].pose(t + h);
     const double th = colliders_[c].thickness();
@@ -308,6 +309,9 @@ bool ContactResponse<T>::respond(const Model<T>& m, State<T>& s, double t, doubl
     stats_.contacts += r.contacts;
     stats_.max_depth = std::max(stats_.max_depth, r.max_depth);
   }
+  // Last, the colliders' corners and edges against the triangles between the vertices.
+  if (!features_.empty())
+    stats_.contacts += features_.respond(colliders_, sweeps_, m, start_, s, threads);
   return stats_.contacts > 0;
 }
 

@@ -18,7 +18,9 @@
 // them; Verlet's cached force is then recomputed (Integrator::state_corrected).
 // Where a collider is thinner than the cloth's grid edges (a rod between two rows of vertices),
 // each edge's midpoint is a contact point too, its correction moving both ends (edges first,
-// then the vertices, which leaves no vertex inside a shell).
+// then the vertices, which leaves no vertex inside a shell). A box's or a mesh's corners and
+// edges poke through the triangles between the vertices: they are contact points of their own
+// against the triangles, last (sim/contact/feature_contacts.hpp).
 // Broad phase: per block of vertices, the box around their start and end positions against each
 // collider's box over the substep, so a collider far from the cloth costs one box test per block.
 // Nothing allocates after construction; every vertex is handled alone, so the result is the same
@@ -30,6 +32,7 @@
 
 #include "sim/contact/collider.hpp"
 #include "sim/contact/contact_stats.hpp"
+#include "sim/contact/feature_contacts.hpp"
 #include "sim/integrators/integrator.hpp"
 
 namespace clothlab {
@@ -51,10 +54,6 @@ class ContactResponse {
   const ContactStats& last() const { return stats_; }
 
  private:
-  struct Sweep {  // one collider over the substep
-    ColliderPose start, end;
-    Bounds box;  // both poses, grown by the thickness
-  };
   struct BlockResult {
     int contacts = 0;
     double max_depth = 0.0;
@@ -74,7 +73,7 @@ class ContactResponse {
   void respond_edges(const Model<T>& m, State<T>& s, double h, int threads);
 
   std::vector<Collider> colliders_;
-  std::vector<Sweep> sweeps_;
+  std::vector<ColliderSweep> sweeps_;
   Vec3Array<T> start_;
   std::vector<BlockResult> blocks_;
   // begin()'s cheap test holds for this many substeps when it finds nothing within reach, but
@@ -91,6 +90,7 @@ class ContactResponse {
   bool edges_ = false;  // edge midpoints are contact points too (a collider thinner than an edge)
   std::vector<EdgeRun> rows_, columns_;
   std::vector<std::array<int, 2>> mesh_edges_;  // mesh cloths' edges (a < b)
+  FeatureContacts<T> features_;                 // the colliders' corners and edges
   ContactStats stats_;
 };
 

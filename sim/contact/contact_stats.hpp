@@ -6,7 +6,7 @@
 namespace clothlab {
 
 struct ContactStats {
-  int contacts = 0;        // vertices the last substep corrected
+  int contacts = 0;        // vertices, edges and features the last substep corrected
   double max_depth = 0.0;  // m: largest thickness - phi left after the response (0: none)
 };
 

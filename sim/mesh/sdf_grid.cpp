@@ -4,32 +4,12 @@
 #include <cmath>
 #include <limits>
 
+#include "sim/mesh/closest_point.hpp"
+
 namespace clothlab {
 namespace {
 
 using V3 = Eigen::Vector3d;
-
-// Closest point to p on triangle abc (Ericson 2005, section 5.1.5, by Voronoi regions).
-V3 closest_on_triangle(const V3& p, const V3& a, const V3& b, const V3& c) {
-  const V3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0.0 && d2 <= 0.0) return a;
-  const V3 bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0.0 && d4 <= d3) return b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + (d1 / (d1 - d3)) * ab;
-  const V3 cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0.0 && d5 <= d6) return c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + (d2 / (d2 - d6)) * ac;
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
-    return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
-  const double denom = 1.0 / (va + vb + vc);
-  return a + ab * (vb * denom) + ac * (vc * denom);
-}
 
 // The grid's points: origin + cell (i, j, k), count points along each axis.
 struct Frame {
@@ -58,7 +38,8 @@ double distance_to(const TriangleMesh& mesh, const V3& p, int t) {
   const auto& tri = mesh.triangles[std::size_t(t)];
   return (p - closest_on_triangle(p, mesh.positions[std::size_t(tri[0])],
                                   mesh.positions[std::size_t(tri[1])],
-                                  mesh.positions[std::size_t(tri[2])]))
+                                  mesh.positions[std::size_t(tri[2])])
+                  .point)
       .norm();
 }
 
