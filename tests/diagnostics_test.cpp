@@ -206,6 +206,30 @@ TEST_F(DiagnosticsTest, ZeroArrowsDrawNothing) {
   EXPECT_EQ(plain, with_zero_arrows);
 }
 
+// Normal arrows show the side of the cloth the camera sees (as mode 2 colours it): looked at from
+// above or from below, every arrow of the tilted sheet points towards the camera, and the two
+// views give opposite arrows of the same length.
+TEST_F(DiagnosticsTest, NormalArrowsPointToTheCamerasSide) {
+  const auto solver = make_solver(flat_sheet(0.2));
+  renderer_->set_cloth(*solver);
+  std::vector<glm::vec3> seen[2];
+  for (int side = 0; side < 2; ++side) {
+    vis::ViewSettings view = top_view(*solver);
+    view.camera.pitch_deg = side == 0 ? 60.0f : -60.0f;  // above, then below the sheet
+    view.arrows.normals = true;
+    renderer_->render(*solver, view);
+    const glm::vec3 eye = view.camera.eye();
+    ASSERT_FALSE(renderer_->diagnostics().normal_arrows().empty());
+    for (const vis::ArrowInstance& a : renderer_->diagnostics().normal_arrows()) {
+      EXPECT_GT(glm::dot(a.vector, eye - a.base), 0.0f) << "an arrow faces away from the camera";
+      seen[side].push_back(a.vector);
+    }
+  }
+  ASSERT_EQ(seen[0].size(), seen[1].size());
+  for (std::size_t k = 0; k < seen[0].size(); ++k)
+    EXPECT_NEAR(glm::length(seen[0][k] + seen[1][k]), 0.0f, 1e-6f);
+}
+
 // With every view off the diagnostics hold nothing and no force field is computed.
 TEST_F(DiagnosticsTest, EverythingOffHoldsNothing) {
   const auto solver = make_solver(flat_sheet(0.2));

@@ -2,6 +2,8 @@
 // lighting by the scene's one light.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "sim/solver.hpp"
@@ -129,6 +131,38 @@ TEST_F(RenderTest, ClothIsLitByTheSameLight) {
   const int unlit = luminance(render(solver, view, w, h), w, centre);
   EXPECT_GT(lit, unlit + 100) << "lit " << lit << ", unlit " << unlit;
   EXPECT_GT(unlit, 0);  // ambient keeps it visible
+}
+
+// A cloth without triangles (the single spring: two vertices) is drawn as its spring and its
+// vertices in every mode, not as nothing: in each of modes 1-6 the free vertex's pixel is
+// the vertices' light grey, and the middle of the spring is a light line on the background.
+TEST_F(RenderTest, ClothWithoutTrianglesShowsItsSpringAndVerticesInEveryMode) {
+  const auto owner =
+      testing::solver<float>(testing::single_spring(0.1, 100.0, 0.5, IntegratorKind::verlet, 1e-3));
+  Solver& solver = *owner;
+  vis::ViewSettings view = vis::default_view(solver);
+  view.sky = false;
+  view.shadows = ShadowFilter::none;
+  const int w = 160, h = 120;
+  const Vec3d a = solver.position(0), b = solver.position(1);
+  const glm::vec2 free_vertex = project(view, {float(b[0]), float(b[1]), float(b[2])}, w, h);
+  const glm::vec2 middle = project(
+      view, {float(0.5 * (a[0] + b[0])), float(0.5 * (a[1] + b[1])), float(0.5 * (a[2] + b[2]))}, w,
+      h);
+  for (int mode = 1; mode <= 6; ++mode) {
+    SCOPED_TRACE(mode);
+    view.mode = static_cast<DisplayMode>(mode);
+    const std::vector<std::uint8_t> img = render(solver, view, w, h);
+    const Pixel v = at(img, w, int(free_vertex.x), int(free_vertex.y));
+    EXPECT_GE(std::min({v.r, v.g, v.b}), 200) << v.r << " " << v.g << " " << v.b;
+    // The spring is a light line: its middle is brighter by 40/255 or more than the background
+    // five pixels either side (a one-pixel line, so the brightest of the three nearest columns).
+    const int x = int(middle.x), y = int(middle.y);
+    int line = 0;
+    for (int dx = -1; dx <= 1; ++dx) line = std::max(line, at(img, w, x + dx, y).g);
+    EXPECT_GE(line, at(img, w, x - 5, y).g + 40) << "no spring at the spring's middle";
+    EXPECT_GE(line, at(img, w, x + 5, y).g + 40) << "no spring at the spring's middle";
+  }
 }
 
 TEST_F(RenderTest, BrokenShaderNamesFileLineAndDriverLog) {

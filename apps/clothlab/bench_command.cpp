@@ -61,7 +61,11 @@ int run_bench(const BenchArgs& args) {
         out = fs::path(args.out) / (suite + ".csv");
       const bench::Stopwatch clock;
       const std::vector<bench::Table> tables = run_suite(suite, options);
-      for (const bench::Table& t : tables) bench::print_table(std::cout, t);
+      // The summary first (the answer), then the tables it was drawn from.
+      for (const bench::Table& t : tables)
+        if (t.name == "summary") bench::print_table(std::cout, t);
+      for (const bench::Table& t : tables)
+        if (t.name != "summary") bench::print_table(std::cout, t);
       std::cout << '\n';
       write_tables(out, tables);
       std::cout << suite << ": " << bench::fixed(clock.seconds(), 1) << " s, load average now "

@@ -17,6 +17,7 @@
 #include "sim/scene/scene_error.hpp"
 #include "vis/colormap/colormap.hpp"
 #include "vis/render/scalar_field.hpp"
+#include "vis/window/input.hpp"
 
 namespace {
 
@@ -60,6 +61,26 @@ struct RenderCli {
   std::string probe;
   CLI::Option* probe_opt = nullptr;
 };
+
+// A number in [lo, hi], said as a sentence ("must be between 1 and 10000, got 0") where CLI11's
+// own Range would say "Value 0 not in range 1.000000 to 10000.000000".
+CLI::Validator between(double lo, double hi) {
+  // Whole numbers in full (1000000, not 1e+06).
+  auto number = [](double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, x == std::floor(x) && std::fabs(x) < 1e15 ? "%.0f" : "%g", x);
+    return std::string(text);
+  };
+  const std::string range = number(lo) + " and " + number(hi);
+  return CLI::Validator(
+      [lo, hi, range](std::string& text) {
+        char* end = nullptr;
+        const double x = std::strtod(text.c_str(), &end);
+        if (end != text.c_str() && *end == '\0' && x >= lo && x <= hi) return std::string();
+        return "must be between " + range + ", got " + text;
+      },
+      number(lo) + " to " + number(hi));
+}
 
 // An option naming one of `all` by its name (`name`, the same function the rest of ClothLab
 // prints it with): CLI11 checks the name and the value lands in `target`.
@@ -128,7 +149,7 @@ void add_render_views(CLI::App* render_cmd, vis::ScientificViews& views) {
              clothlab::force_source_name,
              "force shown by arrows and --color-by force: total, springs, gravity, drag, wind");
   render_cmd->add_option("--arrow-stride", views.arrows.stride, "an arrow every N vertices")
-      ->check(CLI::Range(1, 100000));
+      ->check(between(1, 100000));
   add_choice(
       render_cmd, "--arrow-scale", views.arrows.scale,
       std::array{vis::ArrowScale::linear, vis::ArrowScale::log},
@@ -145,7 +166,8 @@ CLI::App* add_render(CLI::App& app, RenderCli& cli) {
   auto* render_cmd = app.add_subcommand("render", "render a scene headless (EGL) to PNGs or MP4");
   add_scene_options(*render_cmd, render.scene, render.overrides);
   render_cmd->add_option("--frames", render.frames, "frames to render")
-      ->check(CLI::Range(1, 1000000));
+      ->capture_default_str()
+      ->check(between(1, 1000000));
   render_cmd
       ->add_option(
           "--mode", render.mode,
@@ -153,8 +175,9 @@ CLI::App* add_render(CLI::App& app, RenderCli& cli) {
           "cloth with coloured shadows, 6 normal-mapped weave, 7 the "
           "light's depth map "
           "(default: the scene's render.mode)")
-      ->check(CLI::Range(1, 7));
+      ->check(between(1, 7));
   render_cmd->add_option("--size", cli.size, "image size WxH")
+      ->capture_default_str()
       ->check(CLI::Validator(
           [](std::string& s) {
             int w = 0, h = 0;
@@ -166,7 +189,8 @@ CLI::App* add_render(CLI::App& app, RenderCli& cli) {
           },
           "WxH"));
   render_cmd->add_option("--fps", render.fps, "frames per simulated second")
-      ->check(CLI::Range(1.0, 10000.0));
+      ->capture_default_str()
+      ->check(between(1.0, 10000.0));
   render_cmd->add_option("--out", render.out,
                          "directory for the numbered PNGs (at least one of --out and --video)");
   render_cmd->add_option("--video", render.video,
@@ -176,9 +200,10 @@ CLI::App* add_render(CLI::App& app, RenderCli& cli) {
                          "also write the scene's [music] (e.g. its generated drum track) as WAV");
   render_cmd->add_flag("--quiet", render.quiet, "no progress bar");
   render_cmd
-      ->add_option("--copies", render.copies,
-                   "copies of the scene's cloth side by side, each simulated (as the window's ])")
-      ->check(CLI::Range(1, 64));
+      ->add_option(
+          "--copies", render.copies,
+          "copies of the scene's cloth side by side, each simulated (as the window's + key)")
+      ->check(between(1, 64));
   cli.probe_opt = render_cmd->add_option(
       "--probe", cli.probe, "after the last frame, print the field under pixel PX,PY as JSON");
   render_cmd->add_option("--field", render.field, "probed field: force, velocity or position")
@@ -221,9 +246,20 @@ CLI::App* add_view(CLI::App& app, ViewArgs& view) {
   add_scene_options(*view_cmd, view.scene, view.overrides, false);
   view_cmd
       ->add_option("--copies", view.copies,
-                   "start with this many copies of the cloth side by side ([ and ] change it)")
-      ->check(CLI::Range(1, 64));
+                   "start with this many copies of the cloth side by side (+ and - change it)")
+      ->check(between(1, 64));
 
+  // The keys, as the window's help overlay (H) lists them.
+  std::string keys = "\nKeys in the window:\n";
+  for (const vis::KeyBinding& k : vis::key_bindings()) {
+    char line[160];
+    std::snprintf(line, sizeof line, "  %-6.*s %.*s\n", int(k.name.size()), k.name.data(),
+                  int(k.help.size()), k.help.data());
+    keys += line;
+  }
+  view_cmd->footer(keys +
+                   "Mouse: left drag orbits, right drag pans, the wheel zooms, Ctrl + left drag "
+                   "pulls the cloth.");
   return view_cmd;
 }
 
@@ -237,12 +273,17 @@ CLI::App* add_bench(CLI::App& app, BenchArgs& bench) {
   std::string listed;
   for (const std::string& name : suites) listed += name + ", ";
   suites.push_back("all");
-  bench_cmd->add_option("--suite", bench.suite, listed + "or all")->check(CLI::IsMember(suites));
+  bench_cmd->add_option("--suite", bench.suite, listed + "or all")
+      ->capture_default_str()
+      ->check(CLI::IsMember(suites));
   bench_cmd->add_option("--out", bench.out,
                         "CSV file (one suite) or directory (all); default out/bench/SUITE.csv");
-  bench_cmd->add_flag("--quick", bench.quick, "reduced sweeps (seconds instead of minutes)");
+  bench_cmd->add_flag("--quick", bench.quick,
+                      "reduced sweeps in seconds instead of minutes: smaller grids, fewer "
+                      "stiffnesses, rounds and frames, shorter horizons (the tables say which)");
   bench_cmd->add_option("--threads", bench.threads, "solver threads (scaling measures 1 and 2)")
-      ->check(CLI::Range(1, 1024));
+      ->capture_default_str()
+      ->check(between(1, 1024));
   bench_cmd->add_flag("--verbose", bench.verbose, "progress lines on stderr");
 
   return bench_cmd;
@@ -297,8 +338,12 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int rc = app.exit(e);  // prints help or the error
-    return rc == 0 ? 0 : 2;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    // One line naming the subcommand, as every other bad input is said.
+    const std::string sub = argc >= 2 && argv[1][0] != '-' ? std::string(" ") + argv[1] : "";
+    std::fprintf(stderr, "clothlab%s: %s (clothlab%s --help)\n", sub.c_str(), e.what(),
+                 sub.c_str());
+    return 2;
   }
   // A scene error found while building (a built state the solver cannot hold) is bad input like
   // any other; running out of memory anywhere is one line and exit 1, never an abort.

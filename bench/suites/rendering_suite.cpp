@@ -175,6 +175,9 @@ std::vector<Table> rendering_suite(const SuiteOptions& o) {
         std::to_string(rounds) + " rounds of " + std::to_string(frames) + " frames";
     Table t = rendering_table(variants, series, title);
     if (quality == RenderQuality::fast) t.name = "fast";
+    t.note = quick_note(o.quick,
+                        "320x240 instead of 1280x720, 1 round of 1 frame instead of 5 "
+                        "of 3");
     tables.push_back(std::move(t));
   }
   return tables;

@@ -29,17 +29,42 @@ std::string csv_field(const std::string& s) {
 
 }  // namespace
 
+std::string for_people(const std::string& cell) {
+  char* end = nullptr;
+  const double value = std::strtod(cell.c_str(), &end);
+  if (cell.empty() || *end != '\0' || cell.find_first_of(".eE") == std::string::npos) return cell;
+  int digits = 0;  // significant digits of the mantissa
+  bool leading = true;
+  for (char ch : cell) {
+    if (ch == 'e' || ch == 'E') break;
+    if (ch < '0' || ch > '9') continue;
+    leading = leading && ch == '0';
+    digits += leading ? 0 : 1;
+  }
+  return digits > 4 ? format("%.*g", value, 4) : cell;
+}
+
+std::string quick_note(bool quick, const std::string& what) {
+  return quick ? "--quick leaves out: " + what : std::string();
+}
+
 void print_table(std::ostream& out, const Table& table) {
+  std::vector<std::vector<std::string>> rows;
+  rows.reserve(table.rows.size());
+  for (const auto& row : table.rows) {
+    rows.emplace_back();
+    for (const std::string& cell : row) rows.back().push_back(for_people(cell));
+  }
   std::vector<std::size_t> width(table.columns.size(), 0);
   for (std::size_t c = 0; c < table.columns.size(); ++c) width[c] = table.columns[c].size();
-  for (const auto& row : table.rows)
+  for (const auto& row : rows)
     for (std::size_t c = 0; c < row.size() && c < width.size(); ++c)
       width[c] = std::max(width[c], row[c].size());
   // Numbers align right, text left; a column is text when its first cell does not parse.
   std::vector<bool> numeric(width.size(), true);
-  if (!table.rows.empty())
-    for (std::size_t c = 0; c < width.size() && c < table.rows[0].size(); ++c) {
-      const std::string& cell = table.rows[0][c];
+  if (!rows.empty())
+    for (std::size_t c = 0; c < width.size() && c < rows[0].size(); ++c) {
+      const std::string& cell = rows[0][c];
       char* end = nullptr;
       std::strtod(cell.c_str(), &end);
       numeric[c] = !cell.empty() && end != cell.c_str();
@@ -55,11 +80,12 @@ void print_table(std::ostream& out, const Table& table) {
     out << text << '\n';
   };
   out << '\n' << table.title << '\n';
+  if (!table.note.empty()) out << table.note << '\n';
   line(table.columns);
   std::size_t total = 0;
   for (std::size_t w : width) total += w + 2;
   out << std::string(total > 2 ? total - 2 : 0, '-') << '\n';
-  for (const auto& row : table.rows) line(row);
+  for (const auto& row : rows) line(row);
   out.flush();
 }
 

@@ -13,13 +13,22 @@ namespace clothlab::bench {
 struct Table {
   std::string name;  // file suffix of a summary table: <out stem>_<name>.csv
   std::string title;
+  std::string note;  // a line under the title (what --quick leaves out); empty for none
   std::vector<std::string> columns;  // with units, e.g. "dt (s)"
   std::vector<std::vector<std::string>> rows;
   void add(std::vector<std::string> row) { rows.push_back(std::move(row)); }
 };
 
-// Aligned, with a title line and a rule under the header.
+// Aligned, with a title line and a rule under the header. Numbers are printed to 4 significant
+// digits (the CSV keeps the cell as it is, %.9g), so that a table fits a terminal.
 void print_table(std::ostream& out, const Table& table);
+
+// A number cell as people read it: a fraction or exponent with more than 4 significant digits
+// to %.4g ("0.0166666667" -> "0.01667"); integers and text as they are.
+std::string for_people(const std::string& cell);
+
+// "--quick leaves out: <what>" when quick, else empty (Table::note).
+std::string quick_note(bool quick, const std::string& what);
 
 // Writes the table as CSV (one header row of the column names) to `path` through a temporary
 // file and a rename, so the file is complete or absent. Throws std::runtime_error on failure.

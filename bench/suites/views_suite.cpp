@@ -181,6 +181,9 @@ std::vector<Table> views_suite(const SuiteOptions& o) {
   const std::string gl = renderer.gl_renderer();
   if (o.log) *o.log << "views: GL renderer " << gl << "\n";
   Table table = views_table(width, height, gl, o.threads, frames, rounds);
+  table.note = quick_note(o.quick,
+                          "the 128x128 cloth (32x32 only), 320x240 instead of "
+                          "1280x720, 2 rounds of 2 frames instead of 5 of 3");
   for (const int res : resolutions) {
     auto solver = make_solver(default_scene(res, o.threads));
     const long steps_per_frame = std::max(1L, std::lround(1.0 / 60.0 / solver->dt()));

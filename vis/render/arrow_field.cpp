@@ -109,12 +109,15 @@ void build_force_arrows(const ArrowLayout& layout, const std::vector<float>& pos
 }
 
 void build_normal_arrows(const ArrowLayout& layout, const std::vector<float>& positions,
-                         const std::vector<float>& normals, float length,
+                         const std::vector<float>& normals, float length, glm::vec3 eye,
                          std::vector<ArrowInstance>& out) {
   out.resize(layout.vertices.size());
   for (std::size_t k = 0; k < layout.vertices.size(); ++k) {
     const int v = layout.vertices[k];
-    out[k] = {at(positions, v), at(normals, v) * length, 0.0f};
+    const glm::vec3 p = at(positions, v), n = at(normals, v);
+    // The side the camera sees, as mode 2 colours it: an arrow on the far side would hide
+    // behind the cloth.
+    out[k] = {p, (glm::dot(n, eye - p) < 0.0f ? -n : n) * length, 0.0f};
   }
 }
 

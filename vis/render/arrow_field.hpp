@@ -55,9 +55,9 @@ float arrow_length(float magnitude, ArrowScale scale, float max_length, ScalarRa
 void build_force_arrows(const ArrowLayout& layout, const std::vector<float>& positions,
                         const std::vector<float>& vectors, ArrowScale scale, float max_length,
                         ScalarRange range, std::vector<ArrowInstance>& out);
-// Unit normals drawn at a constant length.
+// Unit normals drawn at a constant length, each turned to the side that faces `eye` (the camera).
 void build_normal_arrows(const ArrowLayout& layout, const std::vector<float>& positions,
-                         const std::vector<float>& normals, float length,
+                         const std::vector<float>& normals, float length, glm::vec3 eye,
                          std::vector<ArrowInstance>& out);
 
 }  // namespace clothlab::vis

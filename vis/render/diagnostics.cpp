@@ -67,7 +67,8 @@ void Diagnostics::update(Solver& solver, const ViewSettings& view, Renderer& ren
   }
   if (a.normals) {
     solver.copy_normals(vectors_.data());
-    build_normal_arrows(layout_, positions_, vectors_, kNormalLength * spacing, normal_arrows_);
+    build_normal_arrows(layout_, positions_, vectors_, kNormalLength * spacing, view.camera.eye(),
+                        normal_arrows_);
   }
 }
 

@@ -158,10 +158,14 @@ void Renderer::draw_at(const ViewSettings& view, bool fast, int width, int heigh
   glBindVertexArray(0);
 }
 
+// A cloth without triangles (two vertices and a spring) has no surface to shade: it is drawn as
+// its springs and vertices in every mode.
 void Renderer::draw_cloth(const ViewSettings& view, const std::string& shading, bool subsurface) {
-  if (view.mode == DisplayMode::springs)
-    springs_.draw(cloth_);
-  else
+  const bool surface = cloth_.triangle_indices() > 0;
+  if (view.mode == DisplayMode::springs || !surface) springs_.draw(cloth_);
+  if (!surface)
+    springs_.draw_vertices(cloth_);
+  else if (view.mode != DisplayMode::springs)
     cloth_pass_.draw(view, cloth_, scalar_range_, colormap_texture(view.color.map),
                      subsurface ? diffusion_.get() : nullptr, shading);
 }

@@ -16,6 +16,11 @@
 namespace clothlab::vis {
 
 // Window options that are not about how the cloth is drawn (those live in ViewSettings).
+// What the panel says while the cloth's pins are released (D), and the window prints when it
+// happens.
+inline constexpr const char* kPinsReleasedMessage =
+    "pins released: the cloth drops (R pins it again)";
+
 struct PanelState {
   double push_strength = 0.5;  // N*s, momentum of one push (P)
   bool show_help = false;
@@ -25,7 +30,8 @@ struct PanelState {
   // user chose this frame, for the app to open.
   std::vector<std::string> scene_files;
   std::optional<std::string> open_scene;
-  std::string gl_renderer;  // GL_RENDERER, for what render.quality = "auto" chose
+  std::string gl_renderer;   // GL_RENDERER, for what render.quality = "auto" chose
+  float panel_right = 0.0f;  // the panel's right edge last frame (window pixels)
 };
 
 // Draws the panel. Applies edits to the session (values that keep the topology at once, a
@@ -37,8 +43,8 @@ std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view
 void draw_help_overlay(bool& open);
 
 // The probe's readout (lines of text) in a small tooltip-like window at (x, y), window
-// coordinates, next to the cursor.
-void draw_probe_overlay(const std::string& text, float x, float y);
+// coordinates, next to the cursor and right of the panel (whose right edge is panel_right).
+void draw_probe_overlay(const std::string& text, float x, float y, float panel_right);
 
 const char* field_name(Field field);
 

@@ -1,5 +1,7 @@
 #include "vis/window/glfw_window.hpp"
 
+#include <algorithm>
+
 #include <cstdio>
 #include <cstdlib>
 
@@ -58,6 +60,15 @@ GlfwWindow::GlfwWindow(const std::string& title, int width, int height) {
 #ifndef NDEBUG
   glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, GLFW_TRUE);
 #endif
+  // No larger than the monitor's work area (a 1280x800 window is taller than a 720-line screen,
+  // and the panel's last rows would be cut off), less room for the title bar.
+  if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
+    int x = 0, y = 0, w = 0, h = 0;
+    glfwGetMonitorWorkarea(monitor, &x, &y, &w, &h);
+    constexpr int kTitleBar = 40;  // pixels a window manager may add above the client area
+    if (w > 0) width = std::min(width, w);
+    if (h > kTitleBar) height = std::min(height, h - kTitleBar);
+  }
   window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
   if (!window_) {
     const char* description = nullptr;

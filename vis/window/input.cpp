@@ -78,23 +78,21 @@ constexpr KeyBinding kBindings[] = {
      {GLFW_KEY_PERIOD, GLFW_KEY_KP_DECIMAL},
      true},
     {Action::reset, "R", "reset (applies a new resolution)", {GLFW_KEY_R}, false},
-    // GLFW names physical US-layout keys: '+' is Shift + '=' there, so '=' counts as '+'.
-    {Action::more_vertices, "+", "more vertices (x 1.25)", {GLFW_KEY_EQUAL, GLFW_KEY_KP_ADD}, true},
-    {Action::fewer_vertices,
-     "-",
-     "fewer vertices (/ 1.25)",
-     {GLFW_KEY_MINUS, GLFW_KEY_KP_SUBTRACT},
-     true},
+    // The assignment's + / - raise and lower the number of simulated and drawn objects: the
+    // copies of the cloth. GLFW names physical US-layout keys: '+' is Shift + '=' there, so '='
+    // counts as '+'.
     {Action::more_copies,
-     "]",
+     "+",
      "twice the copies of the cloth, side by side (up to 64; restarts)",
-     {GLFW_KEY_RIGHT_BRACKET},
+     {GLFW_KEY_EQUAL, GLFW_KEY_KP_ADD},
      false},
     {Action::fewer_copies,
-     "[",
+     "-",
      "half the copies of the cloth (restarts)",
-     {GLFW_KEY_LEFT_BRACKET},
+     {GLFW_KEY_MINUS, GLFW_KEY_KP_SUBTRACT},
      false},
+    {Action::more_vertices, "]", "more vertices (x 1.25)", {GLFW_KEY_RIGHT_BRACKET}, true},
+    {Action::fewer_vertices, "[", "fewer vertices (/ 1.25)", {GLFW_KEY_LEFT_BRACKET}, true},
     {Action::toggle_parallel, "M", "parallel solver on/off (all cores <-> 1)", {GLFW_KEY_M}, false},
     {Action::toggle_help, "H", "this help", {GLFW_KEY_H}, false},
     {Action::screenshot,
@@ -125,8 +123,10 @@ std::optional<Action> action_named(std::string_view name) {
   for (const KeyBinding& b : kBindings)
     if (b.name == name) return b.action;
   // Spelled out too: CMake lists (the window tests' command lines) mangle square brackets.
-  if (name == "RightBracket") return Action::more_copies;
-  if (name == "LeftBracket") return Action::fewer_copies;
+  if (name == "RightBracket") return Action::more_vertices;
+  if (name == "LeftBracket") return Action::fewer_vertices;
+  if (name == "Plus") return Action::more_copies;
+  if (name == "Minus") return Action::fewer_copies;
   return std::nullopt;
 }
 

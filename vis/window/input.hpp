@@ -29,10 +29,10 @@ enum class Action {
   pause,                 // Space
   single_step,           // .
   reset,                 // R
-  more_vertices,         // +
-  fewer_vertices,        // -
-  more_copies,           // ]: twice the copies of the cloth
-  fewer_copies,          // [: half
+  more_vertices,         // ]
+  fewer_vertices,        // [
+  more_copies,           // +: twice the copies of the cloth
+  fewer_copies,          // -: half
   toggle_parallel,       // M
   toggle_help,           // H
   screenshot,            // F12
@@ -45,7 +45,7 @@ struct KeyBinding {
   std::string_view name;  // as shown in the help and accepted by the test hook (CLOTHLAB_VIEW_KEYS)
   std::string_view help;
   int keys[3];   // GLFW key codes, 0 = unused
-  bool repeats;  // also fires on key repeat (held + / - / .)
+  bool repeats;  // also fires on key repeat (held ] / [ / .)
 };
 
 std::span<const KeyBinding> key_bindings();

@@ -10,7 +10,7 @@
 namespace clothlab::vis {
 namespace {
 
-// The +/- keys' range per axis: the table's panel range for cloth.resolution.
+// The [ / ] keys' range per axis: the table's panel range for cloth.resolution.
 Range resolution_range() {
   return find_parameter(Section::cloth, key_of<&ClothSpec::resolution>())->ui;
 }

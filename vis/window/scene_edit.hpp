@@ -13,7 +13,7 @@ namespace clothlab::vis {
 // motion with load_state.
 void copy_dynamics(const Scene& from, Scene& to);
 
-// Scales every cloth's resolution by `factor` (the + / - keys), rounded and clamped to 2..512
+// Scales every cloth's resolution by `factor` (the ] / [ keys), rounded and clamped to 2..512
 // per axis; a count of 1 (a strip) stays 1. Returns false when nothing changed.
 bool scale_resolution(Scene& scene, double factor);
 

@@ -92,7 +92,7 @@ void SimSession::reset() {
   structure_error_.clear();
   divergence_.reset();
   ++generation_;
-  choose_threads();  // + / - may have crossed kParallelVertices
+  choose_threads();  // ] / [ may have crossed kParallelVertices
 }
 
 void SimSession::load(Scene scene) {

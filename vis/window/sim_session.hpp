@@ -53,7 +53,7 @@ class SimSession {
   // The panel's scene picker: runs `scene` from t = 0 instead (its own view, colliders and
   // look; recording stops). Throws SceneError when it cannot be built (the running one stays).
   void load(Scene scene);
-  // + / -: scales the draft's resolution by factor and resets.
+  // ] / [: scales the draft's resolution by factor and resets.
   void scale_resolution(double factor);
   // [ and ]: the number of copies of the scene's cloths (and the colliders under them) side by
   // side, 1..kMaxCopies, each simulated (sim/cloth/scene_copies.hpp); the run restarts at t = 0.

@@ -31,7 +31,7 @@ namespace clothlab::vis {
 namespace {
 
 constexpr int kInitialWidth = 1280, kInitialHeight = 800;
-constexpr double kResolutionFactor = 1.25;  // per + / - press
+constexpr double kResolutionFactor = 1.25;  // per ] / [ press
 constexpr double kTitleRefreshSeconds = 0.25;
 constexpr double kClickSlopPixels = 4.0;  // a press and release closer than this is a click
 
@@ -74,7 +74,7 @@ void ViewApp::report_backend() {
   std::printf("clothlab view: %s\n", shown_backend_note_.c_str());
 }
 
-// [ and ]: the scene's cloth repeated side by side, framed so every copy is in view.
+// + and -: the scene's cloth repeated side by side, framed so every copy is in view.
 void ViewApp::change_copies(int copies) {
   stop_recording();  // a new run starts at t = 0
   const std::string why = session_.set_copies(copies);
@@ -363,8 +363,7 @@ void ViewApp::push() {
 void ViewApp::release_pins() {
   session_.solver().release_pins();
   if (!session_.solver().pins_released()) return;
-  panel_.message = "pins released: the cloth drops (R pins it again)";
-  std::printf("clothlab view: %s\n", panel_.message.c_str());
+  std::printf("clothlab view: %s\n", kPinsReleasedMessage);
 }
 
 // The scripted Ctrl + left drag of CLOTHLAB_VIEW_DRAG: what the mouse callbacks would do.
