@@ -58,8 +58,12 @@ bool structure_editors(Scene& draft) {
   bool edited = false;
   for (ClothSpec& cloth : draft.cloths) {
     ImGui::PushID(cloth.key.c_str());
-    const std::string label = cloth.key + " resolution ([ ])";
+    // "<key> grid": "<key> resolution ([ ])" is wider than the labels' column.
+    const std::string label = cloth.key + " grid ([ ])";
     edited |= committed(ImGui::InputInt2(label.c_str(), cloth.resolution.data()));
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("%s.resolution: vertices along u and v; ] doubles, [ halves",
+                        cloth.key.c_str());
     ImGui::PopID();
   }
   return edited;
@@ -69,17 +73,15 @@ bool structure_editors(Scene& draft) {
 // render.quality: auto says what it chose for this GL renderer.
 void quality_editor(ViewSettings& view, const std::string& gl_renderer) {
   const RenderQuality chosen = resolve_quality(view.quality, gl_renderer);
+  // auto says what it chose and why inside the combo, which is as wide as the panel allows.
+  const std::string why = software_renderer(gl_renderer) ? " (software GL)" : " (GPU)";
   const std::string shown = view.quality == RenderQuality::automatic
-                                ? std::string("auto: ") + to_string(chosen)
+                                ? std::string("auto: ") + to_string(chosen) + why
                                 : std::string(to_string(view.quality));
   if (ImGui::BeginCombo("render quality", shown.c_str())) {
     for (const auto& [quality, name] : kRenderQualityNames)
       if (ImGui::Selectable(name, quality == view.quality)) view.quality = quality;
     ImGui::EndCombo();
-  }
-  if (view.quality == RenderQuality::automatic) {
-    ImGui::SameLine();
-    ImGui::TextDisabled(software_renderer(gl_renderer) ? "(software renderer)" : "(GPU)");
   }
 }
 
@@ -114,17 +116,18 @@ std::optional<Action> buttons(const SimSession& session) {
   ImGui::BeginDisabled(session.solver().pins_released());
   if (ImGui::Button("Drop (D)")) clicked = Action::release_pins;
   ImGui::EndDisabled();
+  if (ImGui::Button("Screenshot (F12)")) clicked = Action::screenshot;
   ImGui::SameLine();
-  if (ImGui::Button("Screenshot")) clicked = Action::screenshot;
   // Record writes the CSV trace of the pinned probe's vertex (or the scene's traced vertices).
   if (ImGui::Button(session.recording() ? "Stop recording" : "Record CSV"))
     clicked = Action::toggle_record;
-  ImGui::SameLine();
+  ImGui::PushTextWrapPos(0.0f);  // the panel is narrow: the hint and the path wrap
   if (session.recording())
     ImGui::TextColored(kErrorColour, "%ld rows to %s", session.recorded_rows(),
                        session.recording_path().c_str());
   else
-    ImGui::TextDisabled("pinned probe's vertex, else the scene's [trace]");
+    ImGui::TextDisabled("Record: the pinned probe's vertex, else the scene's [trace]");
+  ImGui::PopTextWrapPos();
   return clicked;
 }
 
