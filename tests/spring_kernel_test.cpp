@@ -42,11 +42,15 @@ Scene sized(int nu, int nv) {
 // for the same-row springs (1 and 2 wide), a grid shorter than the stencil's reach (3x3), one
 // band, several bands whose halos cross into the next, and a last band holding the remainder.
 // Tubes take the neighbour list (sim/model/model.cpp), so the band kernel never sees a seam.
+// Row widths against the kernel's vector runs of 16 (for_each_lane): 12 shorter than a run, 17
+// one whole run for di = +-1 and less than one for +-2, 33 two runs and a masked last run.
 std::vector<Scene> scenes() {
   return {damped(testing::sheet(12, 1.0, 0.5, 800.0, IntegratorKind::rk4, 1e-4)),
           sized(1, 7),
           sized(2, 30),
           sized(3, 3),
+          sized(17, 9),
+          sized(33, 10),
           sized(600, 20),  // 8-row bands: 2 bands, the second of 12 rows
           sized(20, 100),  // 26-row bands: 3 bands, the last of 48 rows
           two_cloths()};
