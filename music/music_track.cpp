@@ -15,6 +15,10 @@ MusicTrack load_music(const std::string& path) {
                      std::to_string(m.clip.sample_rate) +
                      " Hz is too low for the beat tracker (at least " +
                      std::to_string(kMinMusicRate) + " Hz: its high band starts at 2 kHz)");
+  if (m.clip.sample_rate > kMaxMusicRate)
+    throw AudioError("audio file '" + path + "': a sample rate of " +
+                     std::to_string(m.clip.sample_rate) + " Hz is beyond the highest in use (" +
+                     std::to_string(kMaxMusicRate) + " Hz)");
   m.analysis = track_beats(m.clip);
   m.source = path;
   return m;

@@ -10,8 +10,10 @@
 
 #include "load/scene_load.hpp"
 #include "sim/contact/collider.hpp"
+#include "sim/contact/feature_contacts.hpp"
 #include "sim/contact/sharp_features.hpp"
 #include "sim/mesh/closest_point.hpp"
+#include "sim/model/model.hpp"
 #include "sim/solver.hpp"
 
 namespace clothlab {
@@ -130,6 +132,20 @@ TEST(FeatureContacts, NoChairCornerInsideTheClothsThickness) {
   auto solver = make_solver(scene);
   const double closest = closest_approach(*solver, pose_only_collider(chair), corners, 2.0);
   EXPECT_GE(closest, 0.5 * chair.thickness);
+}
+
+// A collider at least one cloth edge thick needs no features (its vertex contacts keep every
+// point of a triangle off it) and gets none: a fuzzed chair 2 m thick, where every feature was
+// within the thickness of every triangle, took 0.36 s a step. One just thinner than the edge
+// keeps its features.
+TEST(FeatureContacts, NoneForAColliderAtLeastOneEdgeThick) {
+  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/drop_box.toml");
+  const Model<double> model = build_model<double>(scene);
+  const double edge = 0.05;
+  scene.colliders[0].thickness = edge;
+  EXPECT_TRUE(FeatureContacts<double>({Collider(scene.colliders[0])}, model, edge).empty());
+  scene.colliders[0].thickness = 0.99 * edge;
+  EXPECT_FALSE(FeatureContacts<double>({Collider(scene.colliders[0])}, model, edge).empty());
 }
 
 // The feature contacts run serially over the triangles after per-block marking, so the crate drop

@@ -65,6 +65,8 @@ clothlab_bad_input(cloth_text_coordinate 4 "cloth\\.file"
   "text_coordinate\\.obj: line 3: vertex x coordinate \"a\" is not a number")
 clothlab_bad_input(cloth_nan_coordinate 4 "cloth\\.file"
   "nan_coordinate\\.obj: line 2: vertex y coordinate \"nan\" is not finite")
+clothlab_bad_input(cloth_huge_exponent_zero 5 "cloth\\.file"
+  "huge_exponent_zero\\.obj: line 3: vertex z coordinate is not finite as the OBJ reader reads it")
 clothlab_bad_input(cloth_missing_coordinate 4 "cloth\\.file"
   "missing_coordinate\\.obj: line 3: vertex has no z coordinate")
 clothlab_bad_input(cloth_overflow_coordinate 4 "cloth\\.file"
@@ -77,6 +79,8 @@ clothlab_bad_input(cloth_fan 4 "cloth\\.file" "OBJ vertex 1 has 200 edges; a mes
 clothlab_bad_input(music_inf_sample 6 "music\\.file" "inf_sample\\.wav': sample 4000 \\(t = 0\\.5")
 clothlab_bad_input(music_rate_100hz 6 "music\\.file"
   "rate_100hz\\.wav': a sample rate of 100 Hz is too low for the beat tracker")
+clothlab_bad_input(music_rate_2147483647hz 7 "music\\.file"
+  "rate_2147483647hz\\.wav': a sample rate of 2147483647 Hz is beyond the highest in use")
 # The decoder's warnings come back as one line inside the message, after the file's name.
 clothlab_bad_input(music_id3_garbage 6 "music\\.file"
   "id3_garbage\\.mp3': not a sound file libsndfile can decode \\(decoder: [^\n]*\\)\n?$")

@@ -51,6 +51,7 @@ ObjScan scan_obj(const std::string& path) {
       continue;
     }
     if (word != "v") continue;
+    scan.vertex_lines.push_back(number);
     for (int a = 0; a < 3; ++a) {
       const std::string where = path + ": line " + std::to_string(number) + ": vertex ";
       if (!(words >> token)) throw ObjError(where + "has no " + kAxes[a] + " coordinate");

@@ -12,6 +12,8 @@ struct ObjScan {
   // The OBJ line of each face ("f ..."), in file order, and its corner count, so that the
   // triangles tinyobjloader fans a face into can be named by the line they came from.
   std::vector<int> face_lines, face_corners;
+  // The OBJ line of each vertex ("v ..."), in file order.
+  std::vector<int> vertex_lines;
 };
 
 // Throws ObjError ("path: line N: ...") for a vertex line whose x, y or z is missing, not a

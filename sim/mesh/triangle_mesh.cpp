@@ -4,6 +4,7 @@
 
 #include <tiny_obj_loader.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -28,8 +29,21 @@ TriangleMesh load_obj(const std::string& path, double scale) {
   }
   TriangleMesh mesh;
   const std::vector<float>& v = reader.GetAttrib().vertices;
-  for (std::size_t i = 0; i + 2 < v.size(); i += 3)
+  static const char* kAxes[] = {"x", "y", "z"};
+  for (std::size_t i = 0; i + 2 < v.size(); i += 3) {
+    // The scan checked the text with strtod; tinyobjloader parses numbers its own way and reads
+    // some that strtod takes as finite as nan ("0.e7000": 0 times 10^7000), so check its values.
+    for (std::size_t a = 0; a < 3; ++a) {
+      if (std::isfinite(v[i + a])) continue;
+      const std::size_t k = i / 3;
+      const std::string line =
+          k < scan.vertex_lines.size() ? "line " + std::to_string(scan.vertex_lines[k]) + ": " : "";
+      throw ObjError(path + ": " + line + "vertex " + kAxes[a] +
+                     " coordinate is not finite as the OBJ reader reads it (" +
+                     (std::isnan(v[i + a]) ? "nan" : "infinite") + ")");
+    }
     mesh.positions.emplace_back(scale * v[i], scale * v[i + 1], scale * v[i + 2]);
+  }
   const int count = static_cast<int>(mesh.positions.size());
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     const auto& indices = shape.mesh.indices;
