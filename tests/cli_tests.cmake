@@ -54,6 +54,8 @@ clothlab_bad_scene(non_finite 6 "springs\\.stiffness" "must be finite")
 clothlab_bad_scene(negative_dt 6 "solver\\.dt" "must be > 0")
 clothlab_bad_scene(zero_mass 4 "cloth\\.mass" "must be > 0")
 clothlab_bad_scene(pin_outside 4 "cloth\\.pins.1." "pin .8, 0. is outside the 8 x 8 grid")
+clothlab_bad_scene(mesh_pin_int_min 6 "cloth\\.pins.1."
+  "pin -2147483648 is not an OBJ vertex number \\(they count from 1\\)")
 clothlab_bad_scene(duplicate_pin 4 "cloth\\.pins.2." "pin .0, 0. is listed twice")
 clothlab_bad_scene(all_pinned 4 "cloth\\.pins" "every vertex is pinned")
 clothlab_bad_scene(unknown_integrator 6 "solver\\.integrator" "unknown integrator .leapfrog.")

@@ -95,7 +95,13 @@ void read_pins(TomlReader& in, void* object) {
     const std::string k = in.key() + "[" + std::to_string(n) + "]";
     in.note(k, *a.get(n));
     if (mesh) {
-      cloth.pins.push_back({in.small_integer(*a.get(n), k) - 1, 0});
+      // Refused here, before number - 1 could overflow (the fuzz pass's -2147483648).
+      const int number = in.small_integer(*a.get(n), k);
+      if (number < 1)
+        in.fail(
+            k, *a.get(n),
+            "pin " + std::to_string(number) + " is not an OBJ vertex number (they count from 1)");
+      cloth.pins.push_back({number - 1, 0});
     } else {
       const std::vector<int> ij = in.index_tuple(*a.get(n), k, 2, 2, "an [i, j] pair of integers");
       cloth.pins.push_back({ij[0], ij[1]});
