@@ -35,7 +35,10 @@ class StderrCapture {
     saved_ = file_ ? ::dup(2) : -1;
     if (saved_ >= 0) ::dup2(::fileno(file_), 2);
   }
-  ~StderrCapture() { restore(); }
+  ~StderrCapture() {
+    restore();
+    if (file_) std::fclose(file_);  // every read left one open descriptor (the fuzz pass: EMFILE)
+  }
   StderrCapture(const StderrCapture&) = delete;
   StderrCapture& operator=(const StderrCapture&) = delete;
 
