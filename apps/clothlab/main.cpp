@@ -249,17 +249,18 @@ CLI::App* add_view(CLI::App& app, ViewArgs& view) {
                    "start with this many copies of the cloth side by side (+ and - change it)")
       ->check(between(1, 64));
 
-  // The keys, as the window's help overlay (H) lists them.
+  // The keys and the mouse, as the window's help overlay (H) lists them.
   std::string keys = "\nKeys in the window:\n";
-  for (const vis::KeyBinding& k : vis::key_bindings()) {
-    char line[160];
-    std::snprintf(line, sizeof line, "  %-6.*s %.*s\n", int(k.name.size()), k.name.data(),
-                  int(k.help.size()), k.help.data());
+  auto add_line = [&keys](std::string_view what, std::string_view help, int width) {
+    char line[200];
+    std::snprintf(line, sizeof line, "  %-*.*s %.*s\n", width, int(what.size()), what.data(),
+                  int(help.size()), help.data());
     keys += line;
-  }
-  view_cmd->footer(keys +
-                   "Mouse: left drag orbits, right drag pans, the wheel zooms, Ctrl + left drag "
-                   "pulls the cloth.");
+  };
+  for (const vis::KeyBinding& k : vis::key_bindings()) add_line(k.name, k.help, 6);
+  keys += "Mouse:\n";
+  for (const vis::MouseBinding& m : vis::mouse_bindings()) add_line(m.gesture, m.help, 16);
+  view_cmd->footer(keys);
   return view_cmd;
 }
 

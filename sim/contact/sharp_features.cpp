@@ -1,6 +1,7 @@
 #include "sim/contact/sharp_features.hpp"
 
 #include <map>
+#include <numbers>
 #include <utility>
 
 #include "sim/mesh/triangle_mesh.hpp"
@@ -9,7 +10,6 @@ namespace clothlab {
 namespace {
 
 using V3 = Eigen::Vector3d;
-constexpr double kPi = 3.14159265358979323846;
 
 // Points strictly between a and b, at most `spacing` apart (the ends are features of their own),
 // and no more than kMaxEdgePoints of them: a box kilometres long against a metre of cloth gets
@@ -64,7 +64,7 @@ V3 face_normal(const TriangleMesh& mesh, const std::array<int, 3>& t) {
 // vertex's outward direction its angle-weighted normal (Thuermer & Wuethrich 1998), a crease's
 // the mean of its two faces' normals.
 void mesh_features(SharpFeatures& f, const TriangleMesh& mesh, double spacing) {
-  const double crease_cos = std::cos(SharpFeatures::kCreaseDegrees * kPi / 180.0);
+  const double crease_cos = std::cos(SharpFeatures::kCreaseDegrees * std::numbers::pi / 180.0);
   const std::size_t nv = mesh.positions.size();
   std::vector<V3> normal(nv, V3::Zero());
   std::vector<char> sharp(nv, 0);

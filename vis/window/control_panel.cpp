@@ -302,17 +302,12 @@ void draw_help_overlay(bool& open) {
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(b.help.data(), b.help.data() + b.help.size());
       }
-      const char* mouse[][2] = {
-          {"left drag", "orbit"},
-          {"right drag", "pan"},
-          {"wheel", "zoom"},
-          {"Ctrl + left drag", "pull the cloth at the vertex under the cursor"}};
-      for (const auto& row : mouse) {
+      for (const MouseBinding& m : mouse_bindings()) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(row[0]);
+        ImGui::TextUnformatted(m.gesture.data(), m.gesture.data() + m.gesture.size());
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(row[1]);
+        ImGui::TextUnformatted(m.help.data(), m.help.data() + m.help.size());
       }
       ImGui::EndTable();
     }

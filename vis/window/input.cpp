@@ -109,6 +109,15 @@ std::span<const KeyBinding> key_bindings() {
   return kBindings;
 }
 
+std::span<const MouseBinding> mouse_bindings() {
+  static constexpr MouseBinding kMouse[] = {
+      {"left drag", "orbit"},
+      {"right drag", "pan"},
+      {"wheel", "zoom"},
+      {"Ctrl + left drag", "pull the cloth at the vertex under the cursor"}};
+  return kMouse;
+}
+
 std::optional<Action> action_for_key(int glfw_key, int glfw_action) {
   if (glfw_action != GLFW_PRESS && glfw_action != GLFW_REPEAT) return std::nullopt;
   for (const KeyBinding& b : kBindings) {

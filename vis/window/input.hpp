@@ -50,6 +50,13 @@ struct KeyBinding {
 
 std::span<const KeyBinding> key_bindings();
 
+// The mouse's gestures (handled by the window's mouse callbacks, not through actions), as the help
+// overlay and `clothlab view --help` list them.
+struct MouseBinding {
+  std::string_view gesture, help;
+};
+std::span<const MouseBinding> mouse_bindings();
+
 // The action of a GLFW key event (GLFW_PRESS or GLFW_REPEAT), if any.
 std::optional<Action> action_for_key(int glfw_key, int glfw_action);
 // The action named like a binding ("P", "Space", "F12"; "[" and "]" also as "LeftBracket" and
