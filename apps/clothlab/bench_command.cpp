@@ -50,7 +50,7 @@ int run_bench(const BenchArgs& args) {
   std::cout << "clothlab bench: one-minute load average before the run "
             << bench::fixed(bench::load_average(), 2)
             << " (the machine's other work; timings are only comparable within one run); OpenMP "
-            << "waits: " << openmp_wait_policy() << "\n";
+            << openmp_wait_policy() << "\n";
   try {
     for (const std::string& suite : suites) {
       // One suite: --out is its CSV file. All suites: --out is a directory.

@@ -4,48 +4,13 @@
 #include <cmath>
 
 #include "sim/core/parallel.hpp"
+#include "sim/forces/body_forces.hpp"
 #include "sim/forces/grid_spring_forces.hpp"
 #include "sim/forces/spring_forces.hpp"
 #include "sim/forces/wind.hpp"
 
 namespace clothlab {
 namespace {
-
-// f = gravity and/or linear drag on [b, e) (overwrites). The default, both fused, is the step
-// loop's; one alone serves compute_force_source.
-template <class T, bool Gravity = true, bool Drag = true>
-void add_body_forces(const Model<T>& m, const Vec3Array<T>& v, Vec3Array<T>& f, std::size_t b,
-                     std::size_t e) {
-  static_assert(Gravity || Drag);
-  const T gx = m.gravity[0], gy = m.gravity[1], gz = m.gravity[2], drag = m.drag;
-#pragma omp simd
-  for (std::size_t i = b; i < e; ++i) {
-    const T mi = m.mass[i];
-    if constexpr (Gravity && Drag) {
-      f.x[i] = mi * gx - drag * v.x[i];
-      f.y[i] = mi * gy - drag * v.y[i];
-      f.z[i] = mi * gz - drag * v.z[i];
-    } else if constexpr (Gravity) {
-      f.x[i] = mi * gx;
-      f.y[i] = mi * gy;
-      f.z[i] = mi * gz;
-    } else {
-      f.x[i] = -(drag * v.x[i]);
-      f.y[i] = -(drag * v.y[i]);
-      f.z[i] = -(drag * v.z[i]);
-    }
-  }
-}
-
-template <class T>
-void zero_forces(Vec3Array<T>& f, std::size_t b, std::size_t e) {
-#pragma omp simd
-  for (std::size_t i = b; i < e; ++i) {
-    f.x[i] = T(0);
-    f.y[i] = T(0);
-    f.z[i] = T(0);
-  }
-}
 
 // The spring forces over the model's kernel (bands of grid rows, or vertex blocks), each band
 // or block first initialised by start(b, e): the body forces for compute_forces, zero for the
@@ -161,8 +126,8 @@ void add_wind_forces(const WindField& wind, double t, const Vec3Array<T>& x, con
 template <class T>
 void add_wind(const Model<T>& m, double t, const Vec3Array<T>& x, const Vec3Array<T>& v,
               Vec3Array<T>& f, ForceWorkspace<T>& ws, int threads) {
+  if (!wind_acts(m)) return;
   const WindField wind(m.wind);
-  if (!m.wind.enabled || wind.calm() || m.triangles.empty()) return;
   compute_surface(m, x, ws, threads);
   for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) {
     add_wind_forces(wind, t, x, v, ws, f, b, e);
@@ -170,6 +135,11 @@ void add_wind(const Model<T>& m, double t, const Vec3Array<T>& x, const Vec3Arra
 }
 
 }  // namespace
+
+template <class T>
+bool wind_acts(const Model<T>& m) {
+  return m.wind.enabled && !WindField(m.wind).calm() && !m.triangles.empty();
+}
 
 template <class T>
 void compute_forces(const Model<T>& m, double t, const Vec3Array<T>& x, const Vec3Array<T>& v,
@@ -240,6 +210,8 @@ void compute_surface_from_triangles(const Model<T>& m, const Vec3Array<T>& x, Fo
                  [&](std::size_t b, std::size_t e) { compute_vertex_normals(m, ws, b, e); });
 }
 
+template bool wind_acts<float>(const Model<float>&);
+template bool wind_acts<double>(const Model<double>&);
 template void compute_surface_from_triangles<float>(const Model<float>&, const Vec3Array<float>&,
                                                     ForceWorkspace<float>&, int);
 template void compute_surface_from_triangles<double>(const Model<double>&, const Vec3Array<double>&,

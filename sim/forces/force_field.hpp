@@ -35,6 +35,10 @@ struct ForceWorkspace {
   }
 };
 
+// Whether the wind exerts a force on the model: enabled, not calm, and a surface to act on.
+template <class T>
+bool wind_acts(const Model<T>& m);
+
 // f = F(t, x, v) on all vertices (pinned ones included: their force is the support reaction).
 template <class T>
 void compute_forces(const Model<T>& m, double t, const Vec3Array<T>& x, const Vec3Array<T>& v,

@@ -1,0 +1,122 @@
+// The one-stage integrators update a grid cloth's rows inside the force sweep
+// (sim/forces/fused_band_pass.hpp). That must be the same step, bit for bit, as the force pass
+// followed by the update, on every stencil edge case and thread count: the test takes the
+// unfused step by hand (compute_forces, then the rule on every vertex) and compares bits.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sim/forces/fused_band_pass.hpp"
+#include "sim/integrators/integrator.hpp"
+#include "test_scenes.hpp"
+
+namespace clothlab {
+namespace {
+
+Scene sized(int nu, int nv, double damping) {
+  Scene s = testing::sheet(nu, 1.0, 0.3, 500.0, IntegratorKind::symplectic_euler, 1e-4);
+  s.cloths[0].resolution = {nu, nv};
+  s.cloths[0].pins = {{0, 0}, {nu - 1, 0}};
+  s.springs.damping = damping;
+  s.forces.drag = 0.01;
+  return s;
+}
+
+Scene two_cloths() {
+  Scene s = sized(9, 9, 0.07);
+  ClothSpec second = s.cloths[0];
+  second.resolution = {5, 40};
+  second.size = {0.4, 1.3};
+  second.origin = {2.0, 0.0, 0.0};
+  second.pins = {{0, 0}};
+  s.cloths.push_back(second);
+  s.multi_cloth = true;
+  return s;
+}
+
+// Rows narrower than the same-row stencil (1, 2), a grid shorter than the stencil's reach (3x3),
+// one band, 2 and 3 bands (the last one longer), undamped springs, and two cloths.
+std::vector<Scene> scenes() {
+  return {sized(1, 7, 0.05),    sized(2, 30, 0.05),  sized(3, 3, 0.05),    sized(33, 10, 0.05),
+          sized(600, 20, 0.05), sized(20, 100, 0.0), sized(17, 130, 0.05), two_cloths()};
+}
+
+// A state off rest, so every spring pulls or pushes and damps.
+template <class T>
+State<T> disturbed(const Model<T>& m) {
+  State<T> s{m.rest_positions, {}};
+  s.vel.resize(m.n);
+  for (std::size_t i = 0; i < m.n; ++i) {
+    const double u = double(i);
+    s.pos.x[i] += T(0.01 * std::sin(0.7 * u));
+    s.pos.z[i] += T(0.02 * std::cos(1.1 * u));
+    if (m.inv_mass[i] != T(0))
+      s.vel.set(i, T(0.3 * std::sin(1.3 * u)), T(-0.5 + 0.2 * std::cos(0.9 * u)),
+                T(0.4 * std::sin(2.1 * u)));
+  }
+  return s;
+}
+
+// Symplectic Euler as SymplecticEulerRule has it: v += dt a, x += dt v.
+template <class T>
+void unfused_step(const Model<T>& m, ForceWorkspace<T>& ws, State<T>& s, T dt) {
+  Vec3Array<T> f;
+  f.resize(m.n);
+  compute_forces(m, 0.0, s.pos, s.vel, f, ws, 1);
+  for (int a = 0; a < 3; ++a) {
+    for (std::size_t i = 0; i < m.n; ++i) {
+      T& v = s.vel.axis(a)[i];
+      v += dt * (f.axis(a)[i] * m.inv_mass[i]);
+      s.pos.axis(a)[i] += dt * v;
+    }
+  }
+}
+
+template <class T>
+void expect_same_bits(const Scene& scene, int threads) {
+  const Model<T> m = build_model<T>(scene);
+  ASSERT_TRUE(band_pass_fusable(m));
+  ForceWorkspace<T> ws;
+  ws.resize(m);
+  const System<T> sys{m, ws, threads};
+  const auto integrator = make_integrator<T>(m, scene.solver);
+  State<T> fused = disturbed(m), by_hand = fused;
+  const T dt = T(1e-4);
+  for (int k = 0; k < 3; ++k) {
+    integrator->step(sys, fused, 0.0, dt);
+    unfused_step(m, ws, by_hand, dt);
+  }
+  for (int a = 0; a < 3; ++a) {
+    for (std::size_t i = 0; i < m.n; ++i) {
+      ASSERT_EQ(fused.pos.axis(a)[i], by_hand.pos.axis(a)[i]) << "vertex " << i << " axis " << a;
+      ASSERT_EQ(fused.vel.axis(a)[i], by_hand.vel.axis(a)[i]) << "vertex " << i << " axis " << a;
+    }
+  }
+  // The step moved the cloth: the comparison is not between two untouched copies.
+  EXPECT_NE(fused.pos.x[m.n - 1], m.rest_positions.x[m.n - 1]);
+}
+
+TEST(FusedStep, SameBitsAsForcesThenUpdateInFloat) {
+  for (const Scene& s : scenes())
+    for (int threads : {1, 2, 3}) expect_same_bits<float>(s, threads);
+}
+
+TEST(FusedStep, SameBitsAsForcesThenUpdateInDouble) {
+  for (const Scene& s : scenes())
+    for (int threads : {1, 2, 3}) expect_same_bits<double>(s, threads);
+}
+
+// The wind needs every normal before any force, so a windy scene keeps the two passes.
+TEST(FusedStep, WindKeepsTheSeparatePasses) {
+  Scene s = sized(8, 8, 0.05);
+  s.forces.wind.enabled = true;
+  s.forces.wind.velocity = {3.0, 0.0, 1.0};
+  EXPECT_FALSE(band_pass_fusable(build_model<float>(s)));
+  s.forces.wind.velocity = {0.0, 0.0, 0.0};  // calm air exerts nothing
+  EXPECT_TRUE(band_pass_fusable(build_model<float>(s)));
+  EXPECT_FALSE(
+      band_pass_fusable(build_model<float>(sized(8, 8, 0.05), SpringKernel::neighbour_list)));
+}
+
+}  // namespace
+}  // namespace clothlab
