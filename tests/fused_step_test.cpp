@@ -1,7 +1,8 @@
-// The one-stage integrators update a grid cloth's rows inside the force sweep
+// The explicit integrators update a grid cloth's rows inside the force sweep
 // (sim/forces/fused_band_pass.hpp). That must be the same step, bit for bit, as the force pass
-// followed by the update, on every stencil edge case and thread count: the test takes the
-// unfused step by hand (compute_forces, then the rule on every vertex) and compares bits.
+// followed by the update, on every stencil edge case and thread count: the first tests take
+// symplectic Euler's unfused step by hand (compute_forces, then the rule on every vertex), the
+// next every explicit method with System::fuse off.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -104,6 +105,43 @@ TEST(FusedStep, SameBitsAsForcesThenUpdateInFloat) {
 TEST(FusedStep, SameBitsAsForcesThenUpdateInDouble) {
   for (const Scene& s : scenes())
     for (int threads : {1, 2, 3}) expect_same_bits<double>(s, threads);
+}
+
+// Every integrator that updates inside the sweep (System::forces_then) against the same
+// integrator making two passes (System::fuse = false), a few steps from a disturbed state.
+template <class T>
+void expect_fused_equals_two_passes(const Scene& base, IntegratorKind kind, int threads) {
+  Scene scene = base;
+  scene.solver.integrator = kind;
+  const Model<T> m = build_model<T>(scene);
+  ForceWorkspace<T> ws;
+  ws.resize(m);
+  System<T> fused{m, ws, threads}, two_passes{m, ws, threads};
+  two_passes.fuse = false;
+  const auto a = make_integrator<T>(m, scene.solver), b = make_integrator<T>(m, scene.solver);
+  State<T> sa = disturbed(m), sb = sa;
+  for (int k = 0; k < 3; ++k) {
+    a->step(fused, sa, 0.0, T(1e-4));
+    b->step(two_passes, sb, 0.0, T(1e-4));
+  }
+  for (int c = 0; c < 3; ++c) {
+    for (std::size_t i = 0; i < m.n; ++i) {
+      ASSERT_EQ(sa.pos.axis(c)[i], sb.pos.axis(c)[i]) << to_string(kind) << " vertex " << i;
+      ASSERT_EQ(sa.vel.axis(c)[i], sb.vel.axis(c)[i]) << to_string(kind) << " vertex " << i;
+    }
+  }
+}
+
+TEST(FusedStep, EveryExplicitMethodSameBitsAsTwoPasses) {
+  using K = IntegratorKind;
+  for (const Scene& s : scenes()) {
+    for (K kind : {K::explicit_euler, K::symplectic_euler, K::seed_hack, K::verlet, K::rk4}) {
+      for (int threads : {1, 3}) {
+        expect_fused_equals_two_passes<float>(s, kind, threads);
+        expect_fused_equals_two_passes<double>(s, kind, threads);
+      }
+    }
+  }
 }
 
 // The wind needs every normal before any force, so a windy scene keeps the two passes.

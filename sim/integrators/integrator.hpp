@@ -4,7 +4,9 @@
 
 #include <memory>
 
+#include "sim/core/parallel.hpp"
 #include "sim/forces/force_field.hpp"
+#include "sim/forces/fused_band_pass.hpp"
 #include "sim/model/model.hpp"
 
 namespace clothlab {
@@ -21,8 +23,26 @@ struct System {
   ForceWorkspace<T>& workspace;
   int threads = 1;
 
+  // false: forces_then() makes two passes where it could make one (tests compare the two).
+  bool fuse = true;
+
   void forces(double t, const Vec3Array<T>& x, const Vec3Array<T>& v, Vec3Array<T>& f) const {
     compute_forces(model, t, x, v, f, workspace, threads);
+  }
+
+  // f = F(t, x, v), then update(b, e) on vertex ranges that cover every vertex once, each as soon
+  // as its force is final: inside the force sweep on grid cloths without wind
+  // (sim/forces/fused_band_pass.hpp), else as a second pass over vertex blocks. update may write
+  // x and v in its own range.
+  template <class Update>
+  void forces_then(double t, const Vec3Array<T>& x, const Vec3Array<T>& v, Vec3Array<T>& f,
+                   Update&& update) const {
+    if (fuse && band_pass_fusable(model)) {
+      forces_then_update(model, x, v, f, workspace, threads, update);
+      return;
+    }
+    forces(t, x, v, f);
+    for_each_block(model.n, threads, update);
   }
 };
 

@@ -4,8 +4,6 @@
 // cloths without wind the update runs inside the force sweep (sim/forces/fused_band_pass.hpp).
 #pragma once
 
-#include "sim/core/parallel.hpp"
-#include "sim/forces/fused_band_pass.hpp"
 #include "sim/integrators/integrator.hpp"
 
 namespace clothlab {
@@ -16,13 +14,8 @@ class SingleEvaluation final : public Integrator<T> {
   explicit SingleEvaluation(std::size_t n) { f_.resize(n); }
 
   void step(const System<T>& sys, State<T>& s, double t, T dt) override {
-    const auto update = [&](std::size_t b, std::size_t e) { apply_rule(sys.model, s, dt, b, e); };
-    if (band_pass_fusable(sys.model)) {
-      forces_then_update(sys.model, s.pos, s.vel, f_, sys.workspace, sys.threads, update);
-      return;
-    }
-    sys.forces(t, s.pos, s.vel, f_);
-    for_each_block(s.pos.size(), sys.threads, update);
+    sys.forces_then(t, s.pos, s.vel, f_,
+                    [&](std::size_t b, std::size_t e) { apply_rule(sys.model, s, dt, b, e); });
   }
 
  private:

@@ -37,15 +37,16 @@ class Verlet final : public Integrator<T> {
         }
       }
     });
-    sys.forces(t + static_cast<double>(dt), s.pos, v_pred_, f_);
-    for_each_block(s.pos.size(), sys.threads, [&](std::size_t b, std::size_t e) {
-      for (int a = 0; a < 3; ++a) {
-        T* v = s.vel.axis(a).data();
-        const T* f = f_.axis(a).data();
+    // The second kick, inside the force sweep where it can be (System::forces_then).
+    sys.forces_then(t + static_cast<double>(dt), s.pos, v_pred_, f_,
+                    [&](std::size_t b, std::size_t e) {
+                      for (int a = 0; a < 3; ++a) {
+                        T* v = s.vel.axis(a).data();
+                        const T* f = f_.axis(a).data();
 #pragma omp simd
-        for (std::size_t i = b; i < e; ++i) v[i] += half_dt * f[i] * inv_m[i];
-      }
-    });
+                        for (std::size_t i = b; i < e; ++i) v[i] += half_dt * f[i] * inv_m[i];
+                      }
+                    });
     force_valid_ = true;
   }
 
