@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 
 #include "sim/forces/body_forces.hpp"
 #include "sim/forces/force_field.hpp"
