@@ -14,34 +14,6 @@
 namespace clothlab {
 namespace {
 
-Scene sized(int nu, int nv, double damping) {
-  Scene s = testing::sheet(nu, 1.0, 0.3, 500.0, IntegratorKind::symplectic_euler, 1e-4);
-  s.cloths[0].resolution = {nu, nv};
-  s.cloths[0].pins = {{0, 0}, {nu - 1, 0}};
-  s.springs.damping = damping;
-  s.forces.drag = 0.01;
-  return s;
-}
-
-Scene two_cloths() {
-  Scene s = sized(9, 9, 0.07);
-  ClothSpec second = s.cloths[0];
-  second.resolution = {5, 40};
-  second.size = {0.4, 1.3};
-  second.origin = {2.0, 0.0, 0.0};
-  second.pins = {{0, 0}};
-  s.cloths.push_back(second);
-  s.multi_cloth = true;
-  return s;
-}
-
-// Rows narrower than the same-row stencil (1, 2), a grid shorter than the stencil's reach (3x3),
-// one band, 2 and 3 bands (the last one longer), undamped springs, and two cloths.
-std::vector<Scene> scenes() {
-  return {sized(1, 7, 0.05),    sized(2, 30, 0.05),  sized(3, 3, 0.05),    sized(33, 10, 0.05),
-          sized(600, 20, 0.05), sized(20, 100, 0.0), sized(17, 130, 0.05), two_cloths()};
-}
-
 // A state off rest, so every spring pulls or pushes and damps.
 template <class T>
 State<T> disturbed(const Model<T>& m) {
@@ -74,7 +46,8 @@ void unfused_step(const Model<T>& m, ForceWorkspace<T>& ws, State<T>& s, T dt) {
 }
 
 template <class T>
-void expect_same_bits(const Scene& scene, int threads) {
+void expect_same_bits(Scene scene, int threads) {
+  scene.solver.integrator = IntegratorKind::symplectic_euler;
   const Model<T> m = build_model<T>(scene);
   ASSERT_TRUE(band_pass_fusable(m));
   ForceWorkspace<T> ws;
@@ -98,12 +71,12 @@ void expect_same_bits(const Scene& scene, int threads) {
 }
 
 TEST(FusedStep, SameBitsAsForcesThenUpdateInFloat) {
-  for (const Scene& s : scenes())
+  for (const Scene& s : testing::band_edge_cases())
     for (int threads : {1, 2, 3}) expect_same_bits<float>(s, threads);
 }
 
 TEST(FusedStep, SameBitsAsForcesThenUpdateInDouble) {
-  for (const Scene& s : scenes())
+  for (const Scene& s : testing::band_edge_cases())
     for (int threads : {1, 2, 3}) expect_same_bits<double>(s, threads);
 }
 
@@ -134,7 +107,7 @@ void expect_fused_equals_two_passes(const Scene& base, IntegratorKind kind, int 
 
 TEST(FusedStep, EveryExplicitMethodSameBitsAsTwoPasses) {
   using K = IntegratorKind;
-  for (const Scene& s : scenes()) {
+  for (const Scene& s : testing::band_edge_cases()) {
     for (K kind : {K::explicit_euler, K::symplectic_euler, K::seed_hack, K::verlet, K::rk4}) {
       for (int threads : {1, 3}) {
         expect_fused_equals_two_passes<float>(s, kind, threads);
@@ -146,14 +119,14 @@ TEST(FusedStep, EveryExplicitMethodSameBitsAsTwoPasses) {
 
 // The wind needs every normal before any force, so a windy scene keeps the two passes.
 TEST(FusedStep, WindKeepsTheSeparatePasses) {
-  Scene s = sized(8, 8, 0.05);
+  Scene s = testing::grid_sheet(8, 8);
   s.forces.wind.enabled = true;
   s.forces.wind.velocity = {3.0, 0.0, 1.0};
   EXPECT_FALSE(band_pass_fusable(build_model<float>(s)));
   s.forces.wind.velocity = {0.0, 0.0, 0.0};  // calm air exerts nothing
   EXPECT_TRUE(band_pass_fusable(build_model<float>(s)));
-  EXPECT_FALSE(
-      band_pass_fusable(build_model<float>(sized(8, 8, 0.05), SpringKernel::neighbour_list)));
+  EXPECT_FALSE(band_pass_fusable(
+      build_model<float>(testing::grid_sheet(8, 8), SpringKernel::neighbour_list)));
 }
 
 }  // namespace

@@ -12,50 +12,6 @@
 namespace clothlab {
 namespace {
 
-Scene damped(Scene s) {
-  s.springs.damping = 0.07;
-  s.forces.drag = 0.01;
-  return s;
-}
-
-Scene two_cloths() {
-  Scene s = damped(testing::sheet(9, 1.0, 0.4, 600.0, IntegratorKind::symplectic_euler, 1e-4));
-  ClothSpec second = s.cloths[0];
-  second.resolution = {5, 12};
-  second.size = {0.4, 1.3};  // anisotropic spacing: the stencil reaches further along u
-  second.origin = {2.0, 0.0, 0.0};
-  second.springs = SpringSpec{};  // its own springs, undamped
-  second.springs->stiffness = 300.0;
-  s.cloths.push_back(second);
-  s.multi_cloth = true;
-  return s;
-}
-
-Scene sized(int nu, int nv) {
-  Scene s = damped(testing::sheet(nu, 1.0, 0.3, 500.0, IntegratorKind::verlet, 1e-4));
-  s.cloths[0].resolution = {nu, nv};
-  s.cloths[0].pins = {{0, 0}, {nu - 1, 0}};
-  return s;
-}
-
-// Every stencil edge case of the band kernel (sim/forces/grid_spring_forces.hpp): rows too short
-// for the same-row springs (1 and 2 wide), a grid shorter than the stencil's reach (3x3), one
-// band, several bands whose halos cross into the next, and a last band holding the remainder.
-// Tubes take the neighbour list (sim/model/model.cpp), so the band kernel never sees a seam.
-// Row widths against the kernel's vector runs of 16 (for_each_lane): 12 shorter than a run, 17
-// one whole run for di = +-1 and less than one for +-2, 33 two runs and a masked last run.
-std::vector<Scene> scenes() {
-  return {damped(testing::sheet(12, 1.0, 0.5, 800.0, IntegratorKind::rk4, 1e-4)),
-          sized(1, 7),
-          sized(2, 30),
-          sized(3, 3),
-          sized(17, 9),
-          sized(33, 10),
-          sized(600, 20),  // 8-row bands: 2 bands, the second of 12 rows
-          sized(20, 100),  // 26-row bands: 3 bands, the last of 48 rows
-          two_cloths()};
-}
-
 void perturb(Solver& s, unsigned seed) {
   std::mt19937 rng(seed);
   std::normal_distribution<double> normal(0.0, 1.0);
@@ -94,17 +50,17 @@ void expect_same_physics(const Scene& scene, double tolerance) {
 }
 
 TEST(SpringKernels, RowSweepEqualsNeighbourListInDouble) {
-  for (const Scene& s : scenes()) expect_same_physics<double>(s, 1e-13);
+  for (const Scene& s : testing::band_edge_cases()) expect_same_physics<double>(s, 1e-13);
 }
 
 TEST(SpringKernels, RowSweepEqualsNeighbourListInFloat) {
-  for (const Scene& s : scenes()) expect_same_physics<float>(s, 1e-6);
+  for (const Scene& s : testing::band_edge_cases()) expect_same_physics<float>(s, 1e-6);
 }
 
 // The bands of a grid are fixed by its size, never by the thread count, and each vertex sums its
 // forces in one order: 1 and 2 threads give the same bits, on a grid of 8 bands.
 TEST(SpringKernels, BandsGiveTheSameBitsOnOneAndTwoThreads) {
-  Scene scene = sized(64, 64);
+  Scene scene = testing::grid_sheet(64, 64);
   scene.solver.integrator = IntegratorKind::symplectic_euler;
   const auto one_owner = testing::solver<float>(scene), two_owner = testing::solver<float>(scene);
   Solver &one = *one_owner, &two = *two_owner;

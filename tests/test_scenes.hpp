@@ -57,6 +57,53 @@ inline Scene sheet(int res, double size, double mass, double stiffness, Integrat
   return s;
 }
 
+// An nu x nv sheet (1 m, 0.3 kg, 500 N/m) pinned at the two ends of its first row, with
+// along-spring damping (0: the undamped kernel) and drag 0.01 N*s/m.
+inline Scene grid_sheet(int nu, int nv, double damping = 0.07) {
+  Scene s = sheet(nu, 1.0, 0.3, 500.0, IntegratorKind::verlet, 1e-4);
+  s.cloths[0].resolution = {nu, nv};
+  s.cloths[0].pins = {{0, 0}, {nu - 1, 0}};
+  s.springs.damping = damping;
+  s.forces.drag = 0.01;
+  return s;
+}
+
+// Every stencil edge case of the band kernel (sim/forces/grid_spring_forces.hpp) and of the update
+// inside its sweep (sim/forces/fused_band_pass.hpp): rows too short for the same-row springs (1
+// and 2 wide), a grid shorter than the stencil's reach (3x3), one band, several bands whose halos
+// cross into the next, a last band holding the remainder, undamped springs, and two cloths (the
+// second with anisotropic spacing, so the stencil reaches further along u, and its own undamped
+// springs). Row widths against the kernel's vector runs of 16 (for_each_lane): 12 shorter than a
+// run, 17 one whole run for di = +-1 and less than one for +-2, 33 two runs and a masked last run.
+// Tubes take the neighbour list (sim/model/model.cpp), so the band kernel never sees a seam.
+inline std::vector<Scene> band_edge_cases() {
+  const auto damped = [](Scene s) {
+    s.springs.damping = 0.07;
+    s.forces.drag = 0.01;
+    return s;
+  };
+  Scene two = damped(sheet(9, 1.0, 0.4, 600.0, IntegratorKind::symplectic_euler, 1e-4));
+  ClothSpec second = two.cloths[0];
+  second.resolution = {5, 12};
+  second.size = {0.4, 1.3};
+  second.origin = {2.0, 0.0, 0.0};
+  second.springs = SpringSpec{};
+  second.springs->stiffness = 300.0;
+  two.cloths.push_back(second);
+  two.multi_cloth = true;
+  return {damped(sheet(12, 1.0, 0.5, 800.0, IntegratorKind::rk4, 1e-4)),
+          grid_sheet(1, 7),
+          grid_sheet(2, 30),
+          grid_sheet(3, 3),
+          grid_sheet(17, 9),
+          grid_sheet(33, 10),
+          grid_sheet(600, 20),  // 8-row bands: 2 bands, the second of 12 rows
+          grid_sheet(20, 100),  // 26-row bands: 3 bands, the last of 48 rows
+          grid_sheet(17, 130),  // 31-row bands: 4 bands, the last of 37 rows
+          grid_sheet(20, 100, 0.0),
+          two};
+}
+
 // docs/design.md "Accuracy benchmark scenes": a res x res sheet, 1 m, 0.2 kg, stiffness 1000 N/m,
 // along-spring damping 0.05 N*s/m, lying horizontal and pinned at the two corners of one edge,
 // released at rest (the accuracy suite's scene, bench/suites/lab_scenes.hpp), in double.

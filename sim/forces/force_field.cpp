@@ -24,18 +24,12 @@ void spring_pass(const Model<T>& m, const Vec3Array<T>& x, const Vec3Array<T>& v
     for (std::size_t c = 0; c < m.grids.size(); ++c) {
       const GridStencil<T>& g = m.grids[c];
       GridBands<T>& bands = ws.grid_bands[c];
-      auto row = [&](int j) {
-        return static_cast<std::size_t>(g.offset) + static_cast<std::size_t>(j) * g.nu;
-      };
       for_each_index_then(
           bands.count, threads,
           [&](int b) {
-            start(row(bands.first_row(b)), row(bands.end_row(b, g.nv)));
-            if (damped) {
-              add_band_spring_forces<T, true>(g, bands, x, v, f, b);
-            } else {
-              add_band_spring_forces<T, false>(g, bands, x, v, f, b);
-            }
+            const auto [begin, end] = grid_rows(g, bands.first_row(b), bands.end_row(b, g.nv));
+            start(begin, end);
+            add_band_spring_forces(g, bands, x, v, f, b, damped);
           },
           [&](int b) { add_band_halo(g, bands, f, b); });
     }

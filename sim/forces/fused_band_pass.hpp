@@ -17,7 +17,6 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <utility>
 
 #include "sim/forces/body_forces.hpp"
 #include "sim/forces/force_field.hpp"
@@ -34,15 +33,6 @@ bool band_pass_fusable(const Model<T>& m) {
 
 namespace detail {
 
-// Rows [j_begin, j_end) of grid g as vertex indices.
-template <class T>
-std::pair<std::size_t, std::size_t> grid_rows(const GridStencil<T>& g, int j_begin, int j_end) {
-  const auto row = [&](int j) {
-    return static_cast<std::size_t>(g.offset) + static_cast<std::size_t>(j) * g.nu;
-  };
-  return {row(j_begin), row(j_end)};
-}
-
 // Band b's springs, then what of it may be updated now (see the file comment); `first` marks
 // the first band of a thread's run.
 template <class T, class Update>
@@ -52,10 +42,7 @@ void band_forces_then_update(const Model<T>& m, const GridStencil<T>& g, GridBan
   const int j0 = bands.first_row(b), j1 = bands.end_row(b, g.nv);
   const auto [begin, end] = grid_rows(g, j0, j1);
   add_body_forces(m, v, f, begin, end);
-  if (m.has_damping)
-    add_band_spring_forces<T, true>(g, bands, x, v, f, b);
-  else
-    add_band_spring_forces<T, false>(g, bands, x, v, f, b);
+  add_band_spring_forces(g, bands, x, v, f, b, m.has_damping);
   if (b == 0) {
     update(begin, end);
   } else if (!first) {
@@ -88,7 +75,7 @@ void forces_then_update(const Model<T>& m, const Vec3Array<T>& x, const Vec3Arra
         add_band_halo(g, bands, f, b0);
         const int j0 = bands.first_row(b0);
         const int j1 = std::min(j0 + bands.reach, bands.end_row(b0, g.nv));
-        const auto [begin, end] = detail::grid_rows(g, j0, j1);
+        const auto [begin, end] = grid_rows(g, j0, j1);
         update(begin, end);
       }
     }

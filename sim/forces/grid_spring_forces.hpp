@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "sim/model/model.hpp"
@@ -64,6 +65,15 @@ struct GridBands {
   int first_row(int b) const { return b * rows; }
   int end_row(int b, int nv) const { return b + 1 == count ? nv : (b + 1) * rows; }
 };
+
+// Rows [j_begin, j_end) of grid g as the range of their vertex indices.
+template <class T>
+std::pair<std::size_t, std::size_t> grid_rows(const GridStencil<T>& g, int j_begin, int j_end) {
+  const auto row = [&](int j) {
+    return static_cast<std::size_t>(g.offset) + static_cast<std::size_t>(j) * g.nu;
+  };
+  return {row(j_begin), row(j_end)};
+}
 
 namespace detail {
 
@@ -239,6 +249,16 @@ void add_band_spring_forces(const GridStencil<T>& g, GridBands<T>& bands, const 
       detail::add_later_row_springs<T, Damped>(e, g.nu, xr, vr, fr, dst);
     }
   }
+}
+
+// The same, with the dampers chosen at run time (the model's has_damping).
+template <class T>
+void add_band_spring_forces(const GridStencil<T>& g, GridBands<T>& bands, const Vec3Array<T>& x,
+                            const Vec3Array<T>& v, Vec3Array<T>& f, int b, bool damped) {
+  if (damped)
+    add_band_spring_forces<T, true>(g, bands, x, v, f, b);
+  else
+    add_band_spring_forces<T, false>(g, bands, x, v, f, b);
 }
 
 // Adds band b - 1's halo to the first rows of band b (b >= 1), after every band's springs.
