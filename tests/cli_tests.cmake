@@ -247,6 +247,8 @@ clothlab_cli_test(render.bad_scene_mode 2 "--set render\\.mode=0.*render\\.mode:
 clothlab_cli_test(render.bad_shadows 2 "render\\.shadows: unknown shadow filter .vsm."
   render ${CLOTHLAB_DEFAULT_SCENE} --set render.shadows=vsm --out ${CLOTHLAB_TRACE_OUT}/render_bad)
 # --probe prints one JSON line with the field under the pixel (centre of the default view: cloth).
+# Each test renders into its own directory: under ctest -j two renders of frame_00000.png into
+# one directory raced (one's rename found the other's temporary file gone).
 clothlab_cli_test(render.probe 0
   "{\"field\": \"velocity\", \"pixel\": \\[80, 60\\], \"value\": \\[[-0-9.e+]+, [-0-9.e+]+, [-0-9.e+]+\\], \"magnitude\": [0-9.e+-]+, \"vertex\": \\[[0-9]+, [0-9]+\\], \"vertex_value\": \\[[-0-9.e+]+, [-0-9.e+]+, [-0-9.e+]+\\]}"
   render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 160x120 --quiet
@@ -254,7 +256,7 @@ clothlab_cli_test(render.probe 0
 clothlab_cli_test(render.probe_sky 0
   "{\"field\": \"force\", \"pixel\": \\[0, 0\\], \"value\": null, \"magnitude\": null, \"vertex\": null, \"vertex_value\": null}"
   render ${CLOTHLAB_DEFAULT_SCENE} --frames 1 --size 160x120 --quiet
-  --out ${CLOTHLAB_TRACE_OUT}/render_probe --probe 0,0)
+  --out ${CLOTHLAB_TRACE_OUT}/render_probe_sky --probe 0,0)
 clothlab_cli_test(render.probe_outside 2 "--probe 160,60: must be PX,PY, a pixel inside the 160x120 image"
   render ${CLOTHLAB_DEFAULT_SCENE} --size 160x120 --out ${CLOTHLAB_TRACE_OUT}/render_bad
   --probe 160,60)
