@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "sim/core/parallel.hpp"
 #include "sim/forces/body_forces.hpp"
 #include "sim/forces/force_field.hpp"
 #include "sim/forces/grid_spring_forces.hpp"
@@ -64,8 +65,7 @@ void forces_then_update(const Model<T>& m, const Vec3Array<T>& x, const Vec3Arra
     const GridStencil<T>& g = m.grids[c];
     GridBands<T>& bands = ws.grid_bands[c];
     const int count = bands.count;
-#pragma omp parallel num_threads(threads) if (threads > 1 && count > 1)
-    {
+    run_team(count > 1 ? threads : 1, [&] {
       const int nt = omp_get_num_threads(), t = omp_get_thread_num();
       const int b0 = count * t / nt, b1 = count * (t + 1) / nt;
       for (int b = b0; b < b1; ++b)
@@ -78,7 +78,7 @@ void forces_then_update(const Model<T>& m, const Vec3Array<T>& x, const Vec3Arra
         const auto [begin, end] = grid_rows(g, j0, j1);
         update(begin, end);
       }
-    }
+    });
   }
 }
 
