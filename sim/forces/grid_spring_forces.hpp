@@ -26,6 +26,10 @@ namespace clothlab {
 // touches at most a quarter of the rows).
 inline constexpr int kBandVertices = 512;
 inline constexpr int kMinBandRows = 8;
+// Columns per chunk of a row: the run kernel makes its pass per stencil offset over one chunk
+// of a row before the next (the force pass alone: 512^2 1.26-1.33x faster than whole-row passes
+// when the host's memory is not the limit, no change up to 256 wide; docs/design.md).
+inline constexpr int kChunkColumns = 256;
 
 template <class T>
 struct GridBands {
@@ -152,12 +156,13 @@ struct SpringEnds {
   }
 };
 
-// Springs of row j to row j + e.dj: f[a] += F on row j, dst[b] -= F on the target row (in f,
-// or in the halo when the target row lies after the band).
+// Springs of row j to row j + e.dj from the vertices a in columns [c0, c1): f[a] += F on row j,
+// dst[b] -= F on the target row (in f, or in the halo when the target row lies after the band).
 template <class T, bool Damped>
-void add_later_row_springs(const typename GridStencil<T>::Entry& e, int nu, const T* x[3],
-                           const T* v[3], T* fa[3], T* fb[3]) {
-  const int lo = std::max(0, -e.di), hi = std::min(nu, nu - e.di);
+void add_later_row_springs(const typename GridStencil<T>::Entry& e, int nu, int c0, int c1,
+                           const T* x[3], const T* v[3], T* fa[3], T* fb[3]) {
+  const int lo = std::max(c0, -e.di), hi = std::min(c1, nu - e.di);
+  if (hi <= lo) return;
   const SpringEnds<T, Damped> ends(e, e.shift, x, v);
   T* __restrict fax = fa[0];
   T* __restrict fay = fa[1];
@@ -180,11 +185,12 @@ void add_later_row_springs(const typename GridStencil<T>::Entry& e, int nu, cons
   });
 }
 
-// Springs within row j: each spring's force once into the band's scratch row, then both ends
-// from it in one pass (f[i] += s[i] - s[i - di]), which has no dependence between iterations.
+// Springs within row j, for the vertices of columns [c0, c1) (the columns before are done):
+// each spring's force once into the band's scratch row, then both ends from it in one pass
+// (f[i] += s[i] - s[i - di]), which has no dependence between iterations.
 template <class T, bool Damped>
 void add_same_row_springs(const GridBands<T>& bands, Vec3Array<T>& scratch, std::size_t base,
-                          int nu, const T* x[3], const T* v[3], T* f[3]) {
+                          int nu, int c0, int c1, const T* x[3], const T* v[3], T* f[3]) {
   const int pad = bands.pad;
   const std::size_t stride = static_cast<std::size_t>(nu + pad);
   for (std::size_t q = 0; q < bands.same_row.size(); ++q) {
@@ -193,16 +199,16 @@ void add_same_row_springs(const GridBands<T>& bands, Vec3Array<T>& scratch, std:
     T* __restrict sx = scratch.x.data() + base + q * stride + pad;
     T* __restrict sy = scratch.y.data() + base + q * stride + pad;
     T* __restrict sz = scratch.z.data() + base + q * stride + pad;
-    const int hi = nu - e.di;
+    const int hi = std::min(c1, nu - e.di);
     // Writing a spring's force twice writes the same bits: no mask needed.
-    for_each_lane(0, hi, [&](int i, bool) { ends.force(i, sx[i], sy[i], sz[i]); });
-    for (int i = std::max(0, hi); i < nu; ++i) sx[i] = sy[i] = sz[i] = T(0);
+    for_each_lane(c0, hi, [&](int i, bool) { ends.force(i, sx[i], sy[i], sz[i]); });
+    for (int i = std::max(c0, hi); i < c1; ++i) sx[i] = sy[i] = sz[i] = T(0);
     T* __restrict fx = f[0];
     T* __restrict fy = f[1];
     T* __restrict fz = f[2];
     const int di = e.di;
 #pragma omp simd
-    for (int i = 0; i < nu; ++i) {
+    for (int i = c0; i < c1; ++i) {
       fx[i] += sx[i] - sx[i - di];
       fy[i] += sy[i] - sy[i - di];
       fz[i] += sz[i] - sz[i - di];
@@ -236,17 +242,22 @@ void add_band_spring_forces(const GridStencil<T>& g, GridBands<T>& bands, const 
     const T* vr[3] = {v.x.data() + row, v.y.data() + row, v.z.data() + row};
     T* fr[3];
     row_of(f, row, fr);
-    detail::add_same_row_springs<T, Damped>(bands, bands.same_row_force, scratch_base, g.nu, xr, vr,
-                                            fr);
-    for (const auto& e : bands.later_rows) {
-      const int target = j + e.dj;
-      if (target >= g.nv) continue;
-      T* dst[3];
-      if (target < j1)
-        row_of(f, row + static_cast<std::size_t>(e.dj) * nu, dst);
-      else
-        row_of(bands.halo, halo_base + static_cast<std::size_t>(target - j1) * nu, dst);
-      detail::add_later_row_springs<T, Damped>(e, g.nu, xr, vr, fr, dst);
+    // Column chunks: each chunk's stencil passes stay in L1 (a 512-wide row's three rows of x and
+    // v alone are 36 KB); ordered chunk by chunk, so the sums stay independent of the threads.
+    for (int c0 = 0; c0 < g.nu; c0 += kChunkColumns) {
+      const int c1 = std::min(g.nu, c0 + kChunkColumns);
+      detail::add_same_row_springs<T, Damped>(bands, bands.same_row_force, scratch_base, g.nu, c0,
+                                              c1, xr, vr, fr);
+      for (const auto& e : bands.later_rows) {
+        const int target = j + e.dj;
+        if (target >= g.nv) continue;
+        T* dst[3];
+        if (target < j1)
+          row_of(f, row + static_cast<std::size_t>(e.dj) * nu, dst);
+        else
+          row_of(bands.halo, halo_base + static_cast<std::size_t>(target - j1) * nu, dst);
+        detail::add_later_row_springs<T, Damped>(e, g.nu, c0, c1, xr, vr, fr, dst);
+      }
     }
   }
 }
