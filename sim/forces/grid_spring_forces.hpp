@@ -29,12 +29,17 @@ inline constexpr int kMinBandRows = 8;
 // Columns per chunk of a row: the run kernel makes its pass per stencil offset over one chunk
 // of a row before the next (the force pass alone: 512^2 1.26-1.33x faster than whole-row passes
 // when the host's memory is not the limit, no change up to 256 wide; docs/design.md).
+// Rows shorter than that go kChunkColumns / nu rows to a pass instead (a 32-wide grid: 8 rows),
+// so a pass does more than two vector runs; a vertex's column then says which springs exist.
 inline constexpr int kChunkColumns = 256;
 
 template <class T>
 struct GridBands {
   using Entry = typename GridStencil<T>::Entry;
   int rows = 1, count = 1, reach = 0, pad = 0, nu = 0;
+  int group = 1;                  // rows per pass (short rows; kChunkColumns)
+  int stride = 0;                 // a scratch row: pad + max(nu, group nu)
+  std::vector<int> column;        // column[k] = k mod nu for the vertices of one pass
   std::vector<Entry> same_row;    // dj == 0, di > 0
   std::vector<Entry> later_rows;  // dj > 0
   // Band b's forces on rows j1 .. j1 + reach - 1 after it: reach * nu per band.
@@ -63,8 +68,12 @@ struct GridBands {
     rows = std::max({reach, kMinBandRows, wanted});
     count = std::max(1, g.nv / rows);  // the last band takes the remainder: never shorter
     halo.resize(static_cast<std::size_t>(count) * static_cast<std::size_t>(reach) * g.nu);
+    group = std::max(1, kChunkColumns / std::max(1, g.nu));
+    stride = pad + group * g.nu;
+    column.resize(static_cast<std::size_t>(group * g.nu));
+    for (std::size_t k = 0; k < column.size(); ++k) column[k] = static_cast<int>(k) % g.nu;
     same_row_force.resize(static_cast<std::size_t>(count) * same_row.size() *
-                          static_cast<std::size_t>(g.nu + pad));
+                          static_cast<std::size_t>(stride));
   }
   int first_row(int b) const { return b * rows; }
   int end_row(int b, int nv) const { return b + 1 == count ? nv : (b + 1) * rows; }
@@ -192,7 +201,7 @@ template <class T, bool Damped>
 void add_same_row_springs(const GridBands<T>& bands, Vec3Array<T>& scratch, std::size_t base,
                           int nu, int c0, int c1, const T* x[3], const T* v[3], T* f[3]) {
   const int pad = bands.pad;
-  const std::size_t stride = static_cast<std::size_t>(nu + pad);
+  const auto stride = static_cast<std::size_t>(bands.stride);
   for (std::size_t q = 0; q < bands.same_row.size(); ++q) {
     const auto& e = bands.same_row[q];
     const SpringEnds<T, Damped> ends(e, e.di, x, v);
@@ -216,6 +225,109 @@ void add_same_row_springs(const GridBands<T>& bands, Vec3Array<T>& scratch, std:
   }
 }
 
+// The same two for a pass over n vertices of whole rows (rows shorter than kChunkColumns): a
+// spring exists where the vertex's column plus di lies in the row. The lanes stop short of the
+// pass's last di vertices (no spring there), so nothing past the last row is read.
+template <class T, bool Damped>
+void add_same_row_pass(const GridBands<T>& bands, Vec3Array<T>& scratch, std::size_t base, int n,
+                       const T* x[3], const T* v[3], T* f[3]) {
+  const auto stride = static_cast<std::size_t>(bands.stride);
+  const int* __restrict col = bands.column.data();
+  for (std::size_t q = 0; q < bands.same_row.size(); ++q) {
+    const auto& e = bands.same_row[q];
+    const SpringEnds<T, Damped> ends(e, e.di, x, v);
+    T* __restrict sx = scratch.x.data() + base + q * stride + bands.pad;
+    T* __restrict sy = scratch.y.data() + base + q * stride + bands.pad;
+    T* __restrict sz = scratch.z.data() + base + q * stride + bands.pad;
+    const int di = e.di, last = bands.nu - di, hi = std::max(0, n - di);
+    for_each_lane(0, hi, [&](int i, bool) {
+      T fx, fy, fz;
+      ends.force(i, fx, fy, fz);
+      const bool live = col[i] < last;
+      sx[i] = live ? fx : T(0);
+      sy[i] = live ? fy : T(0);
+      sz[i] = live ? fz : T(0);
+    });
+    for (int i = hi; i < n; ++i) sx[i] = sy[i] = sz[i] = T(0);
+    T* __restrict fx = f[0];
+    T* __restrict fy = f[1];
+    T* __restrict fz = f[2];
+#pragma omp simd
+    for (int i = 0; i < n; ++i) {
+      fx[i] += sx[i] - sx[i - di];
+      fy[i] += sy[i] - sy[i - di];
+      fz[i] += sz[i] - sz[i - di];
+    }
+  }
+}
+
+template <class T, bool Damped>
+void add_later_row_pass(const typename GridStencil<T>::Entry& e, const GridBands<T>& bands, int n,
+                        const T* x[3], const T* v[3], T* fa[3], T* fb[3]) {
+  const int lo = std::max(0, -e.di), hi = n - std::max(0, e.di);
+  if (hi <= lo) return;
+  const int* __restrict col = bands.column.data();
+  const int di = e.di, nu = bands.nu;
+  const SpringEnds<T, Damped> ends(e, e.shift, x, v);
+  T* __restrict fax = fa[0];
+  T* __restrict fay = fa[1];
+  T* __restrict faz = fa[2];
+  T* __restrict fbx = fb[0] + di;
+  T* __restrict fby = fb[1] + di;
+  T* __restrict fbz = fb[2] + di;
+  for_each_lane(lo, hi, [&](int i, bool live) {
+    T fx, fy, fz;
+    ends.force(i, fx, fy, fz);
+    live = live && col[i] + di >= 0 && col[i] + di < nu;
+    fx = live ? fx : T(0);
+    fy = live ? fy : T(0);
+    fz = live ? fz : T(0);
+    fax[i] += fx;
+    fay[i] += fy;
+    faz[i] += fz;
+    fbx[i] -= fx;
+    fby[i] -= fy;
+    fbz[i] -= fz;
+  });
+}
+
+// Rows [j, je) of a band ending at j1 in one pass per stencil offset (short rows).
+template <class T, bool Damped>
+void add_row_group(const GridStencil<T>& g, GridBands<T>& bands, const Vec3Array<T>& x,
+                   const Vec3Array<T>& v, Vec3Array<T>& f, int j, int je, int j1,
+                   std::size_t halo_base, std::size_t scratch_base) {
+  const std::size_t nu = static_cast<std::size_t>(g.nu);
+  const auto start = [&](int r) { return static_cast<std::size_t>(g.offset) + r * nu; };
+  // The three axes of a (x, v, f or the halo) from index k.
+  const auto from = [](auto& a, std::size_t k, auto* out) {
+    out[0] = a.x.data() + k, out[1] = a.y.data() + k, out[2] = a.z.data() + k;
+  };
+  const T *xr[3], *vr[3];
+  T *fr[3], *dst[3];
+  from(x, start(j), xr);
+  from(v, start(j), vr);
+  from(f, start(j), fr);
+  add_same_row_pass<T, Damped>(bands, bands.same_row_force, scratch_base, (je - j) * g.nu, xr, vr,
+                               fr);
+  for (const auto& e : bands.later_rows) {
+    // Rows whose target row exists, and of them those whose target lies inside the band.
+    const int jt = std::min(je, g.nv - e.dj), js = std::clamp(j1 - e.dj, j, std::max(j, jt));
+    if (js > j) {
+      from(f, start(j + e.dj), dst);
+      add_later_row_pass<T, Damped>(e, bands, (js - j) * g.nu, xr, vr, fr, dst);
+    }
+    if (jt > js) {
+      const T *xs[3], *vs[3];
+      T* fs[3];
+      from(x, start(js), xs);
+      from(v, start(js), vs);
+      from(f, start(js), fs);
+      from(bands.halo, halo_base + static_cast<std::size_t>(js + e.dj - j1) * nu, dst);
+      add_later_row_pass<T, Damped>(e, bands, (jt - js) * g.nu, xs, vs, fs, dst);
+    }
+  }
+}
+
 }  // namespace detail
 
 // Adds the spring forces of band b's springs to f (rows inside the band) and writes those on
@@ -230,12 +342,18 @@ void add_band_spring_forces(const GridStencil<T>& g, GridBands<T>& bands, const 
     std::fill_n(bands.halo.axis(a).begin() + static_cast<std::ptrdiff_t>(halo_base),
                 static_cast<std::size_t>(bands.reach) * nu, T(0));
   const std::size_t scratch_base =
-      static_cast<std::size_t>(b) * bands.same_row.size() * (nu + bands.pad);
+      static_cast<std::size_t>(b) * bands.same_row.size() * static_cast<std::size_t>(bands.stride);
   auto row_of = [&](Vec3Array<T>& a, std::size_t start, T* out[3]) {
     out[0] = a.x.data() + start;
     out[1] = a.y.data() + start;
     out[2] = a.z.data() + start;
   };
+  if (bands.group > 1) {
+    for (int j = j0; j < j1; j += bands.group)
+      detail::add_row_group<T, Damped>(g, bands, x, v, f, j, std::min(j1, j + bands.group), j1,
+                                       halo_base, scratch_base);
+    return;
+  }
   for (int j = j0; j < j1; ++j) {
     const std::size_t row = static_cast<std::size_t>(g.offset) + static_cast<std::size_t>(j) * nu;
     const T* xr[3] = {x.x.data() + row, x.y.data() + row, x.z.data() + row};
