@@ -51,12 +51,14 @@ class FeatureContacts {
     Eigen::Vector3d start, end, outward;
   };
   // One feature against triangle t: true if it moved it. `reach`: the thickness and how far the
-  // triangle and the feature moved this substep. is_buried() says whether the feature lies in
-  // another collider's shell (asked only for a contact).
+  // triangle and the feature moved this substep; n0: the triangle's unit normal at `start` (once
+  // per triangle; its normal now is taken here, since an earlier feature may have moved it).
+  // is_buried() says whether the feature lies in another collider's shell (asked only for a
+  // contact).
   template <class Buried>
   bool touch(const Collider& collider, const ColliderPose& pose, const Feature& f, double reach,
-             const std::array<int, 3>& t, const Model<T>& m, const Vec3Array<T>& start, State<T>& s,
-             Buried&& is_buried) const;
+             const std::array<int, 3>& t, const Eigen::Vector3d& n0, const Model<T>& m,
+             const Vec3Array<T>& start, State<T>& s, Buried&& is_buried) const;
 
   // Marks the vertices near some feature of collider c (all of them when the cloth moved more
   // than a grid cell this substep); returns the largest vertex move.
