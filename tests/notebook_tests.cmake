@@ -46,6 +46,10 @@ set(CLOTHLAB_NOTEBOOK_FIGURES_traces position velocity force energy)
 set(CLOTHLAB_NOTEBOOK_FIGURES_accuracy work_precision error_vs_dt)
 set(CLOTHLAB_NOTEBOOK_FIGURES_stability map bars ratio stress)
 set(CLOTHLAB_NOTEBOOK_FIGURES_largestep work_precision winners)
+# Figures of a few flat bars compress below the size check's threshold when the measured costs
+# shift (28.8 kB seen, an empty frame with its labels is 28.1 kB): they are checked for coloured
+# marks instead (tests/check_colour.py).
+set(CLOTHLAB_NOTEBOOK_FLAT_FIGURES largestep_winners)
 set(CLOTHLAB_NOTEBOOK_ENVIRONMENT
   "CLOTHLAB_TRACE_CSV=${CLOTHLAB_NOTEBOOK_INPUTS}/trace.csv"
   "CLOTHLAB_BENCH_DIR=${CLOTHLAB_NOTEBOOK_INPUTS}/bench"
@@ -59,9 +63,15 @@ foreach(name traces accuracy stability largestep)
     FIXTURES_SETUP notebook_figures_${name}
     TIMEOUT 120)
   foreach(figure ${CLOTHLAB_NOTEBOOK_FIGURES_${name}})
-    add_test(NAME notebook.${name}.${figure}
-      COMMAND ${CMAKE_COMMAND} -DFILE=${CLOTHLAB_NOTEBOOK_OUT}/${name}_${figure}.png
-        -DMIN_BYTES=30000 -P ${CMAKE_CURRENT_LIST_DIR}/check_png.cmake)
+    set(png ${CLOTHLAB_NOTEBOOK_OUT}/${name}_${figure}.png)
+    if("${name}_${figure}" IN_LIST CLOTHLAB_NOTEBOOK_FLAT_FIGURES)
+      add_test(NAME notebook.${name}.${figure}
+        COMMAND /usr/bin/python3 ${CMAKE_CURRENT_LIST_DIR}/check_colour.py ${png} 0.02)
+    else()
+      add_test(NAME notebook.${name}.${figure}
+        COMMAND ${CMAKE_COMMAND} -DFILE=${png} -DMIN_BYTES=30000
+          -P ${CMAKE_CURRENT_LIST_DIR}/check_png.cmake)
+    endif()
     set_tests_properties(notebook.${name}.${figure} PROPERTIES
       FIXTURES_REQUIRED notebook_figures_${name})
   endforeach()
