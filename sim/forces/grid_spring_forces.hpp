@@ -165,12 +165,11 @@ struct SpringEnds {
   }
 };
 
-// Springs of row j to row j + e.dj from the vertices a in columns [c0, c1): f[a] += F on row j,
-// dst[b] -= F on the target row (in f, or in the halo when the target row lies after the band).
-template <class T, bool Damped>
-void add_later_row_springs(const typename GridStencil<T>::Entry& e, int nu, int c0, int c1,
-                           const T* x[3], const T* v[3], T* fa[3], T* fb[3]) {
-  const int lo = std::max(c0, -e.di), hi = std::min(c1, nu - e.di);
+// The springs of offset e from the vertices a in [lo, hi) (indices from x's start) for which
+// has(a) holds: fa[a] += F, fb[a + di] -= F.
+template <class T, bool Damped, class Has>
+void add_offset_run(const typename GridStencil<T>::Entry& e, int lo, int hi, const T* x[3],
+                    const T* v[3], T* fa[3], T* fb[3], Has&& has) {
   if (hi <= lo) return;
   const SpringEnds<T, Damped> ends(e, e.shift, x, v);
   T* __restrict fax = fa[0];
@@ -182,6 +181,7 @@ void add_later_row_springs(const typename GridStencil<T>::Entry& e, int nu, int 
   for_each_lane(lo, hi, [&](int i, bool live) {
     T fx, fy, fz;
     ends.force(i, fx, fy, fz);
+    live = live && has(i);
     fx = live ? fx : T(0);  // a select, not 0 * F: a non-finite F must not reach a done vertex
     fy = live ? fy : T(0);
     fz = live ? fz : T(0);
@@ -192,6 +192,15 @@ void add_later_row_springs(const typename GridStencil<T>::Entry& e, int nu, int 
     fby[i] -= fy;
     fbz[i] -= fz;
   });
+}
+
+// Springs of row j to row j + e.dj from the vertices a in columns [c0, c1): f[a] += F on row j,
+// dst[b] -= F on the target row (in f, or in the halo when the target row lies after the band).
+template <class T, bool Damped>
+void add_later_row_springs(const typename GridStencil<T>::Entry& e, int nu, int c0, int c1,
+                           const T* x[3], const T* v[3], T* fa[3], T* fb[3]) {
+  add_offset_run<T, Damped>(e, std::max(c0, -e.di), std::min(c1, nu - e.di), x, v, fa, fb,
+                            [](int) { return true; });
 }
 
 // Springs within row j, for the vertices of columns [c0, c1) (the columns before are done):
@@ -264,31 +273,10 @@ void add_same_row_pass(const GridBands<T>& bands, Vec3Array<T>& scratch, std::si
 template <class T, bool Damped>
 void add_later_row_pass(const typename GridStencil<T>::Entry& e, const GridBands<T>& bands, int n,
                         const T* x[3], const T* v[3], T* fa[3], T* fb[3]) {
-  const int lo = std::max(0, -e.di), hi = n - std::max(0, e.di);
-  if (hi <= lo) return;
   const int* __restrict col = bands.column.data();
   const int di = e.di, nu = bands.nu;
-  const SpringEnds<T, Damped> ends(e, e.shift, x, v);
-  T* __restrict fax = fa[0];
-  T* __restrict fay = fa[1];
-  T* __restrict faz = fa[2];
-  T* __restrict fbx = fb[0] + di;
-  T* __restrict fby = fb[1] + di;
-  T* __restrict fbz = fb[2] + di;
-  for_each_lane(lo, hi, [&](int i, bool live) {
-    T fx, fy, fz;
-    ends.force(i, fx, fy, fz);
-    live = live && col[i] + di >= 0 && col[i] + di < nu;
-    fx = live ? fx : T(0);
-    fy = live ? fy : T(0);
-    fz = live ? fz : T(0);
-    fax[i] += fx;
-    fay[i] += fy;
-    faz[i] += fz;
-    fbx[i] -= fx;
-    fby[i] -= fy;
-    fbz[i] -= fz;
-  });
+  add_offset_run<T, Damped>(e, std::max(0, -di), n - std::max(0, di), x, v, fa, fb,
+                            [&](int i) { return col[i] + di >= 0 && col[i] + di < nu; });
 }
 
 // Rows [j, je) of a band ending at j1 in one pass per stencil offset (short rows).
