@@ -38,14 +38,15 @@ struct GridBands {
   using Entry = typename GridStencil<T>::Entry;
   int rows = 1, count = 1, reach = 0, pad = 0, nu = 0;
   int group = 1;                  // rows per pass (short rows; kChunkColumns)
-  int stride = 0;                 // a scratch row: pad + max(nu, group nu)
+  int stride = 0;                 // a scratch row: pad + group nu
   std::vector<int> column;        // column[k] = k mod nu for the vertices of one pass
   std::vector<Entry> same_row;    // dj == 0, di > 0
   std::vector<Entry> later_rows;  // dj > 0
   // Band b's forces on rows j1 .. j1 + reach - 1 after it: reach * nu per band.
   Vec3Array<T> halo;
-  // Band b's same-row springs, one row of each: s[pad + i] is the force on vertex i from the
-  // spring (i, i + di), zero where that spring does not exist (pad leading zeros included).
+  // Band b's same-row springs, one scratch row (stride) per offset: s[pad + i] is the force on
+  // the pass's vertex i from the spring (i, i + di), zero where that spring does not exist (pad
+  // leading zeros included).
   Vec3Array<T> same_row_force;
 
   void resize(const GridStencil<T>& g) {
