@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "sim/core/parallel.hpp"
 #include "sim/core/vec3_eigen.hpp"
@@ -121,13 +122,17 @@ int FeatureContacts<T>::respond(const std::vector<Collider>& colliders,
                lc = sweep.end.to_local(x[2]);
       const V3 lo = la.cwiseMin(lb).cwiseMin(lc) - V3::Constant(grow),
                hi = la.cwiseMax(lb).cwiseMax(lc) + V3::Constant(grow);
-      const V3 n0 = unit_normal(start, t);
+      std::optional<V3> n0;  // the triangle's normal at `start`, once, when a feature asks
+      const auto start_normal = [&]() -> const V3& {
+        if (!n0) n0 = unit_normal(start, t);
+        return *n0;
+      };
       f.for_each_near(lo, hi, [&](int i) {
         const V3& local = f.points[std::size_t(i)];
         if ((local.array() < lo.array()).any() || (local.array() > hi.array()).any()) return;
         const Feature feature{sweep.start.to_world(local), sweep.end.to_world(local),
                               sweep.end.rotation * f.outward[std::size_t(i)]};
-        if (touch(colliders[c], sweep.end, feature, grow, t, n0, m, start, s,
+        if (touch(colliders[c], sweep.end, feature, grow, t, start_normal, m, start, s,
                   [&] { return buried(feature.end, c, colliders, sweeps); }))
           ++contacts;
       });
@@ -137,17 +142,18 @@ int FeatureContacts<T>::respond(const std::vector<Collider>& colliders,
 }
 
 template <class T>
-template <class Buried>
+template <class StartNormal, class Buried>
 bool FeatureContacts<T>::touch(const Collider& collider, const ColliderPose& pose, const Feature& f,
-                               double reach, const std::array<int, 3>& t, const V3& n0,
-                               const Model<T>& m, const Vec3Array<T>& start, State<T>& s,
-                               Buried&& is_buried) const {
+                               double reach, const std::array<int, 3>& t,
+                               StartNormal&& start_normal, const Model<T>& m,
+                               const Vec3Array<T>& start, State<T>& s, Buried&& is_buried) const {
   V3 n = unit_normal(s.pos, t);
   if (n.isZero()) return false;  // a collapsed triangle: its vertices' own contacts hold it
   // Further from the triangle's plane than the thickness and the two moves (twice, for the
   // plane's turn): neither within the thickness nor through it this substep.
   if (std::abs((load3(s.pos, std::size_t(t[0])) - f.end).dot(n)) > 2.0 * reach) return false;
   // The side the feature started on (its outward direction for one that started on the plane).
+  const V3& n0 = start_normal();
   const double start_along = (load3(start, std::size_t(t[0])) - f.start).dot(n0);
   const double side = start_along != 0.0 ? start_along : -f.outward.dot(n0);
   if (side < 0.0) n = -n;  // n now points from the feature's side towards the cloth

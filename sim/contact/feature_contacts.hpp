@@ -51,13 +51,13 @@ class FeatureContacts {
     Eigen::Vector3d start, end, outward;
   };
   // One feature against triangle t: true if it moved it. `reach`: the thickness and how far the
-  // triangle and the feature moved this substep; n0: the triangle's unit normal at `start` (once
-  // per triangle; its normal now is taken here, since an earlier feature may have moved it).
-  // is_buried() says whether the feature lies in another collider's shell (asked only for a
-  // contact).
-  template <class Buried>
+  // triangle and the feature moved this substep; start_normal(): the triangle's unit normal at
+  // `start`, computed once per triangle on first use (its normal now is taken here, since an
+  // earlier feature may have moved it). is_buried() says whether the feature lies in another
+  // collider's shell (asked only for a contact).
+  template <class StartNormal, class Buried>
   bool touch(const Collider& collider, const ColliderPose& pose, const Feature& f, double reach,
-             const std::array<int, 3>& t, const Eigen::Vector3d& n0, const Model<T>& m,
+             const std::array<int, 3>& t, StartNormal&& start_normal, const Model<T>& m,
              const Vec3Array<T>& start, State<T>& s, Buried&& is_buried) const;
 
   // Marks the vertices near some feature of collider c (all of them when the cloth moved more

@@ -71,7 +71,7 @@ struct GridBands {
     halo.resize(static_cast<std::size_t>(count) * static_cast<std::size_t>(reach) * g.nu);
     group = std::max(1, kChunkColumns / std::max(1, g.nu));
     stride = pad + group * g.nu;
-    column.resize(static_cast<std::size_t>(group * g.nu));
+    column.resize(group > 1 ? static_cast<std::size_t>(group * g.nu) : 0);  // multi-row passes
     for (std::size_t k = 0; k < column.size(); ++k) column[k] = static_cast<int>(k) % g.nu;
     same_row_force.resize(static_cast<std::size_t>(count) * same_row.size() *
                           static_cast<std::size_t>(stride));
