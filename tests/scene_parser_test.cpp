@@ -103,7 +103,7 @@ TEST(SceneParser, RecordsSourceLocations) {
   EXPECT_GT(dt.column, 0);
   EXPECT_GT(s.locations.at("solver.dt").line, s.locations.at("cloth.pins").line);
   EXPECT_EQ(s.locations.at("cloth.pins[1]").line, s.locations.at("cloth.pins").line);
-  for (const char* key : {"cloth.size", "cloth.resolution", "cloth.mass", "springs.stiffness",
+  for (const char* key : {"cloth.size", "cloth.resolution", "cloth.mass", "springs.preset",
                           "forces.wind", "forces.wind.seed", "trace.vertices", "trace.every"})
     EXPECT_TRUE(s.locations.count(key)) << key;
 
@@ -633,7 +633,8 @@ TEST(SceneParser, ParserLeavesTheLoadedPartsToTheLoadStep) {
     const Scene loaded = read_scene_file(dir + name);
     int filled = 0;
     for (const ClothSpec& c : loaded.cloths) filled += c.mesh != nullptr;
-    for (const ColliderSpec& c : loaded.colliders) filled += (c.mesh != nullptr) + (c.body != nullptr);
+    for (const ColliderSpec& c : loaded.colliders)
+      filled += (c.mesh != nullptr) + (c.body != nullptr);
     for (const MeshSpec& m : loaded.render.meshes) filled += m.obj != nullptr;
     if (loaded.music) filled += loaded.music->track != nullptr;
     if (loaded.mannequin) filled += loaded.mannequin->motion != nullptr;

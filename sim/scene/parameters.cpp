@@ -166,12 +166,28 @@ Parameter class_row(std::string_view name, std::string_view description) {
                  .description = description});
 }
 
+// Read before the values it sets, so keys written beside it override them.
+Parameter spring_preset_row() {
+  Parameter p = special_row<&SpringSpec::preset>(
+      &special::read_spring_preset,
+      {.name = "preset",
+       .fallback = "none",
+       .form = "a name",
+       .choices = special::spring_preset_names(),
+       .widget = W::combo,
+       .description = "a material: sets stiffness, shear, bend and damping (docs/materials.md)"});
+  p.choice_index = &special::spring_preset_index;
+  p.choose = &special::choose_spring_preset;
+  return p;
+}
+
 std::vector<Parameter> dynamics() {
   return {
       row<&SpringSpec::rule>({.name = "rule",
                               .fallback = "\"seed\"",
                               .choices = "seed",
                               .description = "seed: every vertex pair closer than 2 sqrt(2) edge"}),
+      spring_preset_row(),
       row<&SpringSpec::stiffness>(
           {.name = "stiffness",
            .range = kNonNegative,

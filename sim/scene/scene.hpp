@@ -25,6 +25,7 @@ struct SourceLoc {
 
 struct SpringSpec {
   std::string rule = "seed";  // the only rule so far: docs/design.md "seed" rule
+  std::string preset;         // the material preset applied ("" none; sim/scene/spring_presets)
   double stiffness = 800.0;   // N/m, k = stiffness * edge / rest_length
   double damping = 0.0;       // N*s/m, along-spring damping
   // Per class of spring (docs/design.md "Spring classes"), each `stiffness` when not given:

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "sim/scene/name_list.hpp"
+#include "sim/scene/spring_presets.hpp"
 
 // GCC 12 at -O3 reports a false -Wrestrict inside std::string for `"text" + std::string(...)`
 // (GCC bug 105329); the message texts below are built that way throughout.
@@ -143,6 +144,35 @@ void read_cloth_springs(TomlReader& in, void* object) {
   SpringSpec springs = in.scene().springs;
   in.read_section(in.table(in.node(), in.key()), in.key(), Section::springs, &springs);
   cloth.springs = springs;
+}
+
+std::string_view spring_preset_names() {
+  static const std::string names =
+      comma_list(spring_presets(), [](const SpringPreset& p) { return p.name; });
+  return names;
+}
+
+void read_spring_preset(TomlReader& in, void* object) {
+  const std::string name = in.text(in.node(), in.key());
+  const std::optional<SpringPreset> preset = find_spring_preset(name);
+  if (!preset)
+    in.fail(in.key(), in.node(),
+            "unknown preset \"" + name + "\" (valid: " + std::string(spring_preset_names()) + ")");
+  apply_spring_preset(*preset, *static_cast<SpringSpec*>(object));
+}
+
+// -1 (no entry shown) when no preset was applied.
+int spring_preset_index(const void* object) {
+  const std::string& name = static_cast<const SpringSpec*>(object)->preset;
+  const auto presets = spring_presets();
+  for (std::size_t i = 0; i < presets.size(); ++i)
+    if (presets[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+void choose_spring_preset(void* object, int index) {
+  apply_spring_preset(spring_presets()[static_cast<std::size_t>(index)],
+                      *static_cast<SpringSpec*>(object));
 }
 
 std::string_view integrator_names() {

@@ -23,6 +23,11 @@ void read_pins_follow(TomlReader& in, void* cloth);
 void read_cloth_springs(TomlReader& in, void* cloth);
 int radius_values(const void* cloth, double* out);
 
+// springs.preset (object: SpringSpec): applies the preset's values as it is read.
+void read_spring_preset(TomlReader& in, void* springs);
+int spring_preset_index(const void* springs);
+void choose_spring_preset(void* springs, int index);
+
 // [solver] (object: SolverSpec).
 void read_integrator(TomlReader& in, void* solver);
 int integrator_index(const void* solver);
@@ -45,5 +50,6 @@ void read_trace_fields(TomlReader& in, void* trace);
 
 // The valid names of an enum's table ("a, b, c"), for the key table and messages.
 std::string_view integrator_names();
+std::string_view spring_preset_names();
 
 }  // namespace clothlab::special

@@ -74,12 +74,21 @@ ArrowLayout arrow_layout(const SolverState& solver, int stride) {
 ScalarRange arrow_range(const SolverState& solver, const ArrowLayout& layout,
                         const std::vector<float>& vectors, RangeMode mode, ScalarRange fixed) {
   if (mode == RangeMode::fixed && fixed.max > fixed.min) return fixed;
-  double top = 0.0;
+  std::vector<double> magnitudes;
+  magnitudes.reserve(layout.vertices.size());
   for (int v : layout.vertices) {
     if (solver.pinned(v)) continue;
     const double m = glm::length(at(vectors, v));
-    if (std::isfinite(m)) top = std::max(top, m);
+    if (std::isfinite(m)) magnitudes.push_back(m);
   }
+  if (magnitudes.empty()) return {0.0, 1.0};
+  // The kArrowRangeQuantile-th magnitude, not the largest: one vertex beside a pin (or a
+  // contact) can carry ten times the rest and would shrink every other arrow below a pixel.
+  const auto q = magnitudes.begin() +
+                 static_cast<std::ptrdiff_t>(kArrowRangeQuantile * double(magnitudes.size() - 1));
+  std::nth_element(magnitudes.begin(), q, magnitudes.end());
+  double top = *q;
+  if (!(top > 0.0)) top = *std::max_element(magnitudes.begin(), magnitudes.end());
   // All arrows zero: any non-empty range draws them all at length 0.
   return {0.0, top > 0.0 ? top : 1.0};
 }

@@ -38,11 +38,15 @@ int arrow_stride(const SolverState& solver, int stride);
 // column so the free edges show.
 ArrowLayout arrow_layout(const SolverState& solver, int stride);
 
-// The range force arrows are sized and coloured by: [0, largest magnitude over the shown free
-// vertices] (automatic and symmetric: magnitudes are never negative), or `fixed`. Pinned
-// vertices are left out of the automatic range: their force is the support's reaction, often
-// a hundred times the rest, which would shrink every other arrow to nothing; their arrows
-// saturate at the longest length instead. Never empty.
+// The automatic range's top: this quantile of the shown free vertices' magnitudes.
+inline constexpr double kArrowRangeQuantile = 0.9;
+
+// The range force arrows are sized and coloured by: [0, the kArrowRangeQuantile quantile of the
+// magnitudes over the shown free vertices] (the largest when that quantile is 0), or `fixed`.
+// A robust top rather than the largest: near rest a few vertices (beside the pins, at a
+// contact) carry most of the force and would shrink every other arrow to nothing. Pinned
+// vertices are left out (their force is the support's reaction). Arrows above the top
+// saturate at the longest length, and the legend's bar ends there. Never empty.
 ScalarRange arrow_range(const SolverState& solver, const ArrowLayout& layout,
                         const std::vector<float>& vectors, RangeMode mode, ScalarRange fixed);
 

@@ -48,7 +48,7 @@ bool input(const Parameter& p, void* member) {
 bool combo(const Parameter& p, void* object) {
   const int current = p.choice_index(object);
   bool changed = false;
-  const std::string shown(choice_name(p, current));
+  const std::string shown(current < 0 ? "(none)" : choice_name(p, current));
   if (ImGui::BeginCombo(label(p).c_str(), shown.c_str())) {
     for (int n = 0; !choice_name(p, n).empty(); ++n) {
       const std::string name(choice_name(p, n));
