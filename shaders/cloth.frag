@@ -3,6 +3,7 @@
 #include "lighting.glsl"
 #include "brdf.glsl"
 #include "weave.glsl"
+#include "yarn.glsl"
 
 // Colour by a scalar through a colour map (ViewSettings::color), or
 // 2: world-space normal as colour (n * 0.5 + 0.5); 3: Lambert with the fabric texture; 4-6 below.
@@ -77,15 +78,15 @@ vec3 cloth_brdf_lit(vec3 n, vec3 albedo) {
 }
 
 // Key 5: translucent cloth. Light on the side we see is reflected (Lambert); light from behind
-// comes through, tinted by the yarn (diffuse transmission tau * albedo, the glow of a back-lit
-// cloth, as KHR_materials_translucency); the threads cover a fraction c of the surface, which is
+// comes through, tinted by the dye (diffuse transmission tau * filter(albedo), shaders/yarn.glsl:
+// the glow of a back-lit cloth, as KHR_materials_translucency); the threads cover a fraction c of the surface, which is
 // the alpha the cloth is blended with, so what lies behind shows through the gaps.
 vec4 translucent_lit(vec3 n, vec3 albedo) {
   vec3 l = light_vector(v_world);
   vec3 vis = shadow_visibility(v_world, n);  // outside branches: it takes derivatives
   float nl = dot(n, l);
   vec3 e = light_irradiance(v_world) * abs(nl) * vis;
-  vec3 lit = nl > 0.0 ? albedo * e : u_translucency.y * albedo * e;
+  vec3 lit = nl > 0.0 ? albedo * e : u_translucency.y * yarn_filter(albedo) * e;
   return vec4(lit + albedo * light_color.a, u_translucency.x);
 }
 

@@ -1,11 +1,12 @@
 // Mode 5's coloured shadows (docs/rendering.md section 5), measured as ratios on the floor (the
 // render with shadows over the same render without them, at the same pixel, so the floor's
 // texture cancels): under a red translucent sheet the light that reaches the floor is the
-// sheet's transmittance T = (1 - c) + c tau albedo per channel, two sheets give T^2, an opaque
+// sheet's transmittance T = (1 - c) + c tau filter(albedo) per channel, two sheets give T^2, an opaque
 // sheet gives a neutral dark shadow, and an object between the light and the sheet stays
 // untinted.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -100,10 +101,13 @@ class ColouredShadow : public ::testing::Test {
 };
 std::unique_ptr<vis::HeadlessRenderer> ColouredShadow::renderer_;
 
+// T = (1 - c) + c tau filter(albedo), the filter the albedo over its largest channel
+// (shaders/yarn.glsl).
 std::array<double, 3> transmittance() {
-  std::array<double, 3> t{};
-  for (int ch = 0; ch < 3; ++ch)
-    t[ch] = (1.0 - kCoverage) + kCoverage * kTau * testing::srgb_to_linear(kRed[ch]);
+  std::array<double, 3> albedo{}, t{};
+  for (int ch = 0; ch < 3; ++ch) albedo[ch] = testing::srgb_to_linear(kRed[ch]);
+  const double top = std::max({albedo[0], albedo[1], albedo[2]});
+  for (int ch = 0; ch < 3; ++ch) t[ch] = (1.0 - kCoverage) + kCoverage * kTau * albedo[ch] / top;
   return t;
 }
 

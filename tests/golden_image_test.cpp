@@ -211,6 +211,7 @@ TEST_F(GoldenImage, FlatWeaveMapIsMode3) {
   view.mode = vis::DisplayMode::lambert;
   const std::vector<std::uint8_t> lambert = renderer_->render(*solver_, view);
   view.mode = vis::DisplayMode::weave;
+  view.weave_coarsening = 1.0f;  // the weave at mode 3's scale
   view.look.bump = 0.0;
   view.look.subsurface = 0.0;  // a zero-width diffusion profile: plain Lambert
   const std::vector<std::uint8_t> flat = renderer_->render(*solver_, view);

@@ -80,7 +80,7 @@ std::vector<Parameter> light_sky_pole() {
           {.name = "enabled", .fallback = "true", .description = "draw the sky"}),
       row<&SkySpec::turbidity>({.name = "turbidity",
                                 .range = between(1.7, 10.0),
-                                .fallback = "3",
+                                .fallback = "2",
                                 .description = "2 clear .. 10 hazy (Preetham's fitted range)"}),
       row<&PoleSpec::enabled>(
           {.name = "enabled", .fallback = "true", .description = "draw the pole"}),

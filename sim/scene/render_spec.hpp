@@ -38,7 +38,7 @@ struct LightSpec {
 
 struct SkySpec {
   bool enabled = true;
-  double turbidity = 3.0;  // Preetham 1999: 2 (clear) .. 10 (hazy)
+  double turbidity = 2.0;  // Preetham 1999: 2 (clear) .. 10 (hazy); 2 reads blue near the horizon
 };
 
 // The bar the cloth's pinned vertices hang from, placed along the pins (when there are at least

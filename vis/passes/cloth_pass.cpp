@@ -48,7 +48,7 @@ void ClothPass::draw(const ViewSettings& view, ClothGeometry& cloth, ScalarRange
       programs_.get(shading + cloth_defines(view.mode, view.color.field != ScalarField::none));
   const GLuint p = program_;
   glUseProgram(p);
-  glProgramUniform1f(p, kClothTextureRepeat, view.fabric_repeat);
+  glProgramUniform1f(p, kClothTextureRepeat, fabric_repeat_of(view));
   glProgramUniform2f(p, kClothRange, static_cast<float>(range.min), static_cast<float>(range.max));
   glProgramUniform1i(p, kClothShaded, view.color.shaded ? 1 : 0);
   glBindTextureUnit(0, fabric_.get());

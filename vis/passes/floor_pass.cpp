@@ -1,5 +1,7 @@
 #include "vis/passes/floor_pass.hpp"
 
+#include <algorithm>
+
 #include "vis/gl/program.hpp"
 #include "vis/gl/uploads.hpp"
 #include "vis/render/shading_variant.hpp"
@@ -8,8 +10,8 @@
 namespace clothlab::vis {
 namespace {
 
-// Explicit uniform locations of shaders/floor.vert (no lookups per frame).
-constexpr GLint kFloorHalfSize = 0, kFloorTileSize = 1;
+// Explicit uniform locations of shaders/floor.vert and floor.frag (no lookups per frame).
+constexpr GLint kFloorHalfSize = 0, kFloorTileSize = 1, kFloorHaze = 2;
 
 }  // namespace
 
@@ -19,12 +21,20 @@ FloorPass::FloorPass()
   glObjectLabel(GL_TEXTURE, tiles_.get(), -1, "floor tiles");
 }
 
-void FloorPass::draw(const ViewSettings& view, GLuint empty_vao, const std::string& shading) {
+void FloorPass::draw(const ViewSettings& view, GLuint empty_vao, const std::string& shading,
+                     GLuint sky_cube) {
   const GLuint program = programs_.get(shading);
   glUseProgram(program);
-  glProgramUniform1f(program, kFloorHalfSize, view.floor_half_size);
+  // With a sky, out to where the haze has hidden it (kHazeReach haze distances, 1 - e^-9), and
+  // at least the lit floor's size; the shadow map still covers floor_half_size only.
+  const float haze = kFloorHazeDistances * view.camera.distance;
+  const float half_size =
+      sky_cube ? std::max(view.floor_half_size, kHazeReach * haze) : view.floor_half_size;
+  glProgramUniform1f(program, kFloorHalfSize, half_size);
   glProgramUniform1f(program, kFloorTileSize, view.floor_tile_size);
+  glProgramUniform4f(program, kFloorHaze, sky_cube ? 1.0f / haze : 0.0f, 0.0f, 0.0f, 0.0f);
   glBindTextureUnit(0, tiles_.get());
+  glBindTextureUnit(1, sky_cube);
   glBindVertexArray(empty_vao);
   glDrawArrays(GL_TRIANGLES, 0, 6);
 }

@@ -7,6 +7,7 @@ namespace clothlab::vis {
 namespace {
 
 constexpr GLint kInverseViewProj = 0, kEye = 1;  // explicit uniform locations in shaders/sky.*
+constexpr float kGroundBlendDeg = 20.0f;
 
 }  // namespace
 
@@ -19,6 +20,9 @@ void SkyPass::bake(glm::vec3 sun, float turbidity) {
   SkyParams params;
   params.sun_direction = sun;
   params.turbidity = turbidity;
+  // Below the horizon the sky keeps its horizon colour for a while: the hazed floor meets it
+  // there (the floor ends before the far plane, a fraction of a degree under the horizon).
+  params.ground_blend_deg = kGroundBlendDeg;
   const CubeFaces faces = bake_sky(params, face_size_);
   cube_ = make_texture(GL_TEXTURE_CUBE_MAP);
   glTextureStorage2D(cube_.get(), 1, GL_RGB16F, face_size_, face_size_);
@@ -35,10 +39,14 @@ void SkyPass::bake(glm::vec3 sun, float turbidity) {
   ++bakes_;
 }
 
-void SkyPass::draw(glm::vec3 sun, float turbidity, const glm::mat4& view_proj, glm::vec3 eye) {
+GLuint SkyPass::prepare(glm::vec3 sun, float turbidity) {
   if (!cube_ || sun != baked_sun_ || turbidity != baked_turbidity_) bake(sun, turbidity);
-  // No seams between the faces (docs/rendering.md section 7).
+  // No seams between the faces (docs/rendering.md section 7), for the sky and the floor's haze.
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+  return cube_.get();
+}
+
+void SkyPass::draw(const glm::mat4& view_proj, glm::vec3 eye) {
   const glm::mat4 inverse = glm::inverse(view_proj);
   glUseProgram(program_.get());
   glProgramUniformMatrix4fv(program_.get(), kInverseViewProj, 1, GL_FALSE, &inverse[0][0]);

@@ -14,9 +14,12 @@ class SkyPass {
  public:
   explicit SkyPass(int face_size = 128);
 
-  // Draws the sky for the sun towards `sun` (need not be normalised) into the bound
-  // framebuffer's empty pixels: call after the opaque geometry, with its depth buffer.
-  void draw(glm::vec3 sun, float turbidity, const glm::mat4& view_proj, glm::vec3 eye);
+  // Bakes the cube map for the sun towards `sun` (need not be normalised) and the turbidity,
+  // unless it holds them already; returns it (the floor's haze samples it at the horizon).
+  GLuint prepare(glm::vec3 sun, float turbidity);
+  // Draws the sky prepared last into the bound framebuffer's empty pixels: call after the
+  // opaque geometry, with its depth buffer.
+  void draw(const glm::mat4& view_proj, glm::vec3 eye);
 
   int bakes() const { return bakes_; }  // how often the cube map was baked (tests)
 

@@ -80,6 +80,28 @@ void ClothGeometry::update(SolverState& solver) {
                        static_cast<GLsizeiptr>(staging_.size() * sizeof(float)), staging_.data());
 }
 
+float ClothGeometry::strain_quantile(double q) const {
+  const std::size_t rn = layout_.render_vertices(), lines = layout_.lines.size() / 2;
+  const float* rest = layout_.fixed.data() + 2 * rn;  // after the UV block
+  const std::size_t every = std::max<std::size_t>(1, lines / 4096);
+  strains_.clear();
+  for (std::size_t s = 0; s < lines; s += every) {
+    const std::size_t a = layout_.lines[2 * s], b = layout_.lines[2 * s + 1];
+    if (a >= layout_.vertices || b >= layout_.vertices) continue;  // seam copies: their twin
+    const auto at = [](const float* p, std::size_t v) {
+      return glm::vec3(p[3 * v], p[3 * v + 1], p[3 * v + 2]);
+    };
+    const float rest_length = glm::length(at(rest, b) - at(rest, a));
+    if (!(rest_length > 0.0f)) continue;
+    const float strain = glm::length(at(staging_.data(), b) - at(staging_.data(), a)) / rest_length;
+    if (std::isfinite(strain)) strains_.push_back(std::abs(strain - 1.0f));
+  }
+  if (strains_.empty()) return kMinStrainRange;
+  const auto k = strains_.begin() + static_cast<std::ptrdiff_t>(q * double(strains_.size() - 1));
+  std::nth_element(strains_.begin(), k, strains_.end());
+  return std::max(*k, kMinStrainRange);
+}
+
 // values[offset + stride * (vertices + k) + d] = values[offset + stride * seam_copies[k] + d].
 void ClothGeometry::copy_seams(float* values, std::size_t stride, std::size_t offset) const {
   for (std::size_t k = 0; k < layout_.seam_copies.size(); ++k) {

@@ -21,6 +21,11 @@ class SolverState;
 
 namespace clothlab::vis {
 
+// Mode 1's automatic strain range: a robust top, so a few springs at the pins do not leave the
+// rest of the sheet grey; never below kMinStrainRange (a sheet at rest is not all saturated).
+inline constexpr double kStrainRangeQuantile = 0.8;
+inline constexpr float kMinStrainRange = 1e-4f;
+
 class ClothGeometry {
  public:
   // (Re)builds every buffer for `solver`'s cloths (after building or resizing the solver).
@@ -30,6 +35,10 @@ class ClothGeometry {
   void update(SolverState& solver);
   // The colour-by scalar, one per solver vertex.
   void set_scalars(const std::vector<float>& values);
+  // The q-quantile of |strain| (|x_b - x_a| / |X_b - X_a| - 1) over the springs at the last
+  // update()'s positions, at least kMinStrainRange: mode 1's automatic colour range. Springs
+  // are sampled (at most about 4096) so a large cloth pays little.
+  float strain_quantile(double q) const;
   // The tangent frame of the last update(), computed only when a mode needs it.
   void update_tangents();
 
@@ -61,6 +70,7 @@ class ClothGeometry {
   std::vector<float> staging_;         // positions, then normals, per render vertex
   std::vector<float> scalar_staging_;  // the colour-by scalar per render vertex
   std::vector<float> tangents_, tangent_scratch_;
+  mutable std::vector<float> strains_;  // strain_quantile's sample
   bool tangents_stale_ = true;
   glm::vec3 lo_{0.0f}, hi_{0.0f};
   // The GPU backend's cloth the last update() packed from (the tangents read its normals back

@@ -152,8 +152,9 @@ void Renderer::draw_at(const ViewSettings& view, bool fast, int width, int heigh
   if (colliders_) colliders_->draw(shading);
   const bool blended_cloth = view.mode == DisplayMode::translucent;
   if (!blended_cloth) draw_cloth(view, shading, subsurface);
-  floor_.draw(view, empty_vao_.get(), shading);
-  draw_sky(view, view_proj, centre);
+  const GLuint sky_cube = prepare_sky(view, centre);
+  floor_.draw(view, empty_vao_.get(), shading, sky_cube);
+  draw_sky(view, view_proj);
   if (blended_cloth) draw_cloth(view, shading, subsurface);
   glBindVertexArray(0);
 }
@@ -189,7 +190,11 @@ glm::vec3 Renderer::fit_light_to_casters(const ViewSettings& view) {
 // The Frame block every pass reads (binding 0); returns the view-projection matrix.
 glm::mat4 Renderer::upload_frame(const ViewSettings& view, int width, int height,
                                  bool translucent) {
-  const FrameBlock frame = make_frame(view, light_, width, height, translucent);
+  FrameBlock frame = make_frame(view, light_, width, height, translucent);
+  // Springs are drawn in mode 1, and in every mode for a cloth without triangles.
+  const bool springs = view.mode == DisplayMode::springs || cloth_.triangle_indices() == 0;
+  if (!(view.strain_range > 0.0f))
+    frame.params.x = springs ? cloth_.strain_quantile(kStrainRangeQuantile) : kMinStrainRange;
   glNamedBufferSubData(frame_ubo_.get(), 0, sizeof frame, &frame);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, frame_ubo_.get());
   return frame.view_proj;
@@ -210,7 +215,7 @@ bool Renderer::run_diffusion(const ViewSettings& view, const std::string& shadin
   cloth_.update_tangents();
   cloth_pass_.bind_weave(view.look.bump);
   diffusion_->run(cloth_.cloth_vao(), cloth_.triangle_indices(), cloth_.atlas_per_metre(),
-                  view.fabric_repeat, shading);
+                  fabric_repeat_of(view), shading);
   return true;
 }
 
@@ -226,16 +231,25 @@ void Renderer::draw_depth_view(int width, int height) {
   glBindVertexArray(0);
 }
 
-// The sky after the opaque passes: it fills only what nothing else covered.
-void Renderer::draw_sky(const ViewSettings& view, const glm::mat4& view_proj, glm::vec3 centre) {
+// The sky's cube map for this frame's sun (baked again only when it moved), or 0 without a sky.
+GLuint Renderer::prepare_sky(const ViewSettings& view, glm::vec3 centre) {
   if (!view.sky) {
     sky_.reset();
-    return;
+    return 0;
   }
   if (timer_) timer_->begin(Pass::sky);
   if (!sky_) sky_ = std::make_unique<SkyPass>();
   const glm::vec3 sun = light_.directional ? -light_.direction : light_.position - centre;
-  sky_->draw(sun, view.sky_turbidity, view_proj, view.camera.eye());
+  const GLuint cube = sky_->prepare(sun, view.sky_turbidity);
+  if (timer_) timer_->begin(Pass::scene);
+  return cube;
+}
+
+// The sky after the opaque passes: it fills only what nothing else covered.
+void Renderer::draw_sky(const ViewSettings& view, const glm::mat4& view_proj) {
+  if (!sky_) return;
+  if (timer_) timer_->begin(Pass::sky);
+  sky_->draw(view_proj, view.camera.eye());
   if (timer_) timer_->begin(Pass::scene);  // what follows the sky belongs to the scene again
 }
 
@@ -259,7 +273,7 @@ void Renderer::draw_shadow_map(const ViewSettings& view, bool translucent) {
       const auto& c = view.look.color;
       const glm::vec3 flat = c ? glm::vec3((*c)[0], (*c)[1], (*c)[2]) : glm::vec3(1.0f);
       shadow_->draw_transmittance(cloth_.cloth_vao(), cloth_.triangle_indices(),
-                                  cloth_pass_.fabric(), view.fabric_repeat, flat, c.has_value(),
+                                  cloth_pass_.fabric(), fabric_repeat_of(view), flat, c.has_value(),
                                   float(view.look.opacity), float(view.look.transmission));
     }
   }

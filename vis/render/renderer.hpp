@@ -106,7 +106,8 @@ class Renderer {
   void draw_depth_view(int width, int height);
   void draw_shadow_map(const ViewSettings& view, bool translucent);
   void draw_shadow_casters();
-  void draw_sky(const ViewSettings& view, const glm::mat4& view_proj, glm::vec3 centre);
+  GLuint prepare_sky(const ViewSettings& view, glm::vec3 centre);
+  void draw_sky(const ViewSettings& view, const glm::mat4& view_proj);
 
   ClothGeometry cloth_;
   FloorPass floor_;

@@ -84,6 +84,11 @@ void cloth_bounds(const SolverState& solver, glm::vec3& lo, glm::vec3& hi) {
 
 }  // namespace
 
+float fabric_repeat_of(const ViewSettings& view) {
+  return view.mode == DisplayMode::weave ? view.fabric_repeat / view.weave_coarsening
+                                         : view.fabric_repeat;
+}
+
 ViewSettings default_view(const SolverState& solver) {
   ViewSettings s;
   glm::vec3 lo, hi;

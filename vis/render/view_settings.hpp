@@ -108,20 +108,29 @@ struct ViewSettings : ScientificViews {
   ShadowFilter shadows = ShadowFilter::pcf;
   int shadow_map_size = 2048;
   bool sky = true;
-  float sky_turbidity = 3.0f;
+  float sky_turbidity = 2.0f;
   ClothLookSpec look;  // mode 4-6 material ([render.cloth])
   float ambient = 0.05f;
-  float strain_range = 0.02f;                 // springs colour map saturates at +-2 % strain
-  float floor_height = 0.0f;                  // m
-  float floor_half_size = 6.0f;               // m
-  float floor_tile_size = 1.0f;               // m per floor texture repeat
-  float fabric_repeat = 6.0f;                 // fabric texture repeats across a cloth
+  // Mode 1's colour map saturates at +-strain_range; 0: automatic, the kStrainRangeQuantile
+  // quantile of the springs' |strain| this frame (vis/render/cloth_geometry.hpp).
+  float strain_range = 0.0f;
+  float floor_height = 0.0f;     // m
+  float floor_half_size = 6.0f;  // m
+  float floor_tile_size = 1.0f;  // m per floor texture repeat
+  float fabric_repeat = 6.0f;    // fabric texture repeats across a cloth
+  // Mode 6 draws the weave this many times coarser, so its relief shows from the default
+  // camera: at 6 repeats a thread of a 2 m sheet is 2 cm, 2-3 pixels there, and the normal
+  // map's mipmaps average the relief flat (docs/rendering.md section 3).
+  float weave_coarsening = 3.0f;
   glm::vec3 background{0.60f, 0.70f, 0.80f};  // sRGB
 };
 
 // The camera's projection * view for a view of width x height pixels: every pass that must
 // land on the same pixels (the shaded cloth, the field pass, tests projecting a vertex) uses it.
 glm::mat4 view_projection(const OrbitCamera& camera, int width, int height);
+
+// The fabric's repeats across a cloth in the view's mode: mode 6's weave is coarser.
+float fabric_repeat_of(const ViewSettings& view);
 
 // Settings framing the solver's cloth: camera on its bounding box, floor below its lowest point
 // (at 0 when the cloth is above 0), light above and in front.
