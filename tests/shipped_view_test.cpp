@@ -1,7 +1,8 @@
 // What a new user sees first: the default scene rendered headless from its own camera (EGL;
 // Mesa's llvmpipe in CI). The sky reads as sky, the floor reaches the horizon without an edge,
-// and the display modes differ where a user looks: mode 6's weave and mode 4's threads from
-// mode 3, mode 5's shadow in hue, mode 1's strain colours over the whole sheet.
+// the display modes differ where a user looks (mode 6's weave and mode 4's threads from mode 3,
+// mode 5's shadow in hue, mode 1's strain colours over the whole sheet), and force arrows show
+// over the sheet at rest.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "load/scene_load.hpp"
+#include "pixels.hpp"
 #include "sim/solver.hpp"
 #include "vis/render/headless_renderer.hpp"
 
@@ -169,6 +171,57 @@ TEST_F(ShippedView, SpringModeColoursTheWholeSheet) {
   std::printf("saturated cloth pixels in mode 1: %.1f %%\n",
               100.0 * double(coloured) / double(cloth));
   EXPECT_GE(double(coloured), 0.35 * double(cloth));
+}
+
+// The pixel length of each force arrow of the last render at the default camera.
+std::vector<float> arrow_pixels(const vis::HeadlessRenderer& r, const vis::ViewSettings& view) {
+  std::vector<float> out;
+  for (const vis::ArrowInstance& a : r.diagnostics().force_arrows()) {
+    const glm::vec2 base = testing::screen_position(view.camera, kWidth, kHeight, a.base);
+    const glm::vec2 tip = testing::screen_position(view.camera, kWidth, kHeight, a.base + a.vector);
+    out.push_back(glm::length(tip - base));
+  }
+  return out;
+}
+
+// The default sheet settled without wind (4 s), force arrows on as a user turns them on (F):
+// the total is near zero, so the arrows show the springs' force and say so; at least 80 % of
+// them are 3 pixels long or more (measured 100 %; before, sized by the largest total beside the
+// pins, only the pins' arrows showed). In its gusts the arrows show the total, at least 60 % of
+// them 3 pixels or more (measured 78 %; the wind's force varies over the sheet).
+TEST_F(ShippedView, ForceArrowsShowAtRest) {
+  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/default.toml");
+  for (bool wind : {false, true}) {
+    SCOPED_TRACE(wind ? "in the wind" : "at rest");
+    scene.forces.wind.enabled = wind;
+    std::unique_ptr<Solver> solver = make_solver(scene);
+    vis::ViewSettings view = vis::scene_view(scene, *solver);
+    ASSERT_TRUE(solver->advance(wind ? 2.0 : 4.0).ok());
+    renderer_->set_cloth(*solver);
+    renderer_->set_scene(scene.render, *solver, scene.colliders);
+    view.arrows.force = true;
+    renderer_->render(*solver, view);
+    const vis::Diagnostics& d = renderer_->diagnostics();
+    EXPECT_EQ(d.shown_force_source(), wind ? ForceSource::total : ForceSource::springs);
+    EXPECT_EQ(d.showing_springs_at_rest(), !wind);
+    const std::vector<float> lengths = arrow_pixels(*renderer_, view);
+    ASSERT_FALSE(lengths.empty());
+    long visible = 0;
+    for (float l : lengths) visible += l >= 3.0f;
+    std::printf("%s: %.0f %% of %zu arrows 3 px or longer\n", wind ? "wind" : "rest",
+                100.0 * double(visible) / double(lengths.size()), lengths.size());
+    EXPECT_GE(double(visible), (wind ? 0.6 : 0.8) * double(lengths.size()));
+  }
+  // Chosen explicitly, the total stays the total.
+  scene.forces.wind.enabled = false;
+  std::unique_ptr<Solver> solver = make_solver(scene);
+  ASSERT_TRUE(solver->advance(4.0).ok());
+  renderer_->set_cloth(*solver);
+  vis::ViewSettings view = vis::scene_view(scene, *solver);
+  view.arrows.force = true;
+  view.springs_at_rest = false;
+  renderer_->render(*solver, view);
+  EXPECT_EQ(renderer_->diagnostics().shown_force_source(), ForceSource::total);
 }
 
 }  // namespace

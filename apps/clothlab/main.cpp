@@ -147,7 +147,9 @@ void add_render_views(CLI::App* render_cmd, vis::ScientificViews& views) {
       ->check(CLI::IsMember({"force", "normals"}));
   add_choice(render_cmd, "--force-source", views.force_source, clothlab::kAllForceSources,
              clothlab::force_source_name,
-             "force shown by arrows and --color-by force: total, springs, gravity, drag, wind");
+             "force shown by arrows and --color-by force: total, springs, gravity, drag, wind "
+             "(default: the total, or the springs' force where the total is near zero)")
+      ->each([&views](const std::string&) { views.springs_at_rest = false; });
   render_cmd->add_option("--arrow-stride", views.arrows.stride, "an arrow every N vertices")
       ->check(between(1, 100000));
   add_choice(

@@ -77,9 +77,10 @@ void print_views(const vis::Diagnostics& d, const vis::ViewSettings& view) {
     line += part;
   }
   if (const auto& r = d.force_range()) {
-    std::snprintf(part, sizeof part, "%s%zu force arrows (%s, |F| %.6g..%.6g N)",
-                  line.empty() ? "" : "; ", d.force_arrows().size(),
-                  std::string(force_source_name(view.force_source)).c_str(), r->min, r->max);
+    std::snprintf(
+        part, sizeof part, "%s%zu force arrows (%s%s, |F| %.6g..%.6g N)", line.empty() ? "" : "; ",
+        d.force_arrows().size(), std::string(force_source_name(d.shown_force_source())).c_str(),
+        d.showing_springs_at_rest() ? " where the total is near zero" : "", r->min, r->max);
     line += part;
   }
   if (!d.normal_arrows().empty()) {

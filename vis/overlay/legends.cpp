@@ -27,7 +27,8 @@ std::vector<LegendBar> draw_legends(ImDrawList* draw, ImVec2 area_min, ImVec2 ar
   if (const auto& range = diagnostics.force_range()) {
     // (Built with append: GCC 12 warns falsely, -Wrestrict, on "|" + std::string + "|".)
     std::string title = "|";
-    title.append(force_source_name(view.force_source)).append(" force|");
+    title.append(force_source_name(diagnostics.shown_force_source())).append(" force|");
+    if (diagnostics.showing_springs_at_rest()) title.append(" (total ~ 0)");
     bars.push_back({title, "N", *range});
   }
   const float height = std::min(kLegendBarHeight, 0.6f * (area_max.y - area_min.y));

@@ -93,6 +93,10 @@ ScalarRange arrow_range(const SolverState& solver, const ArrowLayout& layout,
   return {0.0, top > 0.0 ? top : 1.0};
 }
 
+bool total_near_zero(ScalarRange total, ScalarRange springs) {
+  return total.max < kNearRestRatio * springs.max;
+}
+
 float arrow_length(float magnitude, ArrowScale scale, float max_length, ScalarRange range) {
   if (!(magnitude > 0.0f) || !std::isfinite(magnitude)) return 0.0f;
   const double top = range.max > 0.0 ? range.max : 1.0;

@@ -50,6 +50,12 @@ inline constexpr double kArrowRangeQuantile = 0.9;
 ScalarRange arrow_range(const SolverState& solver, const ArrowLayout& layout,
                         const std::vector<float>& vectors, RangeMode mode, ScalarRange fixed);
 
+// The total force counts as near zero (a cloth at rest: every vertex's springs balance its
+// weight) when its range's top is below this share of the springs' force's top. Measured on
+// the default sheet: 0.07 settled without wind, 0.36 in its gusts.
+inline constexpr double kNearRestRatio = 0.15;
+bool total_near_zero(ScalarRange total, ScalarRange springs);
+
 // Length of a force arrow of magnitude m for the longest length `max_length` at range.max:
 // linear max_length * m / max; log max_length * (1 + log10(m / max) / 3), clamped to [0, 1] of
 // max_length (three decades below the top of the range stay visible).

@@ -12,6 +12,16 @@ namespace {
 // is this fraction of the spacing.
 constexpr float kNormalLength = 0.7f, kShaftRadius = 0.06f;
 
+// The force field of `source` into `out`, 3 floats per vertex.
+void copy_force_field(Solver& solver, ForceSource source, std::vector<float>& out) {
+  solver.update_force_field(source);
+  out.resize(3 * solver.vertex_count());
+  for (std::size_t v = 0; v < solver.vertex_count(); ++v) {
+    const Vec3d f = solver.force(static_cast<int>(v));
+    for (int k = 0; k < 3; ++k) out[3 * v + k] = static_cast<float>(f[k]);
+  }
+}
+
 }  // namespace
 
 Diagnostics::Diagnostics() = default;
@@ -56,12 +66,7 @@ void Diagnostics::update(Solver& solver, const ViewSettings& view, Renderer& ren
   solver.copy_positions(positions_.data());
   const float spacing = layout_.spacing;
   if (a.force) {
-    solver.update_force_field(view.force_source);
-    for (std::size_t v = 0; v < n; ++v) {
-      const Vec3d f = solver.force(static_cast<int>(v));
-      for (int k = 0; k < 3; ++k) vectors_[3 * v + k] = static_cast<float>(f[k]);
-    }
-    force_range_ = arrow_range(solver, layout_, vectors_, view.color.range, view.color.fixed);
+    update_force_vectors(solver, view);
     build_force_arrows(layout_, positions_, vectors_, a.scale, a.length * spacing, *force_range_,
                        force_arrows_);
   }
@@ -70,6 +75,25 @@ void Diagnostics::update(Solver& solver, const ViewSettings& view, Renderer& ren
     build_normal_arrows(layout_, positions_, vectors_, kNormalLength * spacing, view.camera.eye(),
                         normal_arrows_);
   }
+}
+
+// The arrows' vectors and range: the view's source, or the springs' force where the total is
+// near zero and the view lets it (an automatic range only: a fixed one says nothing of it).
+void Diagnostics::update_force_vectors(Solver& solver, const ViewSettings& view) {
+  copy_force_field(solver, view.force_source, vectors_);
+  force_range_ = arrow_range(solver, layout_, vectors_, view.color.range, view.color.fixed);
+  shown_source_ = view.force_source;
+  springs_at_rest_ = false;
+  if (!view.springs_at_rest || view.force_source != ForceSource::total ||
+      view.color.range == RangeMode::fixed)
+    return;
+  copy_force_field(solver, ForceSource::springs, spring_vectors_);
+  const ScalarRange springs = arrow_range(solver, layout_, spring_vectors_, view.color.range, {});
+  if (!total_near_zero(*force_range_, springs)) return;
+  vectors_.swap(spring_vectors_);
+  force_range_ = springs;
+  shown_source_ = ForceSource::springs;
+  springs_at_rest_ = true;
 }
 
 void Diagnostics::draw(const ViewSettings& view, const Renderer& renderer) {

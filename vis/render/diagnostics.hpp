@@ -41,6 +41,10 @@ class Diagnostics {
   // What the last update() showed, for legends and tests.
   const std::optional<ScalarRange>& color_range() const { return color_range_; }
   const std::optional<ScalarRange>& force_range() const { return force_range_; }
+  // The source the force arrows showed: the view's, or the springs where the total was near
+  // zero (ScientificViews::springs_at_rest).
+  ForceSource shown_force_source() const { return shown_source_; }
+  bool showing_springs_at_rest() const { return springs_at_rest_; }
   const std::vector<ArrowInstance>& force_arrows() const { return force_arrows_; }
   const std::vector<ArrowInstance>& normal_arrows() const { return normal_arrows_; }
   const ArrowLayout& arrow_layout() const { return layout_; }
@@ -52,9 +56,14 @@ class Diagnostics {
   std::unique_ptr<ArrowPass> arrows_;            // while arrows are shown
   ArrowLayout layout_;
   int layout_request_ = -1;  // the stride setting layout_ was built for (-1: none)
+  void update_force_vectors(Solver& solver, const ViewSettings& view);
+
   std::vector<float> scalars_, positions_, vectors_;
+  std::vector<float> spring_vectors_;  // the springs' force, while it may replace the total
   std::vector<ArrowInstance> force_arrows_, normal_arrows_;
   std::optional<ScalarRange> color_range_, force_range_;
+  ForceSource shown_source_ = ForceSource::total;
+  bool springs_at_rest_ = false;
 };
 
 }  // namespace clothlab::vis

@@ -88,6 +88,10 @@ struct ScientificViews {
   bool legends = true;  // colour bars for the colour-by scalar and the force arrows
   // Which force the |force| colouring and the force arrows show (probes show the total).
   ForceSource force_source = ForceSource::total;
+  // Force arrows of the total show the springs' force instead where the total is near zero (a
+  // cloth at rest, vis/render/arrow_field.hpp); the legend says so. Off once a source is chosen
+  // explicitly (--force-source).
+  bool springs_at_rest = true;
 };
 
 struct ViewSettings : ScientificViews {

@@ -67,6 +67,12 @@ void draw_view_editors(ViewSettings& view) {
              {ForceSource::total, ForceSource::springs, ForceSource::gravity, ForceSource::drag,
               ForceSource::wind},
              force_source_name);
+  if (view.force_source == ForceSource::total) {
+    ImGui::SameLine();
+    ImGui::Checkbox("springs at rest", &view.springs_at_rest);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("where the total force is near zero, show the springs' force");
+  }
   ImGui::SliderInt("arrow every", &a.stride, 0, 32, a.stride == 0 ? "auto" : "%d vertices");
   enum_combo("arrow length", a.scale, {ArrowScale::linear, ArrowScale::log},
              [](ArrowScale s) { return s == ArrowScale::log ? "log (3 decades)" : "linear"; });
