@@ -90,11 +90,13 @@ void set_bytes(Image& image, int x, int y, std::uint8_t r, std::uint8_t g, std::
   p[3] = 255;
 }
 
-// Whether weft thread j (0 .. n - 1) is one of the m metallic ones: m of n spread evenly
-// (Bresenham), shifted by `phase`.
+// Whether weft thread j (0 .. n - 1) is one of the m metallic ones: m neighbouring threads
+// from `phase` on, a band. In a 2/2 twill each weft's floats start one cell after the previous
+// weft's, so a band's floats climb the twill's diagonal and read as metal woven into the rib;
+// threads spread evenly every 4th (the twill's period) put their floats in the same columns, a
+// grid of dashes.
 bool metallic_weft(int j, int m, int n, int phase) {
-  const long long a = (long long)(j + phase) * m, b = (long long)(j + phase + 1) * m;
-  return b / n > a / n;
+  return ((j - phase) % n + n) % n < m;
 }
 
 }  // namespace
