@@ -79,8 +79,9 @@ vec3 cloth_brdf_lit(vec3 n, vec3 albedo) {
 
 // Key 5: translucent cloth. Light on the side we see is reflected (Lambert); light from behind
 // comes through, tinted by the dye (diffuse transmission tau * filter(albedo), shaders/yarn.glsl:
-// the glow of a back-lit cloth, as KHR_materials_translucency); the threads cover a fraction c of the surface, which is
-// the alpha the cloth is blended with, so what lies behind shows through the gaps.
+// the glow of a back-lit cloth, as KHR_materials_translucency); the threads cover a fraction c
+// of the surface, which is the alpha the cloth is blended with, so what lies behind shows
+// through the gaps.
 vec4 translucent_lit(vec3 n, vec3 albedo) {
   vec3 l = light_vector(v_world);
   vec3 vis = shadow_visibility(v_world, n);  // outside branches: it takes derivatives

@@ -6,12 +6,13 @@ namespace clothlab {
 namespace {
 
 // Chosen on the shipped 32 x 32 scenes (edge 3.75-6.5 cm); docs/materials.md has the measured
-// folds, drape and drop of each. `card` is the assignment's uniform stiffness.
+// folds, drape and drop of each. cotton: soft folds, slides off a ball; silk: light, many small
+// folds; denim: heavy, few broad folds; card: the assignment's uniform stiffness, no folds.
 constexpr std::array<SpringPreset, 4> kPresets{{
-    {"cotton", 800.0, 400.0, 8.0, 0.05, "soft folds, slides off a ball"},
-    {"silk", 400.0, 100.0, 1.0, 0.02, "light, many small folds"},
-    {"denim", 2500.0, 1500.0, 60.0, 0.1, "heavy, few broad folds"},
-    {"card", 800.0, 800.0, 800.0, 0.05, "bends as stiffly as it stretches: no folds"},
+    {"cotton", 800.0, 400.0, 8.0, 0.05},
+    {"silk", 400.0, 100.0, 1.0, 0.02},
+    {"denim", 2500.0, 1500.0, 60.0, 0.1},
+    {"card", 800.0, 800.0, 800.0, 0.05},
 }};
 
 }  // namespace

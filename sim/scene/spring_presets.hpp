@@ -19,11 +19,10 @@ namespace clothlab {
 
 struct SpringPreset {
   std::string_view name;
-  double stretch = 0.0;   // N/m for a spring one edge long (springs.stiffness)
-  double shear = 0.0;     // N/m, grid diagonals
-  double bend = 0.0;      // N/m, two-step and knight's-move springs
-  double damping = 0.0;   // N s/m, along each spring
-  std::string_view look;  // how it behaves, in a few words (docs, key table)
+  double stretch = 0.0;  // N/m for a spring one edge long (springs.stiffness)
+  double shear = 0.0;    // N/m, grid diagonals
+  double bend = 0.0;     // N/m, two-step and knight's-move springs
+  double damping = 0.0;  // N s/m, along each spring
 };
 
 // Every preset, in the order `clothlab params` lists them.
