@@ -263,6 +263,11 @@ TEST_F(GoldenImage, ForceArrows) {
   view.arrows.scale = vis::ArrowScale::linear;
   view.force_source = ForceSource::springs;
   view.color.map = vis::ColorMap::magma;
+  // A fixed range, about this frame's largest free |F|: the automatic top, a quantile, makes the
+  // arrows twice as long, and that magnified the last bits in which the sanitizer build differs
+  // (0.8 % of the pixels off by more than 8/255 there).
+  view.color.range = vis::RangeMode::fixed;
+  view.color.fixed = {0.0, 0.025};
   check_golden(*renderer_, *solver_, view, "arrows_force");
 }
 

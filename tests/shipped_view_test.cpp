@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -171,6 +172,14 @@ TEST_F(ShippedView, SpringModeColoursTheWholeSheet) {
   std::printf("saturated cloth pixels in mode 1: %.1f %%\n",
               100.0 * double(coloured) / double(cloth));
   EXPECT_GE(double(coloured), 0.35 * double(cloth));
+  // Its range, +-r, is on the legend (Moreland's map, as the lines).
+  const std::optional<vis::ScalarRange>& strain = renderer_->renderer().strain_range();
+  ASSERT_TRUE(strain.has_value());
+  EXPECT_EQ(strain->min, -strain->max);
+  EXPECT_GT(strain->max, 1e-4);
+  std::printf("mode 1 strain range +-%.3g\n", strain->max);
+  render("default.toml", vis::DisplayMode::lambert, 2.0);
+  EXPECT_FALSE(renderer_->renderer().strain_range().has_value()) << "no springs in mode 3";
 }
 
 // The pixel length of each force arrow of the last render at the default camera.

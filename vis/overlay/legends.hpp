@@ -1,10 +1,12 @@
 // The colour bars of the scientific views, for the window and the headless renderer alike: one
-// bar for the cloth's colour-by scalar and one for the force arrows' magnitude, each with its
-// range, ticks and unit, stacked from the right edge of the given area.
+// bar for the cloth's colour-by scalar, one for the force arrows' magnitude and one for the
+// springs' strain (mode 1), each with its range, ticks and unit, stacked from the right edge of
+// the given area.
 #pragma once
 
 #include <imgui.h>
 
+#include <optional>
 #include <vector>
 
 #include "vis/render/diagnostics.hpp"
@@ -23,9 +25,11 @@ struct LegendBar {
   ScalarRange range;
 };
 
-// Draws the bars for what the last Diagnostics::update showed (nothing when no range is on) and
-// returns where they went, right-most first.
+// Draws the bars for what the last Diagnostics::update showed and, given `strain` (the
+// renderer's Renderer::strain_range()), the springs' strain on Moreland's cool-warm map; nothing
+// when no range is on. Returns where they went, right-most first.
 std::vector<LegendBar> draw_legends(ImDrawList* draw, ImVec2 area_min, ImVec2 area_max,
-                                    const ViewSettings& view, const Diagnostics& diagnostics);
+                                    const ViewSettings& view, const Diagnostics& diagnostics,
+                                    const std::optional<ScalarRange>& strain = std::nullopt);
 
 }  // namespace clothlab::vis

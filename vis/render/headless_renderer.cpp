@@ -20,11 +20,12 @@ void HeadlessRenderer::draw(Solver& solver, const ViewSettings& view) {
   if (PassTimer* timer = renderer_.pass_timer()) timer->begin(Pass::overlay);
   diagnostics_.draw(view, renderer_);
   legends_.clear();
-  if (view.legends && (diagnostics_.color_range() || diagnostics_.force_range())) {
+  const std::optional<ScalarRange>& strain = renderer_.strain_range();
+  if (view.legends && (diagnostics_.color_range() || diagnostics_.force_range() || strain)) {
     if (!overlay_) overlay_ = std::make_unique<HeadlessOverlay>();
     const ImVec2 size(static_cast<float>(width()), static_cast<float>(height()));
     overlay_->draw(width(), height(), [&](ImDrawList* draw) {
-      legends_ = draw_legends(draw, ImVec2(0.0f, 0.0f), size, view, diagnostics_);
+      legends_ = draw_legends(draw, ImVec2(0.0f, 0.0f), size, view, diagnostics_, strain);
     });
   }
   if (PassTimer* timer = renderer_.pass_timer()) timer->end();

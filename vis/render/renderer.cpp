@@ -195,6 +195,8 @@ glm::mat4 Renderer::upload_frame(const ViewSettings& view, int width, int height
   const bool springs = view.mode == DisplayMode::springs || cloth_.triangle_indices() == 0;
   if (!(view.strain_range > 0.0f))
     frame.params.x = springs ? cloth_.strain_quantile(kStrainRangeQuantile) : kMinStrainRange;
+  strain_range_.reset();
+  if (springs) strain_range_ = ScalarRange{-frame.params.x, frame.params.x};
   glNamedBufferSubData(frame_ubo_.get(), 0, sizeof frame, &frame);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, frame_ubo_.get());
   return frame.view_proj;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "sim/model/model.hpp"
@@ -74,6 +75,9 @@ class Renderer {
   void set_normal_map(const Image* map);
   // The light as the last draw() placed it (tests project through its matrices).
   const LightRig& light() const { return light_; }
+  // The springs' strain colour range of the last draw() (+-r), when it drew springs (mode 1, or
+  // a cloth without triangles); for the legend.
+  const std::optional<ScalarRange>& strain_range() const { return strain_range_; }
 
   // Render vertices: the solver's vertices (same indices), then for every tube (wrap_u) one copy
   // of column 0 per row with u = 1, which the seam's triangles use instead of column 0 so the
@@ -121,6 +125,7 @@ class Renderer {
   std::unique_ptr<Scenery> scenery_;
   std::unique_ptr<ColliderScenery> colliders_;  // only while the scene has colliders
   LightRig light_;
+  std::optional<ScalarRange> strain_range_;
   std::string gl_renderer_;  // GL_RENDERER of this context
   Buffer frame_ubo_;
   ScalarRange scalar_range_;

@@ -425,7 +425,7 @@ void ViewApp::draw(int width, int height) {
   renderer_->draw(view_, width, height);
   diagnostics_->draw(view_, *renderer_);
   if (scene_target_) scene_target_->resolve_into(0);
-  draw_legends(view_, *diagnostics_);
+  draw_legends(view_, *diagnostics_, renderer_->strain_range());
   if (grab_.pending()) {
     int window_w = 0, window_h = 0;
     glfwGetWindowSize(window_.handle(), &window_w, &window_h);

@@ -79,11 +79,13 @@ void draw_view_editors(ViewSettings& view) {
   ImGui::SliderFloat("longest arrow", &a.length, 0.2f, 5.0f, "%.2g x spacing");
 }
 
-void draw_legends(const ViewSettings& view, const Diagnostics& diagnostics) {
+void draw_legends(const ViewSettings& view, const Diagnostics& diagnostics,
+                  const std::optional<ScalarRange>& strain) {
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   const ImVec2 max(viewport->WorkPos.x + viewport->WorkSize.x,
                    viewport->WorkPos.y + viewport->WorkSize.y);
-  draw_legends(ImGui::GetBackgroundDrawList(), viewport->WorkPos, max, view, diagnostics);
+  if (!view.legends) return;
+  draw_legends(ImGui::GetBackgroundDrawList(), viewport->WorkPos, max, view, diagnostics, strain);
 }
 
 }  // namespace clothlab::vis

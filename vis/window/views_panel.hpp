@@ -12,7 +12,8 @@ namespace clothlab::vis {
 void draw_view_editors(ViewSettings& view);
 
 // A colour bar for each view that maps a value to a colour (the cloth's scalar, the force
-// arrows' magnitude), with its range and unit, at the window's right edge.
-void draw_legends(const ViewSettings& view, const Diagnostics& diagnostics);
+// arrows' magnitude, mode 1's strain), with its range and unit, at the window's right edge.
+void draw_legends(const ViewSettings& view, const Diagnostics& diagnostics,
+                  const std::optional<ScalarRange>& strain);
 
 }  // namespace clothlab::vis
