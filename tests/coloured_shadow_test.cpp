@@ -1,8 +1,8 @@
 // Mode 5's coloured shadows (docs/rendering.md section 5), measured as ratios on the floor (the
 // render with shadows over the same render without them, at the same pixel, so the floor's
 // texture cancels): under a red translucent sheet the light that reaches the floor is the
-// sheet's transmittance T = (1 - c) + c tau filter(albedo) per channel, two sheets give T^2, an opaque
-// sheet gives a neutral dark shadow, and an object between the light and the sheet stays
+// sheet's transmittance T = (1 - c) + c tau filter(albedo) per channel, two sheets give T^2, an
+// opaque sheet gives a neutral dark shadow, and an object between the light and the sheet stays
 // untinted.
 #include <gtest/gtest.h>
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sim/solver.hpp"
+#include "vis/render/quantile.hpp"
 
 namespace clothlab::vis {
 namespace {
@@ -84,10 +85,7 @@ ScalarRange arrow_range(const SolverState& solver, const ArrowLayout& layout,
   if (magnitudes.empty()) return {0.0, 1.0};
   // The kArrowRangeQuantile-th magnitude, not the largest: one vertex beside a pin (or a
   // contact) can carry ten times the rest and would shrink every other arrow below a pixel.
-  const auto q = magnitudes.begin() +
-                 static_cast<std::ptrdiff_t>(kArrowRangeQuantile * double(magnitudes.size() - 1));
-  std::nth_element(magnitudes.begin(), q, magnitudes.end());
-  double top = *q;
+  double top = quantile(magnitudes, kArrowRangeQuantile);
   if (!(top > 0.0)) top = *std::max_element(magnitudes.begin(), magnitudes.end());
   // All arrows zero: any non-empty range draws them all at length 0.
   return {0.0, top > 0.0 ? top : 1.0};

@@ -9,6 +9,7 @@
 #include "sim/step_backend.hpp"
 #include "vis/gl/program.hpp"
 #include "vis/gl/uploads.hpp"
+#include "vis/render/quantile.hpp"
 #include "vis/textures/cloth_tangents.hpp"
 
 namespace clothlab::vis {
@@ -80,7 +81,7 @@ void ClothGeometry::update(SolverState& solver) {
                        static_cast<GLsizeiptr>(staging_.size() * sizeof(float)), staging_.data());
 }
 
-float ClothGeometry::strain_quantile(double q) const {
+float ClothGeometry::strain_quantile(double q) {
   const std::size_t rn = layout_.render_vertices(), lines = layout_.lines.size() / 2;
   const float* rest = layout_.fixed.data() + 2 * rn;  // after the UV block
   const std::size_t every = std::max<std::size_t>(1, lines / 4096);
@@ -97,9 +98,7 @@ float ClothGeometry::strain_quantile(double q) const {
     if (std::isfinite(strain)) strains_.push_back(std::abs(strain - 1.0f));
   }
   if (strains_.empty()) return kMinStrainRange;
-  const auto k = strains_.begin() + static_cast<std::ptrdiff_t>(q * double(strains_.size() - 1));
-  std::nth_element(strains_.begin(), k, strains_.end());
-  return std::max(*k, kMinStrainRange);
+  return std::max(quantile(strains_, q), kMinStrainRange);
 }
 
 // values[offset + stride * (vertices + k) + d] = values[offset + stride * seam_copies[k] + d].

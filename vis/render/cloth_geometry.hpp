@@ -38,7 +38,7 @@ class ClothGeometry {
   // The q-quantile of |strain| (|x_b - x_a| / |X_b - X_a| - 1) over the springs at the last
   // update()'s positions, at least kMinStrainRange: mode 1's automatic colour range. Springs
   // are sampled (at most about 4096) so a large cloth pays little.
-  float strain_quantile(double q) const;
+  float strain_quantile(double q);
   // The tangent frame of the last update(), computed only when a mode needs it.
   void update_tangents();
 
@@ -70,7 +70,7 @@ class ClothGeometry {
   std::vector<float> staging_;         // positions, then normals, per render vertex
   std::vector<float> scalar_staging_;  // the colour-by scalar per render vertex
   std::vector<float> tangents_, tangent_scratch_;
-  mutable std::vector<float> strains_;  // strain_quantile's sample
+  std::vector<float> strains_;  // strain_quantile's sample
   bool tangents_stale_ = true;
   glm::vec3 lo_{0.0f}, hi_{0.0f};
   // The GPU backend's cloth the last update() packed from (the tangents read its normals back
