@@ -20,14 +20,8 @@
 namespace clothlab {
 namespace {
 
-void BM_SymplecticEulerStep(benchmark::State& state) {
-  const int res = static_cast<int>(state.range(0));
-  const int threads = static_cast<int>(state.range(1));
-  const auto kernel = state.range(3) == 0 ? SpringKernel::row_sweep : SpringKernel::neighbour_list;
-  const auto solver_owner =
-      make_solver(bench::sheet_scene(res, threads, state.range(2) != 0), kernel);
-  Solver& solver = *solver_owner;
-  solver.step(20);  // warm caches and the thread pool
+// Steps the solver once per benchmark iteration; records and returns its spring count.
+double time_steps(benchmark::State& state, Solver& solver) {
   for (auto _ : state) {
     if (!solver.step(1).ok()) {
       state.SkipWithError("diverged");
@@ -36,6 +30,18 @@ void BM_SymplecticEulerStep(benchmark::State& state) {
   }
   const double springs = static_cast<double>(solver.spring_count());
   state.counters["springs"] = springs;
+  return springs;
+}
+
+void BM_SymplecticEulerStep(benchmark::State& state) {
+  const int res = static_cast<int>(state.range(0));
+  const int threads = static_cast<int>(state.range(1));
+  const auto kernel = state.range(3) == 0 ? SpringKernel::row_sweep : SpringKernel::neighbour_list;
+  const auto solver_owner =
+      make_solver(bench::sheet_scene(res, threads, state.range(2) != 0), kernel);
+  Solver& solver = *solver_owner;
+  solver.step(20);  // warm caches and the thread pool
+  const double springs = time_steps(state, solver);
   // Seconds per spring-step (printed with an SI prefix: "2.5n" is 2.5 ns).
   state.counters["per_spring_step"] =
       benchmark::Counter(springs * static_cast<double>(state.iterations()),
@@ -48,6 +54,33 @@ BENCHMARK(BM_SymplecticEulerStep)
     ->ArgsProduct({{64, 128, 256}, {1, 2}, {0}, {0, 1}})
     ->ArgsProduct({{64, 128, 256}, {1, 2}, {1}, {0}})
     ->Unit(benchmark::kMicrosecond)
+    ->MinTime(0.5);
+
+// One xpbd substep of one sweep (issue 36: "one sweep within 2x of the explicit force pass per
+// spring"): the same sheet at dt = 1/60 s in 20 substeps, per spring and sweep, on the solver's
+// default path (the grid path on this sheet; kernel 1: the neighbour-list path).
+void BM_XpbdSweep(benchmark::State& state) {
+  const int res = static_cast<int>(state.range(0));
+  const int threads = static_cast<int>(state.range(1));
+  const auto kernel = state.range(2) == 0 ? SpringKernel::row_sweep : SpringKernel::neighbour_list;
+  constexpr int kSubsteps = 20;
+  Scene scene = bench::sheet_scene(res, threads, false);
+  scene.solver.integrator = IntegratorKind::xpbd;
+  scene.solver.dt = 1.0 / 60.0;
+  scene.solver.substeps = kSubsteps;
+  scene.solver.iterations = 1;
+  const auto solver_owner = make_solver(scene, kernel);
+  Solver& solver = *solver_owner;
+  solver.step(2);
+  const double springs = time_steps(state, solver);
+  state.counters["per_spring_sweep"] =
+      benchmark::Counter(springs * kSubsteps * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_XpbdSweep)
+    ->ArgNames({"res", "threads", "kernel"})
+    ->ArgsProduct({{64, 128, 256}, {1, 2}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)
     ->MinTime(0.5);
 
 // Foreign load spoils 2-thread numbers (docs/design.md, performance notes): record it with the run.

@@ -7,28 +7,13 @@
 
 #include <cmath>
 
+#include "disturbed_state.hpp"
 #include "sim/forces/fused_band_pass.hpp"
 #include "sim/integrators/integrator.hpp"
 #include "test_scenes.hpp"
 
 namespace clothlab {
 namespace {
-
-// A state off rest, so every spring pulls or pushes and damps.
-template <class T>
-State<T> disturbed(const Model<T>& m) {
-  State<T> s{m.rest_positions, {}};
-  s.vel.resize(m.n);
-  for (std::size_t i = 0; i < m.n; ++i) {
-    const double u = double(i);
-    s.pos.x[i] += T(0.01 * std::sin(0.7 * u));
-    s.pos.z[i] += T(0.02 * std::cos(1.1 * u));
-    if (m.inv_mass[i] != T(0))
-      s.vel.set(i, T(0.3 * std::sin(1.3 * u)), T(-0.5 + 0.2 * std::cos(0.9 * u)),
-                T(0.4 * std::sin(2.1 * u)));
-  }
-  return s;
-}
 
 // Symplectic Euler as SymplecticEulerRule has it: v += dt a, x += dt v.
 template <class T>

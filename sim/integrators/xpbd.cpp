@@ -44,6 +44,7 @@
 
 #include "sim/core/parallel.hpp"
 #include "sim/integrators/integrator.hpp"
+#include "sim/integrators/xpbd_grid.hpp"
 
 namespace clothlab {
 namespace {
@@ -78,21 +79,25 @@ std::vector<int> colour_springs(std::size_t n, const std::vector<std::array<int,
 template <class T>
 class Xpbd final : public Integrator<T> {
  public:
-  Xpbd(const Model<T>& m, const SolverSpec& spec)
+  // order: a colour per spring of spring_list(m) (xpbd_grid_colours), or empty for the greedy
+  // colouring.
+  Xpbd(const Model<T>& m, const SolverSpec& spec, const std::vector<int>& order = {})
       : sweeps_(spec.iterations > 0 ? spec.iterations : 1) {
     const SpringList<T> list = spring_list(m);
     // Springs that can act: not both ends pinned, and some stiffness or damping.
     std::vector<std::array<int, 2>> ends;
     std::vector<std::size_t> source;
+    std::vector<int> colour;
     for (std::size_t s = 0; s < list.size(); ++s) {
       const auto [a, b] = list.ends[s];
       const bool movable = m.inv_mass[a] != T(0) || m.inv_mass[b] != T(0);
       if (movable && (list.stiffness[s] != T(0) || list.damping[s] != T(0))) {
         ends.push_back(list.ends[s]);
         source.push_back(s);
+        if (!order.empty()) colour.push_back(order[s]);
       }
     }
-    const std::vector<int> colour = colour_springs(m.n, ends);
+    if (order.empty()) colour = colour_springs(m.n, ends);
     int colours = 0;
     for (int c : colour) colours = std::max(colours, c + 1);
     // Counting sort by colour, stable: spring_list() order within a colour.
@@ -247,8 +252,21 @@ class Xpbd final : public Integrator<T> {
 
 template <class T>
 std::unique_ptr<Integrator<T>> make_xpbd(const Model<T>& m, const SolverSpec& spec) {
+  if (xpbd_grid_applies(m)) return make_xpbd_grid(m, spec);
   return std::make_unique<Xpbd<T>>(m, spec);
 }
 CLOTHLAB_INSTANTIATE_FACTORY(make_xpbd)
+
+template <class T>
+std::unique_ptr<Integrator<T>> make_xpbd_in_order(const Model<T>& m, const SolverSpec& spec,
+                                                  std::vector<int> colours) {
+  return std::make_unique<Xpbd<T>>(m, spec, colours);
+}
+template std::unique_ptr<Integrator<float>> make_xpbd_in_order<float>(const Model<float>&,
+                                                                      const SolverSpec&,
+                                                                      std::vector<int>);
+template std::unique_ptr<Integrator<double>> make_xpbd_in_order<double>(const Model<double>&,
+                                                                        const SolverSpec&,
+                                                                        std::vector<int>);
 
 }  // namespace clothlab
