@@ -31,14 +31,22 @@ State<T> initial_state(const Model<T>& m) {
   return s;
 }
 
-// The scene's solver block with dt = "auto" resolved (sim/stability/step_limit.hpp), so the
-// integrator is built for the step it will take.
+// The longest side of any cloth in vertices (a mesh cloth counts as a square of its vertices).
+int longest_side(const std::vector<ClothRange>& cloths) {
+  int side = 1;
+  for (const ClothRange& c : cloths)
+    side = std::max(
+        side, c.mesh ? static_cast<int>(std::ceil(std::sqrt(double(c.nu)))) : std::max(c.nu, c.nv));
+  return side;
+}
+
+// The scene's solver block with dt = "auto" and substeps = "auto" resolved
+// (sim/stability/step_limit.hpp), so the integrator is built for the step it will take.
 template <class T>
 SolverSpec resolve_step(const Model<T>& m, SolverSpec spec) {
-  if (!spec.dt_auto) return spec;
-  const StepChoice choice = choose_step(spec.integrator, estimate_spectrum(m));
-  spec.dt = choice.dt;
-  spec.substeps = choice.substeps;
+  if (spec.dt_auto) spec.dt = choose_step(spec.integrator, estimate_spectrum(m)).dt;
+  if (spec.substeps == 0)
+    spec.substeps = auto_substeps(spec.integrator, spec.dt, longest_side(m.cloths));
   return spec;
 }
 

@@ -159,7 +159,7 @@ foreach(kind implicit_euler xpbd local_global vbd bdf2)
     trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.5 --out ${CLOTHLAB_TRACE_OUT}/${kind}.csv
     --set solver.integrator=${kind} --set solver.dt=auto)
 endforeach()
-clothlab_cli_test(set.bad_substeps 2 "--set solver.substeps=0: solver.substeps: must be between 1"
+clothlab_cli_test(set.bad_substeps 2 "--set solver.substeps=0: solver.substeps: must be at least 1, or \"auto\""
   check ${CLOTHLAB_DEFAULT_SCENE} --set solver.substeps=0)
 clothlab_cli_test(set.bad_cg_tolerance 2 "solver.cg_tolerance: must be between 0 \\(automatic\\) and 1, exclusive of 1"
   check ${CLOTHLAB_DEFAULT_SCENE} --set solver.cg_tolerance=2)

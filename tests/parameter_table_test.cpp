@@ -85,7 +85,8 @@ TEST(ParameterTable, UnknownKeysListTheSectionsKeys) {
 // A value just outside p's range (for integers, an integer).
 std::string outside(const Parameter& p) {
   const Range& r = p.range;
-  const bool integral = p.kind == ValueKind::integer || p.kind == ValueKind::integers;
+  const bool integral = p.kind == ValueKind::integer || p.kind == ValueKind::integers ||
+                        p.form.starts_with("an integer");
   double x = r.lo != -Range::kInf
                  ? (r.lo_open ? r.lo : r.lo - (integral ? 1.0 : 0.5 * (1.0 + std::abs(r.lo))))
                  : (r.hi_open ? r.hi : r.hi + 1.0);

@@ -94,37 +94,36 @@ TEST(AutoStep, LargeStepMethodsUseTheDisplayRate) {
   Scene scene = testing::falling_sheet(16, IntegratorKind::xpbd, 1.0);
   scene.solver.dt_auto = true;
   const auto x_owner = testing::solver<double>(scene);
-  Solver& x = *x_owner;
-  EXPECT_NEAR(x.dt(), 1.0 / 60.0, 1e-15);
-  const StepChoice c =
-      choose_step(IntegratorKind::xpbd, estimate_spectrum(build_model<double>(scene)));
-  EXPECT_EQ(x.substeps(), c.substeps);
-  EXPECT_NEAR(x.dt() / x.substeps(), std::min(1.0 / 60.0, kXpbdSubstepLimits * c.limit),
-              kXpbdSubstepLimits * c.limit);
+  EXPECT_NEAR(x_owner->dt(), 1.0 / 60.0, 1e-15);
+  EXPECT_EQ(x_owner->substeps(), kXpbdMinSubsteps);  // a 16-vertex side: the floor
   scene.solver.integrator = IntegratorKind::implicit_euler;
   const auto ie_owner = testing::solver<double>(scene);
-  Solver& ie = *ie_owner;
-  EXPECT_NEAR(ie.dt(), kImplicitStep, 1e-15);
+  EXPECT_NEAR(ie_owner->dt(), kImplicitStep, 1e-15);
+  EXPECT_EQ(ie_owner->substeps(), 1);
 }
 
-// xpbd's automatic substeps follow the stiffness up to kXpbdMaxSubsteps and stop there (a stiff
-// lattice gains little past it; step_limit.hpp has the measurements).
-TEST(AutoStep, XpbdSubstepsStopAtTheirCap) {
-  Scene scene = testing::falling_sheet(16, IntegratorKind::xpbd, 1.0);
-  scene.solver.dt_auto = true;
-  int previous = 0;
-  for (double k : {100.0, 1e3, 1e4, 1e5, 1e7}) {
+// substeps = "auto" (0): xpbd takes kXpbdMinSubsteps per 1/60 s up to a side of 100 vertices,
+// then one per kXpbdSideVertices of the longest side, scaled with the step and capped; stiffness
+// does not enter; every other method takes 1; a number given is kept.
+TEST(AutoStep, XpbdSubstepsFollowTheLongestSide) {
+  using K = IntegratorKind;
+  EXPECT_EQ(auto_substeps(K::xpbd, 1.0 / 60.0, 32), 10);
+  EXPECT_EQ(auto_substeps(K::xpbd, 1.0 / 60.0, 100), 10);
+  EXPECT_EQ(auto_substeps(K::xpbd, 1.0 / 60.0, 101), 11);
+  EXPECT_EQ(auto_substeps(K::xpbd, 1.0 / 60.0, 256), 26);
+  EXPECT_EQ(auto_substeps(K::xpbd, 1.0 / 120.0, 256), 13);
+  EXPECT_EQ(auto_substeps(K::xpbd, 1e-4, 32), 1);
+  EXPECT_EQ(auto_substeps(K::xpbd, 1e9, 32), kXpbdMaxSubsteps);
+  EXPECT_EQ(auto_substeps(K::vbd, 1.0 / 60.0, 256), 1);
+  EXPECT_EQ(auto_substeps(K::symplectic_euler, 1e-3, 256), 1);
+  Scene scene = testing::falling_sheet(16, K::xpbd, 1.0 / 60.0);
+  scene.cloths[0].resolution = {120, 30};
+  for (double k : {100.0, 1e5, 1e7}) {
     scene.springs.stiffness = k;
-    const auto x_owner = testing::solver<double>(scene);
-    Solver& x = *x_owner;
-    const StepChoice c =
-        choose_step(IntegratorKind::xpbd, estimate_spectrum(build_model<double>(scene)));
-    const int uncapped = int(std::ceil(1.0 / 60.0 / (kXpbdSubstepLimits * c.limit)));
-    EXPECT_EQ(x.substeps(), std::min(uncapped, kXpbdMaxSubsteps)) << k;
-    EXPECT_GE(x.substeps(), previous) << k;
-    previous = x.substeps();
+    EXPECT_EQ(testing::solver<double>(scene)->substeps(), 12) << k;
   }
-  EXPECT_EQ(previous, kXpbdMaxSubsteps);  // k = 1e7 N/m would ask for hundreds
+  scene.solver.substeps = 3;
+  EXPECT_EQ(testing::solver<double>(scene)->substeps(), 3);
 }
 
 // What `auto` is for: a user who changes stiffness or resolution keeps a stable run without

@@ -75,6 +75,8 @@ StabilityOutcome check_stability(const Scene& scene, double dt, const StabilityC
   Scene s = scene;
   s.solver.dt = dt;
   s.solver.dt_auto = false;
+  // The sweep is over one integrator step: automatic substeps would grow with dt.
+  if (s.solver.substeps == 0) s.solver.substeps = 1;
   return check_solver(s, check);
 }
 

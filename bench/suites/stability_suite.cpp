@@ -48,7 +48,7 @@ Scene stress_scene(const Stress& stress, IntegratorKind kind, int resolution, in
     s.forces.wind.gust = 1.0;
     s.forces.wind.seed = 3;
   }
-  s.solver.substeps = substeps > 0 ? substeps : choose_step(kind, spectrum_of(s)).substeps;
+  s.solver.substeps = substeps;
   return s;
 }
 
@@ -116,7 +116,7 @@ void add_stress_rows(const Stress& st, int resolution, double duration, Table& s
       const bool ok = expect_stable ? outcome == "stable" : caught;
       std::string label = to_string(kind);
       if (xpbd) {
-        const int n = scene.solver.substeps;
+        const int n = make_solver(scene)->substeps();
         label += " (" + std::to_string(n) + (n == 1 ? " substep)" : " substeps)");
       }
       stress.add({std::string(st.name) + " (" + st.what + ")", label,

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "sim/core/parallel.hpp"
+#include "sim/integrators/tethers.hpp"
 
 namespace clothlab {
 namespace {
@@ -199,7 +200,8 @@ template <class T>
 class XpbdGrid final : public Integrator<T> {
  public:
   XpbdGrid(const Model<T>& m, const SolverSpec& spec)
-      : sweeps_(spec.iterations > 0 ? spec.iterations : 1) {
+      : sweeps_(spec.iterations > 0 ? spec.iterations : 1),
+        tethers_(spec.tethers ? Tethers<T>(m) : Tethers<T>()) {
     std::size_t lambda_size = 0;
     int max_nu = 0;
     for (const GridStencil<T>& g : m.grids) {
@@ -228,6 +230,9 @@ class XpbdGrid final : public Integrator<T> {
     if (!f_.x.empty()) compute_external_forces(m, t, s.pos, s.vel, f_, sys.workspace, sys.threads);
     const int threads = sys.threads;
     inv_mass_ = m.inv_mass.data();
+    // Pins do not move in the sweep (inverse mass 0), so their positions are final already.
+    if (!tethers_.empty()) tethers_.gather_pins(s.pos, m.inv_mass.data());
+    const long blocks = static_cast<long>(block_count(m.n));
     run_team(threads, [&] {
       for (int sweep = 0; sweep < sweeps_; ++sweep) {
         for (int phase = 0; phase < 2; ++phase) {
@@ -248,8 +253,13 @@ class XpbdGrid final : public Integrator<T> {
           }
         }
       }
+      // After the last phase's barrier: every position is final.
+#pragma omp for schedule(static)
+      for (long k = 0; k < blocks; ++k) {
+        const std::size_t b = static_cast<std::size_t>(k) * kBlockSize;
+        finish(m, s, h, b, std::min(m.n, b + kBlockSize));
+      }
     });
-    finish(m, s, h, threads);
   }
 
   SolveStats last_stats() const override {
@@ -342,21 +352,21 @@ class XpbdGrid final : public Integrator<T> {
             prev_.y.data() + i, prev_.z.data() + i, inv_mass_ + i};
   }
 
-  // v = (x - x_prev) / h.
-  void finish(const Model<T>& m, State<T>& s, T h, int threads) {
+  // Vertices [b, e): the tethers (tethers.hpp), then v = (x - x_prev) / h.
+  void finish(const Model<T>& m, State<T>& s, T h, std::size_t b, std::size_t e) {
+    if (!tethers_.empty()) tethers_.project(s.pos, m.inv_mass.data(), b, e);
     const T inv_h = T(1) / h;
-    for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) {
-      for (int a = 0; a < 3; ++a) {
-        const T* __restrict x = s.pos.axis(a).data();
-        const T* __restrict q = prev_.axis(a).data();
-        T* __restrict v = s.vel.axis(a).data();
+    for (int a = 0; a < 3; ++a) {
+      const T* __restrict x = s.pos.axis(a).data();
+      const T* __restrict q = prev_.axis(a).data();
+      T* __restrict v = s.vel.axis(a).data();
 #pragma omp simd
-        for (std::size_t i = b; i < e; ++i) v[i] = (x[i] - q[i]) * inv_h;
-      }
-    });
+      for (std::size_t i = b; i < e; ++i) v[i] = (x[i] - q[i]) * inv_h;
+    }
   }
 
   int sweeps_;
+  Tethers<T> tethers_;
   std::vector<GridPart<T>> parts_;
   std::vector<std::size_t> lambda_start_;
   std::vector<BandRef> bands_[2];  // phase 0: even bands of every cloth, phase 1: odd

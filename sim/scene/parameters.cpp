@@ -270,11 +270,17 @@ std::vector<Parameter> solver() {
            .widget = W::step,
            .description = "the step, or auto: from the scene's highest frequency"},
           &special::dt_values),
-      row<&SolverSpec::substeps>({.name = "substeps",
-                                  .range = between(1, 100000),
-                                  .fallback = "1",
-                                  .widget = W::input,
-                                  .description = "integrator steps of dt / substeps per step"}),
+      special_row<&SolverSpec::substeps>(
+          &special::read_substeps,
+          {.name = "substeps",
+           .range = between(1, 100000),
+           .fallback = "\"auto\"",
+           .form = "an integer or \"auto\"",
+           .widget = W::substeps,
+           .description = "integrator steps of dt / substeps per step, or auto: xpbd from the "
+                          "cloth's size (10 per 1/60 s up to 100 vertices a side, then one per "
+                          "10 vertices), every other method 1"},
+          &special::substeps_values),
       row<&SolverSpec::iterations>(
           {.name = "iterations",
            .range = between(0, 100000),
@@ -284,6 +290,12 @@ std::vector<Parameter> solver() {
            .widget = W::input,
            .description = "xpbd: sweeps per substep (1); local_global: per step (10); vbd and bdf2 "
                           "with bdf2_solver = vbd: per step (30); 0 = default"}),
+      row<&SolverSpec::tethers>(
+          {.name = "tethers",
+           .fallback = "true",
+           .only_for = "xpbd",
+           .description = "grid cloths: no free vertex gets further from a pin than at rest "
+                          "(long-range attachments, Kim et al. 2012)"}),
   };
 }
 

@@ -68,7 +68,7 @@ struct Range {
 };
 
 // How the window's panel edits a parameter (none: not in the panel).
-enum class Widget { none, input, log_slider, combo, step };
+enum class Widget { none, input, log_slider, combo, step, substeps };
 
 struct Parameter {
   Section section = Section::top;  // the table the key belongs to

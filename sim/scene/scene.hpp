@@ -116,8 +116,9 @@ struct SolverSpec {
   IntegratorKind integrator = IntegratorKind::symplectic_euler;
   double dt = 0.001;           // s, fixed step, > 0 (ignored when dt_auto)
   bool dt_auto = false;        // dt = "auto": step and substeps chosen from the highest frequency
-  int substeps = 1;            // integrator steps of dt / substeps per step, >= 1
+  int substeps = 0;            // integrator steps of dt / substeps per step, >= 1; 0 = "auto"
   int iterations = 0;          // xpbd: per substep (1); local_global: per step (10); vbd: (30)
+  bool tethers = true;         // xpbd on grid cloths: long-range attachments to the pins
   double chebyshev_rho = 0.0;  // local_global, vbd: Chebyshev's rho (0: local_global 0.97, vbd 0.9)
   double cg_tolerance = 0.0;   // implicit_euler, bdf2: |r| / |b| that ends PCG (0: automatic)
   int cg_max_iterations = 500;  // implicit_euler: PCG iteration cap per step

@@ -1,5 +1,6 @@
 #include "sim/scene/special_values.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -217,6 +218,28 @@ int dt_values(const void* object, double* out) {
   const SolverSpec& s = *static_cast<const SolverSpec*>(object);
   if (s.dt_auto) return 0;
   out[0] = s.dt;
+  return 1;
+}
+
+void read_substeps(TomlReader& in, void* object) {
+  SolverSpec& s = *static_cast<SolverSpec*>(object);
+  if (in.node().is_string()) {
+    if (in.text(in.node(), in.key()) != "auto")
+      in.fail(in.key(), in.node(), "expected an integer or \"auto\", got " + describe(in.node()));
+    s.substeps = 0;
+    return;
+  }
+  const std::int64_t n = in.integer(in.node(), in.key());
+  // 0 is how "auto" is stored, so a count below 1 is refused here; the range names the top.
+  if (n < 1)
+    in.fail(in.key(), in.node(), "must be at least 1, or \"auto\" (got " + std::to_string(n) + ")");
+  s.substeps = static_cast<int>(std::min<std::int64_t>(n, 1 << 30));
+}
+
+int substeps_values(const void* object, double* out) {
+  const SolverSpec& s = *static_cast<const SolverSpec*>(object);
+  if (s.substeps == 0) return 0;
+  out[0] = s.substeps;
   return 1;
 }
 

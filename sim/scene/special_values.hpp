@@ -34,6 +34,9 @@ int integrator_index(const void* solver);
 void choose_integrator(void* solver, int index);
 void read_dt(TomlReader& in, void* solver);
 int dt_values(const void* solver, double* out);
+// solver.substeps: an integer >= 1 or "auto" (stored as 0); the range applies to integers only.
+void read_substeps(TomlReader& in, void* solver);
+int substeps_values(const void* solver, double* out);
 
 // forces.wind.seed (object: WindSpec).
 void read_seed(TomlReader& in, void* wind);

@@ -136,14 +136,7 @@ StepChoice choose_step(IntegratorKind kind, const Spectrum& spectrum) {
     return c;
   }
   switch (kind) {
-    case IntegratorKind::xpbd:
-      // Small steps (Macklin et al. 2019): many substeps of one constraint sweep each; a substep
-      // of kXpbdSubstepLimits explicit limits keeps the error near symplectic Euler's, up to
-      // kXpbdMaxSubsteps. Counted in double: at k = 9e18 N/m the uncapped count is 1.7e9.
-      c.dt = kDisplayStep;
-      c.substeps = static_cast<int>(std::clamp(
-          std::ceil(kDisplayStep / (kXpbdSubstepLimits * c.limit)), 1.0, double(kXpbdMaxSubsteps)));
-      return c;
+    case IntegratorKind::xpbd:  // small steps: substeps by auto_substeps
     case IntegratorKind::vbd:
     case IntegratorKind::bdf2:
       // Vertex block descent is built for one display-rate step per frame (Chen et al. 2024);
@@ -154,6 +147,16 @@ StepChoice choose_step(IntegratorKind kind, const Spectrum& spectrum) {
       c.dt = kImplicitStep;
       return c;
   }
+}
+
+int auto_substeps(IntegratorKind kind, double dt, int longest_side) {
+  if (kind != IntegratorKind::xpbd) return 1;
+  constexpr double kDisplayStep = 1.0 / 60.0;
+  const double per_frame =
+      std::max<double>(kXpbdMinSubsteps, std::ceil(double(longest_side) / kXpbdSideVertices));
+  // In double and clamped before the conversion: dt may be any positive number.
+  return static_cast<int>(
+      std::clamp(std::ceil(dt / kDisplayStep * per_frame - 1e-9), 1.0, double(kXpbdMaxSubsteps)));
 }
 
 }  // namespace clothlab

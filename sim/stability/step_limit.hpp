@@ -25,19 +25,24 @@ struct StepChoice {
 //  - explicit methods: kAutoSafety times the method's own limit (for explicit Euler without
 //    damping, which no step makes stable, a tenth of symplectic Euler's), rounded down to two
 //    significant digits;
-//  - large-step methods: a fixed display-rate step, subdivided (xpbd) so that each substep is a
-//    fixed multiple of the explicit limit, in at most kXpbdMaxSubsteps substeps.
+//  - large-step methods: a fixed display-rate step; xpbd's substeps are solver.substeps' own
+//    choice (xpbd_auto_substeps), so StepChoice::substeps is 1.
 inline constexpr double kAutoSafety = 0.8;
-inline constexpr double kXpbdSubstepLimits = 2.0;  // xpbd substep in explicit limits
-// Measured on the 32 x 32 accuracy sheet at 1/60 s (RMS at 0.5 s from RK4, README "Large
-// steps"): with 20 / 40 / 80 substeps xpbd lands 17 / 7.2 / 3.3 mm away at k0 = 1e3 but 27.5 /
-// 25.2 / 24.9 mm at k0 = 1e5, where the stiffness rule asks 297 substeps for 12.9 mm at 7.8x the
-// cost of 40. Past about 30 substeps a stiff lattice gains little per substep (one sweep per
-// substep leaves it as extensible as the substep allows), so the rule stops there; float and
-// double agree to 0.3 mm up to 80 substeps, so the cap also keeps float's cancellation away.
-inline constexpr int kXpbdMaxSubsteps = 40;
 // s: implicit_euler and local_global (vbd and bdf2 take the display step, 1/60 s)
 inline constexpr double kImplicitStep = 1.0 / 120.0;
 StepChoice choose_step(IntegratorKind kind, const Spectrum& spectrum);
+
+// `solver.substeps = "auto"` (the default): 1 for every method but xpbd, which takes at least
+// kXpbdMinSubsteps substeps per 1/60 s and one more per kXpbdSideVertices vertices of the
+// longest cloth side (the sweeps carry a correction a vertex or two each, so the substeps needed
+// grow with the side), scaled to the step, at most kXpbdMaxSubsteps. Measured on the accuracy
+// sheet (k0 = 1e3, tethers on, RMS at 0.2 s from RK4; docs/solver.md, "Small steps at scale"):
+// the error stops falling at about 3-4 mm once the substeps reach side / 8 to side / 10, and the
+// rule lands 32^2 to 256^2 within about 10 mm. Stiffness changes it little once tethers carry
+// the stretch (32^2 at 0.5 s, 10 -> 20 substeps: k0 = 1e3 10.4 -> 6.3 mm, 1e5 27.3 -> 25.9 mm).
+inline constexpr int kXpbdMinSubsteps = 10;
+inline constexpr int kXpbdSideVertices = 10;
+inline constexpr int kXpbdMaxSubsteps = 200;
+int auto_substeps(IntegratorKind kind, double dt, int longest_side);
 
 }  // namespace clothlab

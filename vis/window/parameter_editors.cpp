@@ -74,6 +74,21 @@ bool step(const Parameter& p, SolverSpec& s, const Solver& running) {
   return edited | input(p, &s.dt);
 }
 
+// Substeps: automatic (the running solver says how many) or typed.
+bool substeps(const Parameter& p, SolverSpec& s, const Solver& running) {
+  bool is_auto = s.substeps == 0;
+  const bool toggled = committed(ImGui::Checkbox("auto substeps", &is_auto));
+  if (toggled) s.substeps = is_auto ? 0 : running.substeps();
+  if (is_auto) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%d", running.substeps());
+    return toggled;
+  }
+  const bool typed = committed(ImGui::InputInt(label(p).c_str(), &s.substeps));
+  s.substeps = std::max(1, s.substeps);
+  return toggled || typed;
+}
+
 }  // namespace
 
 bool committed(bool changed) {
@@ -98,6 +113,9 @@ bool edit_section(Section section, void* object, IntegratorKind integrator, cons
         break;
       case Widget::step:
         edited |= step(p, *static_cast<SolverSpec*>(object), running);
+        break;
+      case Widget::substeps:
+        edited |= substeps(p, *static_cast<SolverSpec*>(object), running);
         break;
       case Widget::none:
         break;

@@ -1,0 +1,148 @@
+// Real time at scale against accuracy (issue 36): the accuracy sheet (bench/suites/lab_scenes.hpp:
+// 1 m, 0.2 kg, k0 = 1e3 N/m, damping 0.05, two corners pinned, falling from horizontal) at
+// res x res, each setting in float at dt = 1/60 s on `threads` threads: RMS distance of all
+// vertices at t = 0.2 s from a double RK4 run of the same sheet, and the median wall time of
+// one 1/60 s frame. The RK4 reference is cached in a file (it costs minutes at 256^2).
+//
+//   build/release/bench/realtime_accuracy_bench [res=256] [threads=2] [csv=realtime_accuracy.csv]
+//                                               [reference=out/bench/rk4_<res>.bin]
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "apps/passive_openmp.hpp"
+#include "bench/suites/lab_scenes.hpp"
+#include "sim/solver.hpp"
+
+namespace clothlab {
+namespace {
+
+constexpr double kFrame = 1.0 / 60.0;
+constexpr double kHorizon = 0.2;
+constexpr int kFrames = 12;  // kHorizon / kFrame
+
+struct Setting {
+  std::string label;
+  IntegratorKind kind;
+  int substeps = 0, iterations = 0;  // 0: automatic / the method's default
+  bool tethers = true;
+};
+
+Scene sheet(int res, const Setting& s, int threads) {
+  bench::SheetParams p;
+  p.resolution = res;
+  Scene scene = bench::hanging_sheet(p, s.kind, kFrame);
+  scene.solver.substeps = s.substeps;
+  scene.solver.iterations = s.iterations;
+  scene.solver.tethers = s.tethers;
+  scene.solver.threads = threads;
+  scene.solver.precision = Precision::f32;
+  return scene;
+}
+
+std::vector<double> positions(const Solver& solver) {
+  std::vector<double> p;
+  for (std::size_t i = 0; i < solver.vertex_count(); ++i)
+    for (double c : solver.position(static_cast<int>(i))) p.push_back(c);
+  return p;
+}
+
+// Double RK4 at 1e-5 s to kHorizon (its automatic step's halving changed nothing above 1e-7 m at
+// 256^2, docs/solver.md), read from `path` when a run of the same size is there.
+std::vector<double> reference(int res, int threads, const std::string& path) {
+  std::vector<double> p(static_cast<std::size_t>(res) * res * 3);
+  std::ifstream in(path, std::ios::binary);
+  if (in.read(reinterpret_cast<char*>(p.data()), std::streamsize(p.size() * sizeof(double))))
+    return p;
+  Scene scene = sheet(res, {"rk4", IntegratorKind::rk4}, threads);
+  scene.solver.precision = Precision::f64;
+  scene.solver.dt = 1e-5;
+  auto solver = make_solver(scene);
+  solver->step(std::lround(kHorizon / 1e-5));
+  p = positions(*solver);
+  const std::string tmp = path + ".tmp";
+  std::ofstream(tmp, std::ios::binary)
+      .write(reinterpret_cast<const char*>(p.data()), std::streamsize(p.size() * sizeof(double)));
+  std::rename(tmp.c_str(), path.c_str());
+  return p;
+}
+
+double rms(const std::vector<double>& a, const std::vector<double>& b) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]) * (a[i] - b[i]);
+  return std::sqrt(sum / double(a.size() / 3));
+}
+
+}  // namespace
+}  // namespace clothlab
+
+int main(int argc, char** argv) {
+  clothlab::app::prefer_passive_openmp(argv);
+  using namespace clothlab;
+  using Clock = std::chrono::steady_clock;
+  const int res = argc > 1 ? std::atoi(argv[1]) : 256;
+  const int threads = argc > 2 ? std::atoi(argv[2]) : 2;
+  const std::string csv_path = argc > 3 ? argv[3] : "realtime_accuracy.csv";
+  const std::string ref_path = argc > 4 ? argv[4] : "out/bench/rk4_" + std::to_string(res) + ".bin";
+  const std::vector<double> ref = reference(res, threads, ref_path);
+  using K = IntegratorKind;
+  const std::vector<Setting> settings = {
+      {"xpbd auto", K::xpbd},
+      {"xpbd x10", K::xpbd, 10},
+      {"xpbd x20", K::xpbd, 20},
+      {"xpbd x30", K::xpbd, 30},
+      {"xpbd x20 2 sweeps", K::xpbd, 20, 2},
+      {"xpbd x10 no tethers", K::xpbd, 10, 0, false},
+      {"xpbd x20 no tethers", K::xpbd, 20, 0, false},
+      {"xpbd x40 no tethers", K::xpbd, 40, 0, false},
+      {"vbd", K::vbd},
+  };
+  std::printf("%d^2 sheet, k0 = 1e3, dt = 1/60 s, float, %d threads: RMS at %.1f s from RK4\n", res,
+              threads, kHorizon);
+  std::printf("%-22s %-9s %-12s %s\n", "setting", "substeps", "rms (mm)", "ms per frame");
+  const std::string tmp = csv_path + ".tmp";
+  std::FILE* csv = std::fopen(tmp.c_str(), "w");
+  if (!csv) return 1;
+  std::fprintf(csv, "setting,substeps,resolution,threads,rms_m,seconds_per_frame\n");
+  for (const Setting& s : settings) {
+    auto solver = make_solver(sheet(res, s, threads));
+    std::vector<double> times;
+    for (int f = 0; f < kFrames; ++f) {
+      const auto t0 = Clock::now();
+      solver->step(1);
+      times.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+    }
+    std::nth_element(times.begin(), times.begin() + kFrames / 2, times.end());
+    const double e = rms(positions(*solver), ref);
+    std::printf("%-22s %-9d %-12.1f %.2f\n", s.label.c_str(), solver->substeps(), 1e3 * e,
+                1e3 * times[kFrames / 2]);
+    std::fprintf(csv, "%s,%d,%d,%d,%.6g,%.6g\n", s.label.c_str(), solver->substeps(), res, threads,
+                 e, times[kFrames / 2]);
+  }
+  std::fclose(csv);
+  std::rename(tmp.c_str(), csv_path.c_str());
+  // The largest square sheet xpbd runs at 60 Hz with its automatic substeps (median frame, same
+  // threads), in steps of 32 vertices a side.
+  int largest = 0;
+  for (int side = 64; side <= 1024; side += 32) {
+    auto solver = make_solver(sheet(side, {"xpbd auto", K::xpbd}, threads));
+    solver->step(2);
+    std::vector<double> times;
+    for (int f = 0; f < 9; ++f) {
+      const auto t0 = Clock::now();
+      solver->step(1);
+      times.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+    }
+    std::nth_element(times.begin(), times.begin() + 4, times.end());
+    std::printf("xpbd auto at %d^2: %d substeps, %.2f ms per frame\n", side, solver->substeps(),
+                1e3 * times[4]);
+    if (times[4] > kFrame) break;
+    largest = side;
+  }
+  std::printf("largest real-time sheet (xpbd auto, %d threads): %d^2\n", threads, largest);
+  return 0;
+}
