@@ -69,6 +69,7 @@ void BM_XpbdSweep(benchmark::State& state) {
   scene.solver.dt = 1.0 / 60.0;
   scene.solver.substeps = kSubsteps;
   scene.solver.iterations = 1;
+  scene.solver.tethers = false;  // the sweep alone
   const auto solver_owner = make_solver(scene, kernel);
   Solver& solver = *solver_owner;
   solver.step(2);

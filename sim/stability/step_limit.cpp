@@ -156,7 +156,7 @@ int auto_substeps(IntegratorKind kind, double dt, int longest_side) {
       std::max<double>(kXpbdMinSubsteps, std::ceil(double(longest_side) / kXpbdSideVertices));
   // In double and clamped before the conversion: dt may be any positive number.
   return static_cast<int>(
-      std::clamp(std::ceil(dt / kDisplayStep * per_frame - 1e-9), 1.0, double(kXpbdMaxSubsteps)));
+      std::clamp(std::ceil(dt / kDisplayStep * per_frame * (1.0 - 1e-9)), 1.0, double(kXpbdMaxSubsteps)));
 }
 
 }  // namespace clothlab
