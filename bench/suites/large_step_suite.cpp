@@ -22,7 +22,7 @@ constexpr double kFrame = 1.0 / 60.0;
 struct Variant {
   IntegratorKind kind;
   bool dt_auto = false;
-  int substeps = 1;
+  int substeps = 0;            // 0: automatic (solver.substeps = "auto")
   int iterations = 0;          // solver.iterations (xpbd, local_global, vbd)
   int newton = 0;              // solver.newton_iterations (implicit_euler, bdf2)
   bool by_vbd = false;         // bdf2: solver.bdf2_solver = "vbd"
@@ -86,7 +86,7 @@ struct Outcome {
   std::vector<Vec3d> positions;
   double cost = NAN;  // wall s per simulated s
   double dt = NAN;    // s, the step the solver took (resolved for dt = "auto")
-  int substeps = 1;
+  int substeps = 0;   // 0: automatic (solver.substeps = "auto")
   std::string failure;
 };
 
