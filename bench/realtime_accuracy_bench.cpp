@@ -29,7 +29,7 @@ struct Setting {
   std::string label;
   IntegratorKind kind;
   int substeps = 0, iterations = 0;  // 0: automatic / the method's default
-  bool tethers = true;
+  bool tethers = true, coarse = true;
 };
 
 Scene sheet(int res, const Setting& s, int threads) {
@@ -39,6 +39,7 @@ Scene sheet(int res, const Setting& s, int threads) {
   scene.solver.substeps = s.substeps;
   scene.solver.iterations = s.iterations;
   scene.solver.tethers = s.tethers;
+  scene.solver.coarse_stretch = s.coarse;
   scene.solver.threads = threads;
   scene.solver.precision = Precision::f32;
   return scene;
@@ -92,13 +93,14 @@ int main(int argc, char** argv) {
   using K = IntegratorKind;
   const std::vector<Setting> settings = {
       {"xpbd auto", K::xpbd},
-      {"xpbd x10", K::xpbd, 10},
+      {"xpbd x5", K::xpbd, 5},
       {"xpbd x20", K::xpbd, 20},
-      {"xpbd x30", K::xpbd, 30},
-      {"xpbd x20 2 sweeps", K::xpbd, 20, 2},
-      {"xpbd x10 no tethers", K::xpbd, 10, 0, false},
-      {"xpbd x20 no tethers", K::xpbd, 20, 0, false},
-      {"xpbd x40 no tethers", K::xpbd, 40, 0, false},
+      {"xpbd x10 tethers only", K::xpbd, 10, 0, true, false},
+      {"xpbd x26 tethers only", K::xpbd, 26, 0, true, false},
+      {"xpbd x10 coarse only", K::xpbd, 10, 0, false, true},
+      {"xpbd x10 neither", K::xpbd, 10, 0, false, false},
+      {"xpbd x20 neither", K::xpbd, 20, 0, false, false},
+      {"xpbd x40 neither", K::xpbd, 40, 0, false, false},
       {"vbd", K::vbd},
   };
   std::printf("%d^2 sheet, k0 = 1e3, dt = 1/60 s, float, %d threads: RMS at %.1f s from RK4\n", res,

@@ -8,6 +8,8 @@
 
 #include "sim/body/body_motion.hpp"
 #include "sim/core/parallel.hpp"
+#include "sim/integrators/coarse_stretch.hpp"
+#include "sim/integrators/tethers.hpp"
 #include "sim/model/model_check.hpp"
 #include "sim/solver_impl.hpp"
 #include "sim/stability/step_limit.hpp"
@@ -31,12 +33,21 @@ State<T> initial_state(const Model<T>& m) {
   return s;
 }
 
-// The longest side of any cloth in vertices (a mesh cloth counts as a square of its vertices).
-int longest_side(const std::vector<ClothRange>& cloths) {
+// The longest side in vertices of the cloths whose sweeps must carry corrections across them
+// alone (a mesh cloth counts as a square of its vertices): xpbd's coarse stretch levels carry
+// them on the grids that have levels (sim/integrators/coarse_stretch.hpp).
+template <class T>
+int substep_side(const Model<T>& m, const SolverSpec& spec) {
   int side = 1;
-  for (const ClothRange& c : cloths)
+  for (std::size_t c = 0; c < m.cloths.size(); ++c) {
+    const ClothRange& r = m.cloths[c];
+    const bool levels = spec.integrator == IntegratorKind::xpbd && spec.coarse_stretch &&
+                        m.kernel == SpringKernel::row_sweep && stretch_limited(m, c) &&
+                        coarse_level_count(r.nu, r.nv) > 0;
+    if (levels) continue;
     side = std::max(
-        side, c.mesh ? static_cast<int>(std::ceil(std::sqrt(double(c.nu)))) : std::max(c.nu, c.nv));
+        side, r.mesh ? static_cast<int>(std::ceil(std::sqrt(double(r.nu)))) : std::max(r.nu, r.nv));
+  }
   return side;
 }
 
@@ -46,7 +57,7 @@ template <class T>
 SolverSpec resolve_step(const Model<T>& m, SolverSpec spec) {
   if (spec.dt_auto) spec.dt = choose_step(spec.integrator, estimate_spectrum(m)).dt;
   if (spec.substeps == 0)
-    spec.substeps = auto_substeps(spec.integrator, spec.dt, longest_side(m.cloths));
+    spec.substeps = auto_substeps(spec.integrator, spec.dt, substep_side(m, spec));
   return spec;
 }
 

@@ -46,6 +46,19 @@ INSTANTIATE_TEST_SUITE_P(AllIntegrators, StepLoop, ::testing::ValuesIn(kAllInteg
                            return std::string(to_string(param_info.param));
                          });
 
+// xpbd's grid path with tethers and coarse stretch levels (a 64 x 64 sheet gets one level;
+// its own weight stretches it by 0.2 %).
+TEST(StepLoop, XpbdWithTethersAndCoarseLevelsAllocatesNothing) {
+  Scene scene = testing::sheet(64, 1.0, 0.2, 1000.0, IntegratorKind::xpbd, 1.0 / 60.0);
+  scene.cloths[0].pins = {{0, 0}, {63, 0}};
+  scene.solver.threads = 2;
+  const auto s = testing::solver<float>(scene);
+  ASSERT_TRUE(s->step(2).ok());
+  const long before = g_allocations.load();
+  ASSERT_TRUE(s->step(20).ok());
+  EXPECT_EQ(g_allocations.load() - before, 0) << "allocations in the step loop";
+}
+
 // Self-collision (sim/contact/self_collision.hpp) allocates its hash and pair buffers when the
 // solver is built: a free sheet falling 2 cm in front of a hanging one, pairs found every step.
 template <class T>

@@ -124,6 +124,12 @@ TEST(AutoStep, XpbdSubstepsFollowTheLongestSide) {
   }
   scene.solver.substeps = 3;
   EXPECT_EQ(testing::solver<double>(scene)->substeps(), 3);
+  // A grid with coarse stretch levels (64 or more vertices a side, barely stretching) needs no
+  // more than the floor: the levels carry the corrections across it.
+  Scene big = testing::falling_sheet(160, K::xpbd, 1.0 / 60.0);
+  EXPECT_EQ(testing::solver<float>(big)->substeps(), kXpbdMinSubsteps);
+  big.solver.coarse_stretch = false;
+  EXPECT_EQ(testing::solver<float>(big)->substeps(), 16);
 }
 
 // What `auto` is for: a user who changes stiffness or resolution keeps a stable run without

@@ -66,7 +66,9 @@ template <class T>
 void expect_same_as_list(Scene scene, int sweeps, double tolerance) {
   scene.solver.integrator = IntegratorKind::xpbd;
   scene.solver.iterations = sweeps;
-  scene.solver.tethers = false;  // the list path has none (tests/small_steps_test.cpp has them)
+  // The list path has neither (tests/small_steps_test.cpp has them).
+  scene.solver.tethers = false;
+  scene.solver.coarse_stretch = false;
   const T h = T(1.0 / 600.0);
   const Outcome<T> grid = run<T>(scene, true, 2, 3, h), list = run<T>(scene, false, 1, 3, h);
   EXPECT_GT(grid.moved, 1e-3);

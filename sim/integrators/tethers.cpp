@@ -27,13 +27,19 @@ double static_strain(const Model<T>& m, std::size_t c) {
 }
 
 template <class T>
+bool stretch_limited(const Model<T>& m, std::size_t c) {
+  const ClothRange& r = m.cloths[c];
+  return !r.mesh && !r.wrap_u && static_strain(m, c) < kTetherMaxStrain;
+}
+
+template <class T>
 Tethers<T>::Tethers(const Model<T>& m) : n_(m.n) {
   // The pins of each flat grid cloth stiff enough for tethers (tubes and meshes have a curved or
   // no rest layout, where the straight rest distance is not the geodesic one).
   std::vector<std::vector<int>> cloth_pins(m.cloths.size());
   for (std::size_t c = 0; c < m.cloths.size(); ++c) {
     const ClothRange& r = m.cloths[c];
-    if (r.mesh || r.wrap_u || !(static_strain(m, c) < kTetherMaxStrain)) continue;
+    if (!stretch_limited(m, c)) continue;
     for (int p : m.pinned)
       if (p >= r.offset && p < r.offset + r.nu * r.nv) cloth_pins[c].push_back(p);
   }
@@ -140,6 +146,8 @@ void Tethers<T>::project_slot(Vec3Array<T>& x, const T* inv_mass, const Span& sp
 
 template double static_strain<float>(const Model<float>&, std::size_t);
 template double static_strain<double>(const Model<double>&, std::size_t);
+template bool stretch_limited<float>(const Model<float>&, std::size_t);
+template bool stretch_limited<double>(const Model<double>&, std::size_t);
 template class Tethers<float>;
 template class Tethers<double>;
 

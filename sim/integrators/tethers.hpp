@@ -32,6 +32,11 @@ inline constexpr double kTetherMaxStrain = 0.01;
 template <class T>
 double static_strain(const Model<T>& m, std::size_t c);
 
+// Cloth c takes stretch limits (tethers, coarse_stretch.hpp): a flat grid of the row_sweep
+// kernel whose static strain is under kTetherMaxStrain.
+template <class T>
+bool stretch_limited(const Model<T>& m, std::size_t c);
+
 template <class T>
 class Tethers {
  public:

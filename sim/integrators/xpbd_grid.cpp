@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "sim/core/parallel.hpp"
+#include "sim/integrators/coarse_stretch.hpp"
 #include "sim/integrators/tethers.hpp"
 
 namespace clothlab {
@@ -201,7 +202,8 @@ class XpbdGrid final : public Integrator<T> {
  public:
   XpbdGrid(const Model<T>& m, const SolverSpec& spec)
       : sweeps_(spec.iterations > 0 ? spec.iterations : 1),
-        tethers_(spec.tethers ? Tethers<T>(m) : Tethers<T>()) {
+        tethers_(spec.tethers ? Tethers<T>(m) : Tethers<T>()),
+        coarse_(spec.coarse_stretch ? CoarseStretch<T>(m) : CoarseStretch<T>()) {
     std::size_t lambda_size = 0;
     int max_nu = 0;
     for (const GridStencil<T>& g : m.grids) {
@@ -253,7 +255,9 @@ class XpbdGrid final : public Integrator<T> {
           }
         }
       }
-      // After the last phase's barrier: every position is final.
+      // After the last phase's barrier the fine positions are final; the coarse levels correct
+      // them (their loops end in barriers).
+      if (!coarse_.empty()) coarse_.apply(s.pos, m.inv_mass.data());
 #pragma omp for schedule(static)
       for (long k = 0; k < blocks; ++k) {
         const std::size_t b = static_cast<std::size_t>(k) * kBlockSize;
@@ -367,6 +371,7 @@ class XpbdGrid final : public Integrator<T> {
 
   int sweeps_;
   Tethers<T> tethers_;
+  CoarseStretch<T> coarse_;
   std::vector<GridPart<T>> parts_;
   std::vector<std::size_t> lambda_start_;
   std::vector<BandRef> bands_[2];  // phase 0: even bands of every cloth, phase 1: odd

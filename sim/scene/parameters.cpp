@@ -277,9 +277,9 @@ std::vector<Parameter> solver() {
            .fallback = "\"auto\"",
            .form = "an integer or \"auto\"",
            .widget = W::substeps,
-           .description = "integrator steps of dt / substeps per step, or auto: xpbd from the "
-                          "cloth's size (10 per 1/60 s up to 100 vertices a side, then one per "
-                          "10 vertices), every other method 1"},
+           .description = "integrator steps of dt / substeps per step, or auto: xpbd 10 per "
+                          "1/60 s (one per 10 vertices of a side beyond 100 where no coarse "
+                          "stretch levels carry the corrections), every other method 1"},
           &special::substeps_values),
       row<&SolverSpec::iterations>(
           {.name = "iterations",
@@ -296,6 +296,12 @@ std::vector<Parameter> solver() {
            .only_for = "xpbd",
            .description = "grid cloths: no free vertex gets further from a pin than at rest "
                           "(long-range attachments, Kim et al. 2012)"}),
+      row<&SolverSpec::coarse_stretch>(
+          {.name = "coarse_stretch",
+           .fallback = "true",
+           .only_for = "xpbd",
+           .description = "grid cloths of 64 or more vertices a side: one-sided stretch "
+                          "constraints on coarser grids after each sweep (after Mueller 2008)"}),
   };
 }
 
