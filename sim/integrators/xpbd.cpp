@@ -27,6 +27,9 @@
 // Euler (first order); as h -> 0 (k h^2 w << 1) it tends to symplectic Euler. With few sweeps a
 // stiff lattice is left stretched (the constraints do not converge): more substeps fix that.
 //
+// Grid cloths (the row-sweep kernel) take the grid path instead (xpbd_grid.hpp: the same update
+// in batches of one stencil offset and parity class, with tethers and coarse stretch levels);
+// this file's path serves tubes and meshes and is the tests' reference.
 // Parallelism: Gauss-Seidel is sequential, so the springs are edge-coloured once (greedy, in
 // spring_list() order: no two springs of a colour share a vertex) and stored colour by colour.
 // The colours are swept in order, one after another, and the springs of one colour are
