@@ -45,14 +45,8 @@ CoarseStretch<T>::CoarseStretch(const Model<T>& m) {
       for (int o = 0; o < 4; ++o) {
         const auto [di, dj] = kCoarseOffsets[o];
         const int a = std::max(0, -di), b = a + dj * level.nu + di;  // the first such pair
-        double s = 0.0;
-        for (int ax = 0; ax < 3; ++ax) {
-          const auto& rest = m.rest_positions.axis(ax);
-          const double d = double(rest[static_cast<std::size_t>(level.fine[a])]) -
-                           double(rest[static_cast<std::size_t>(level.fine[b])]);
-          s += d * d;
-        }
-        level.rest[o] = static_cast<T>(std::sqrt(s));
+        level.rest[o] = static_cast<T>(rest_distance(m, static_cast<std::size_t>(level.fine[a]),
+                                                     static_cast<std::size_t>(level.fine[b])));
       }
       level.x.resize(level.fine.size());
       level.x0.resize(level.fine.size());

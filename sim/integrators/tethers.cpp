@@ -27,6 +27,16 @@ double static_strain(const Model<T>& m, std::size_t c) {
 }
 
 template <class T>
+double rest_distance(const Model<T>& m, std::size_t i, std::size_t j) {
+  double s = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    const double d = double(m.rest_positions.axis(a)[i]) - double(m.rest_positions.axis(a)[j]);
+    s += d * d;
+  }
+  return std::sqrt(s);
+}
+
+template <class T>
 bool stretch_limited(const Model<T>& m, std::size_t c) {
   const ClothRange& r = m.cloths[c];
   return !r.mesh && !r.wrap_u && static_strain(m, c) < kTetherMaxStrain;
@@ -35,13 +45,15 @@ bool stretch_limited(const Model<T>& m, std::size_t c) {
 template <class T>
 Tethers<T>::Tethers(const Model<T>& m) : n_(m.n) {
   // The pins of each flat grid cloth stiff enough for tethers (tubes and meshes have a curved or
-  // no rest layout, where the straight rest distance is not the geodesic one).
-  std::vector<std::vector<int>> cloth_pins(m.cloths.size());
+  // no rest layout, where the straight rest distance is not the geodesic one), as indices into
+  // pins_ (the model's pins).
+  std::vector<std::vector<std::int32_t>> cloth_pins(m.cloths.size());
   for (std::size_t c = 0; c < m.cloths.size(); ++c) {
     const ClothRange& r = m.cloths[c];
     if (!stretch_limited(m, c)) continue;
-    for (int p : m.pinned)
-      if (p >= r.offset && p < r.offset + r.nu * r.nv) cloth_pins[c].push_back(p);
+    for (std::size_t k = 0; k < m.pinned.size(); ++k)
+      if (m.pinned[k] >= r.offset && m.pinned[k] < r.offset + r.nu * r.nv)
+        cloth_pins[c].push_back(static_cast<std::int32_t>(k));
   }
   for (const auto& pins : cloth_pins)
     slots_ = std::max(slots_, std::min<int>(kTetherSlots, static_cast<int>(pins.size())));
@@ -49,21 +61,9 @@ Tethers<T>::Tethers(const Model<T>& m) : n_(m.n) {
   pins_ = m.pinned;
   pin_pos_.resize(pins_.size());
   pin_held_.assign(pins_.size(), T(0));
-  const auto pin_number = [&](int vertex) {
-    return static_cast<std::int32_t>(std::find(pins_.begin(), pins_.end(), vertex) - pins_.begin());
-  };
-  const auto rest_distance = [&](std::size_t i, int p) {
-    double s = 0.0;
-    for (int a = 0; a < 3; ++a) {
-      const double d = double(m.rest_positions.axis(a)[i]) -
-                       double(m.rest_positions.axis(a)[static_cast<std::size_t>(p)]);
-      s += d * d;
-    }
-    return std::sqrt(s);
-  };
   pin_.assign(static_cast<std::size_t>(slots_) * n_, 0);
   rest_.assign(static_cast<std::size_t>(slots_) * n_, std::numeric_limits<T>::max());
-  std::vector<std::pair<double, int>> nearest;
+  std::vector<std::pair<double, std::int32_t>> nearest;
   for (std::size_t c = 0; c < m.cloths.size(); ++c) {
     const ClothRange& r = m.cloths[c];
     if (cloth_pins[c].empty()) continue;
@@ -72,17 +72,18 @@ Tethers<T>::Tethers(const Model<T>& m) : n_(m.n) {
     span.end = span.begin + static_cast<std::size_t>(r.nu) * static_cast<std::size_t>(r.nv);
     span.shared = cloth_pins[c].size() <= static_cast<std::size_t>(kTetherSlots);
     span.slots = std::min<int>(kTetherSlots, static_cast<int>(cloth_pins[c].size()));
-    for (int s = 0; s < span.slots && span.shared; ++s) span.pin[s] = pin_number(cloth_pins[c][s]);
+    for (int s = 0; s < span.slots && span.shared; ++s) span.pin[s] = cloth_pins[c][s];
     for (std::size_t i = span.begin; i < span.end; ++i) {
       nearest.clear();
-      for (int p : cloth_pins[c]) nearest.push_back({rest_distance(i, p), p});
+      for (std::int32_t k : cloth_pins[c])
+        nearest.push_back({rest_distance(m, i, static_cast<std::size_t>(pins_[k])), k});
       // Shared: slot s is pin s; else the nearest pins first.
       if (!span.shared)
         std::partial_sort(nearest.begin(), nearest.begin() + span.slots, nearest.end());
       for (int s = 0; s < span.slots; ++s) {
-        const std::size_t k = static_cast<std::size_t>(s) * n_ + i;
-        pin_[k] = pin_number(nearest[static_cast<std::size_t>(s)].second);
-        rest_[k] = static_cast<T>(nearest[static_cast<std::size_t>(s)].first);
+        const std::size_t slot = static_cast<std::size_t>(s) * n_ + i;
+        pin_[slot] = nearest[static_cast<std::size_t>(s)].second;
+        rest_[slot] = static_cast<T>(nearest[static_cast<std::size_t>(s)].first);
       }
     }
     spans_.push_back(span);
@@ -146,6 +147,8 @@ void Tethers<T>::project_slot(Vec3Array<T>& x, const T* inv_mass, const Span& sp
 
 template double static_strain<float>(const Model<float>&, std::size_t);
 template double static_strain<double>(const Model<double>&, std::size_t);
+template double rest_distance<float>(const Model<float>&, std::size_t, std::size_t);
+template double rest_distance<double>(const Model<double>&, std::size_t, std::size_t);
 template bool stretch_limited<float>(const Model<float>&, std::size_t);
 template bool stretch_limited<double>(const Model<double>&, std::size_t);
 template class Tethers<float>;

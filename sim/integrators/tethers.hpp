@@ -32,6 +32,10 @@ inline constexpr double kTetherMaxStrain = 0.01;
 template <class T>
 double static_strain(const Model<T>& m, std::size_t c);
 
+// The distance between vertices i and j in the built (rest) positions.
+template <class T>
+double rest_distance(const Model<T>& m, std::size_t i, std::size_t j);
+
 // Cloth c takes stretch limits (tethers, coarse_stretch.hpp): a flat grid of the row_sweep
 // kernel whose static strain is under kTetherMaxStrain.
 template <class T>

@@ -115,7 +115,7 @@ enum class StepSolver { newton, vbd };
 struct SolverSpec {
   IntegratorKind integrator = IntegratorKind::symplectic_euler;
   double dt = 0.001;           // s, fixed step, > 0 (ignored when dt_auto)
-  bool dt_auto = false;        // dt = "auto": step and substeps chosen from the highest frequency
+  bool dt_auto = false;        // dt = "auto": the step chosen from the highest frequency
   int substeps = 0;            // integrator steps of dt / substeps per step, >= 1; 0 = "auto"
   int iterations = 0;          // xpbd: per substep (1); local_global: per step (10); vbd: (30)
   bool tethers = true;         // xpbd on grid cloths: long-range attachments to the pins

@@ -119,12 +119,14 @@ double stable_step_limit(IntegratorKind kind, double omega, double gamma) {
   return lo;
 }
 
+// s: the display rate's step, which the large-step methods take and xpbd's substeps divide.
+constexpr double kDisplayStep = 1.0 / 60.0;
+
 StepChoice choose_step(IntegratorKind kind, const Spectrum& spectrum) {
   StepChoice c;
   c.spectrum = spectrum;
   const double omega = spectrum.omega_max, gamma = spectrum.gamma_max;
   c.limit = stable_step_limit(IntegratorKind::symplectic_euler, omega, gamma);
-  constexpr double kDisplayStep = 1.0 / 60.0;
   if (!std::isfinite(c.limit)) {  // no springs: any step is stable; take the display step
     c.dt = kDisplayStep;
     return c;
@@ -151,12 +153,11 @@ StepChoice choose_step(IntegratorKind kind, const Spectrum& spectrum) {
 
 int auto_substeps(IntegratorKind kind, double dt, int longest_side) {
   if (kind != IntegratorKind::xpbd) return 1;
-  constexpr double kDisplayStep = 1.0 / 60.0;
   const double per_frame =
       std::max<double>(kXpbdMinSubsteps, std::ceil(double(longest_side) / kXpbdSideVertices));
   // In double and clamped before the conversion: dt may be any positive number.
-  return static_cast<int>(
-      std::clamp(std::ceil(dt / kDisplayStep * per_frame * (1.0 - 1e-9)), 1.0, double(kXpbdMaxSubsteps)));
+  return static_cast<int>(std::clamp(std::ceil(dt / kDisplayStep * per_frame * (1.0 - 1e-9)), 1.0,
+                                     double(kXpbdMaxSubsteps)));
 }
 
 }  // namespace clothlab

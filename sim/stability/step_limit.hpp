@@ -26,7 +26,7 @@ struct StepChoice {
 //    damping, which no step makes stable, a tenth of symplectic Euler's), rounded down to two
 //    significant digits;
 //  - large-step methods: a fixed display-rate step; xpbd's substeps are solver.substeps' own
-//    choice (xpbd_auto_substeps), so StepChoice::substeps is 1.
+//    choice (auto_substeps below), so StepChoice::substeps is 1.
 inline constexpr double kAutoSafety = 0.8;
 // s: implicit_euler and local_global (vbd and bdf2 take the display step, 1/60 s)
 inline constexpr double kImplicitStep = 1.0 / 120.0;
