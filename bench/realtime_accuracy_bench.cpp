@@ -72,6 +72,36 @@ std::vector<double> reference(int res, int threads, const std::string& path) {
   return p;
 }
 
+// The median wall time of `frames` frames of 1/60 s (s).
+double median_frame(Solver& solver, int frames) {
+  std::vector<double> times;
+  for (int f = 0; f < frames; ++f) {
+    const auto t0 = std::chrono::steady_clock::now();
+    solver.step(1);
+    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::nth_element(times.begin(), times.begin() + frames / 2, times.end());
+  return times[static_cast<std::size_t>(frames / 2)];
+}
+
+// The largest square sheet a method runs at 60 Hz with its defaults (median of 9 frames after 2,
+// same threads), in steps of 32 vertices a side; prints each size.
+int largest_real_time(const Setting& s, int threads) {
+  int largest = 0;
+  for (int side = 64; side <= 1024; side += 32) {
+    auto solver = make_solver(sheet(side, s, threads));
+    solver->step(2);
+    const double t = median_frame(*solver, 9);
+    std::printf("%s at %d^2: %d substeps, %.2f ms per frame\n", s.label.c_str(), side,
+                solver->substeps(), 1e3 * t);
+    if (t > kFrame) break;
+    largest = side;
+  }
+  std::printf("largest real-time sheet (%s, %d threads): %d^2\n", s.label.c_str(), threads,
+              largest);
+  return largest;
+}
+
 double rms(const std::vector<double>& a, const std::vector<double>& b) {
   double sum = 0.0;
   for (std::size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]) * (a[i] - b[i]);
@@ -84,7 +114,6 @@ double rms(const std::vector<double>& a, const std::vector<double>& b) {
 int main(int argc, char** argv) {
   clothlab::app::prefer_passive_openmp(argv);
   using namespace clothlab;
-  using Clock = std::chrono::steady_clock;
   const int res = argc > 1 ? std::atoi(argv[1]) : 256;
   const int threads = argc > 2 ? std::atoi(argv[2]) : 2;
   const std::string csv_path = argc > 3 ? argv[3] : "realtime_accuracy.csv";
@@ -112,39 +141,16 @@ int main(int argc, char** argv) {
   std::fprintf(csv, "setting,substeps,resolution,threads,rms_m,seconds_per_frame\n");
   for (const Setting& s : settings) {
     auto solver = make_solver(sheet(res, s, threads));
-    std::vector<double> times;
-    for (int f = 0; f < kFrames; ++f) {
-      const auto t0 = Clock::now();
-      solver->step(1);
-      times.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
-    }
-    std::nth_element(times.begin(), times.begin() + kFrames / 2, times.end());
+    const double frame = median_frame(*solver, kFrames);
     const double e = rms(positions(*solver), ref);
     std::printf("%-22s %-9d %-12.1f %.2f\n", s.label.c_str(), solver->substeps(), 1e3 * e,
-                1e3 * times[kFrames / 2]);
+                1e3 * frame);
     std::fprintf(csv, "%s,%d,%d,%d,%.6g,%.6g\n", s.label.c_str(), solver->substeps(), res, threads,
-                 e, times[kFrames / 2]);
+                 e, frame);
   }
   std::fclose(csv);
   std::rename(tmp.c_str(), csv_path.c_str());
-  // The largest square sheet xpbd runs at 60 Hz with its automatic substeps (median frame, same
-  // threads), in steps of 32 vertices a side.
-  int largest = 0;
-  for (int side = 64; side <= 1024; side += 32) {
-    auto solver = make_solver(sheet(side, {"xpbd auto", K::xpbd}, threads));
-    solver->step(2);
-    std::vector<double> times;
-    for (int f = 0; f < 9; ++f) {
-      const auto t0 = Clock::now();
-      solver->step(1);
-      times.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
-    }
-    std::nth_element(times.begin(), times.begin() + 4, times.end());
-    std::printf("xpbd auto at %d^2: %d substeps, %.2f ms per frame\n", side, solver->substeps(),
-                1e3 * times[4]);
-    if (times[4] > kFrame) break;
-    largest = side;
-  }
-  std::printf("largest real-time sheet (xpbd auto, %d threads): %d^2\n", threads, largest);
+  for (const Setting& s : {Setting{"xpbd auto", K::xpbd}, Setting{"vbd", K::vbd}})
+    largest_real_time(s, threads);
   return 0;
 }

@@ -150,12 +150,12 @@ Scene display_rate_sheet(IntegratorKind kind) {
 
 class Stable : public ::testing::TestWithParam<IntegratorKind> {};
 
-TEST_P(Stable, FallingSheetAtSixtyHertzForTwoSeconds) {
+TEST_P(Stable, FallingSheetAtSixtyHertzForFourSeconds) {
   const auto s_owner = testing::solver<double>(display_rate_sheet(GetParam()));
   Solver& s = *s_owner;
   const double e0 = s.energy().total();
   double highest = e0;
-  for (int k = 0; k < 120; ++k) {
+  for (int k = 0; k < 240; ++k) {
     ASSERT_TRUE(s.step(1).ok()) << "step " << k;
     highest = std::max(highest, s.energy().total());
   }
@@ -168,7 +168,10 @@ TEST_P(Stable, FallingSheetAtSixtyHertzForTwoSeconds) {
   // reaches 1.4 J (with 40 substeps the highest is 2e-3 J, with 160 2e-5 J).
   const double fall_energy = 0.2 * 9.81 * 1.0;
   EXPECT_LT(highest - e0, 2.0 * fall_energy);
-  EXPECT_LT(s.energy().total(), e0) << "net energy gain over 2 s";
+  // The end: vbd's 30 iterations leave the lattice's elastic energy swinging between -0.5 and
+  // +0.6 J about the start from 1 to 3 s (at 2 s +0.04 J in the grid path's colours, -0.07 J in
+  // the greedy ones: chance); by 4 s the damping has taken every method below it (vbd -0.47 J).
+  EXPECT_LT(s.energy().total(), e0) << "net energy gain over 4 s";
 }
 
 TEST_P(Stable, StiffSpringsAndHundredfoldGravity) {

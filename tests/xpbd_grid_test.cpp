@@ -7,57 +7,31 @@
 #include <algorithm>
 #include <cmath>
 
-#include "disturbed_state.hpp"
+#include "grid_path_compare.hpp"
 #include "sim/integrators/xpbd_grid.hpp"
-#include "test_scenes.hpp"
 
 namespace clothlab {
 namespace {
 
-template <class T>
-struct Outcome {
-  State<T> state;
-  double moved = 0.0;  // largest distance a vertex moved: the comparison is not of idle copies
-};
+using testing::largest_difference;
+using testing::Outcome;
 
 // `steps` substeps of h from disturbed(); grid: the row-sweep model's grid path, else the
 // neighbour-list model's list path in the grid path's order.
 template <class T>
 Outcome<T> run(const Scene& scene, bool grid, int threads, int steps, T h) {
-  const Model<T> m =
-      build_model<T>(scene, grid ? SpringKernel::row_sweep : SpringKernel::neighbour_list);
-  ForceWorkspace<T> ws;
-  ws.resize(m);
-  const System<T> sys{m, ws, threads};
-  std::unique_ptr<Integrator<T>> xpbd;
-  if (grid) {
-    EXPECT_TRUE(xpbd_grid_applies(m));
-    xpbd = make_xpbd_grid(m, scene.solver);
-  } else {
-    const Model<T> g = build_model<T>(scene, SpringKernel::row_sweep);
-    const auto list = spring_list(m);
-    const std::vector<int> colours = xpbd_grid_colours(g, list.ends);
-    EXPECT_EQ(std::count(colours.begin(), colours.end(), -1), 0) << "a spring without a batch";
-    xpbd = make_xpbd_in_order(m, scene.solver, colours);
-  }
-  Outcome<T> r{disturbed(m)};
-  const State<T> start = r.state;
-  for (int k = 0; k < steps; ++k) xpbd->step(sys, r.state, 0.01 * k, h);
-  for (std::size_t i = 0; i < m.n; ++i)
-    for (int a = 0; a < 3; ++a)
-      r.moved = std::max(r.moved, double(std::abs(r.state.pos.axis(a)[i] - start.pos.axis(a)[i])));
-  return r;
-}
-
-template <class T>
-double largest_difference(const State<T>& a, const State<T>& b, bool velocity) {
-  double worst = 0.0;
-  const Vec3Array<T>& pa = velocity ? a.vel : a.pos;
-  const Vec3Array<T>& pb = velocity ? b.vel : b.pos;
-  for (int c = 0; c < 3; ++c)
-    for (std::size_t i = 0; i < pa.size(); ++i)
-      worst = std::max(worst, double(std::abs(pa.axis(c)[i] - pb.axis(c)[i])));
-  return worst;
+  const SpringKernel kernel = grid ? SpringKernel::row_sweep : SpringKernel::neighbour_list;
+  return testing::run_from_disturbed<T>(
+      scene, kernel, threads, steps, h, [&](const Model<T>& m) -> std::unique_ptr<Integrator<T>> {
+        if (grid) {
+          EXPECT_TRUE(xpbd_grid_applies(m));
+          return make_xpbd_grid(m, scene.solver);
+        }
+        const Model<T> g = build_model<T>(scene, SpringKernel::row_sweep);
+        const std::vector<int> colours = xpbd_grid_colours(g, spring_list(m).ends);
+        EXPECT_EQ(std::count(colours.begin(), colours.end(), -1), 0) << "a spring without a batch";
+        return make_xpbd_in_order(m, scene.solver, colours);
+      });
 }
 
 // Both paths do the same arithmetic per spring in the same order; only the prediction's gravity

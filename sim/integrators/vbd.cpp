@@ -22,8 +22,10 @@
 // n = (x_j - x_i) / l. The max(0, .) keeps H_i positive definite (a compressed spring's
 // transverse term is negative: the projection implicit_euler.cpp uses too). Vertices are coloured
 // so that no two of a colour share a spring (greedy, in index order; on a grid the seed rule's
-// 20-neighbour stencil takes 11 colours, one more than its 3 x 3 cliques force), and the
-// vertices of one colour update in parallel in fixed blocks: bit-identical for any thread count.
+// 20-neighbour stencil takes 11 colours), and the vertices of one colour update in parallel in
+// fixed blocks: bit-identical for any thread count. Grid cloths take the grid path instead
+// (vbd_grid.hpp: 9 colours, vectorised rows); this path serves tubes and meshes and is the tests'
+// reference. The arithmetic per spring is vbd_common.hpp's, shared by both paths.
 //
 // Initial guess: the paper's adaptive one (Sec. 3.6), x = x_n + h v_n + h^2 a~ with a~ the last
 // step's acceleration (v_n - v_{n-1}) / h projected on gravity's direction and clamped to
@@ -40,22 +42,11 @@
 #include "sim/core/parallel.hpp"
 #include "sim/integrators/chebyshev.hpp"
 #include "sim/integrators/integrator.hpp"
+#include "sim/integrators/vbd_common.hpp"
+#include "sim/integrators/vbd_grid.hpp"
 
 namespace clothlab {
 namespace {
-
-// On the 32 x 32 falling sheet at 1/60 s (k0 = 1e3) 10 iterations leave the lattice so stretched
-// that its energy peaks at 20 J (ten times what the fall releases), 30 at 2.4 J (XPBD's one
-// sweep in 39 substeps: 2.3 J), 100 never above the start.
-constexpr int kDefaultIterations = 30;
-// Chebyshev (docs/solver.md): rho 0.9, from the fourth iteration on. On the 32 x 32 sheet at
-// 1/60 s, 10 iterations: rho 0 / 0.5 / 0.9 leave it 497 / 486 / 397 mm from RK4 at 0.5 s; with
-// the acceleration from the second iteration, 10 substeps of 2 iterations blew up (the
-// extrapolation after a single sweep adds energy every step), from the fourth they run. Larger
-// rho gains little at 30 iterations (0.95 / 0.98 / 0.99: 304 / 286 / 269 mm at k0 = 1e3, 445 /
-// 366 / 551 mm at 1e5): Gauss-Seidel's slow modes here are the lattice's long stretching waves.
-constexpr double kChebyshevRho = 0.9;
-constexpr int kChebyshevDelay = 3;  // iterations (0-based) before the first accelerated one
 
 // Greedy vertex colouring of the spring graph: each vertex (in index order) takes the lowest
 // colour none of its neighbours has. Returns the colour of each vertex.
@@ -78,10 +69,11 @@ std::vector<int> colour_vertices(std::size_t n, const std::vector<std::vector<in
 template <class T>
 class Vbd final : public Integrator<T> {
  public:
-  Vbd(const Model<T>& m, const SolverSpec& spec)
-      : iterations_(spec.iterations > 0 ? spec.iterations : kDefaultIterations),
-        chebyshev_(chebyshev_of(spec.chebyshev_rho, kChebyshevRho, kChebyshevDelay)) {
-    build(m);
+  // colours: one per vertex (the tests give the grid path's); empty: a greedy colouring.
+  Vbd(const Model<T>& m, const SolverSpec& spec, std::vector<int> colours = {})
+      : iterations_(spec.iterations > 0 ? spec.iterations : kVbdDefaultIterations),
+        chebyshev_(chebyshev_of(spec.chebyshev_rho, kVbdChebyshevRho, kVbdChebyshevDelay)) {
+    build(m, std::move(colours));
     f_.resize(m.n);
     x_.assign(4 * m.n, T(0));
     start_.assign(4 * m.n, T(0));
@@ -125,7 +117,7 @@ class Vbd final : public Integrator<T> {
  private:
   // Colours the free vertices and stores, colour by colour, each one's springs (other end,
   // k, L, c) in a compact adjacency list.
-  void build(const Model<T>& m) {
+  void build(const Model<T>& m, std::vector<int> colour) {
     const SpringList<T> list = spring_list(m);
     std::vector<std::vector<int>> adjacent(m.n), springs(m.n);
     for (std::size_t s = 0; s < list.size(); ++s) {
@@ -134,7 +126,7 @@ class Vbd final : public Integrator<T> {
       adjacent[a].push_back(b), springs[a].push_back(static_cast<int>(s));
       adjacent[b].push_back(a), springs[b].push_back(static_cast<int>(s));
     }
-    const std::vector<int> colour = colour_vertices(m.n, adjacent);
+    if (colour.empty()) colour = colour_vertices(m.n, adjacent);
     int colours = 0;
     for (std::size_t i = 0; i < m.n; ++i)
       if (m.inv_mass[i] != T(0)) colours = std::max(colours, colour[i] + 1);
@@ -164,30 +156,14 @@ class Vbd final : public Integrator<T> {
   // Packs x_n (start_), the inertial target t (target_) and the initial guess (x_), all vertices
   // (pinned ones sit at x_n in all three).
   void predict(const Model<T>& m, const State<T>& s, T h, int threads) {
-    const T g2 =
-        m.gravity[0] * m.gravity[0] + m.gravity[1] * m.gravity[1] + m.gravity[2] * m.gravity[2];
-    const T g_norm = std::sqrt(g2);
     const bool warm = warm_;
     for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) {
       for (std::size_t i = b; i < e; ++i) {
-        const bool free = m.inv_mass[i] != T(0);
-        const T w = m.mass[i] + h * drag_;
-        // a~: the last acceleration along gravity, clamped to [0, |g|] (the paper's eq. (19)).
-        T along = g_norm;
-        if (warm && g_norm > T(0)) {
-          T a_dot_g = 0;
-          for (int a = 0; a < 3; ++a)
-            a_dot_g += (s.vel.axis(a)[i] - last_vel_.axis(a)[i]) / h * m.gravity[a];
-          along = std::clamp(a_dot_g / g_norm, T(0), g_norm);
-        }
+        const VbdStart<T> v = vbd_start(m, i, s, f_, last_vel_, h, warm);
         for (int a = 0; a < 3; ++a) {
-          const T x = s.pos.axis(a)[i], v = free ? s.vel.axis(a)[i] : T(0);
-          const T inertial = x + h * v;
-          const T dir = g_norm > T(0) ? m.gravity[a] / g_norm : T(0);
-          start_[4 * i + a] = x;
-          target_[4 * i + a] = free ? inertial + h * h * f_.axis(a)[i] / w : x;
-          x_[4 * i + a] = free ? inertial + h * h * along * dir : x;
-          previous_[4 * i + a] = x_[4 * i + a];
+          start_[4 * i + a] = v.start[a];
+          target_[4 * i + a] = v.target[a];
+          x_[4 * i + a] = previous_[4 * i + a] = v.guess[a];
         }
       }
     });
@@ -205,43 +181,26 @@ class Vbd final : public Integrator<T> {
       const T w = weight_[k] + h * drag_;
       T* xi = x + 4 * i;
       const T dix = xi[0] - x0[4 * i], diy = xi[1] - x0[4 * i + 1], diz = xi[2] - x0[4 * i + 2];
-      T gx = w * (xi[0] - target[4 * i]), gy = w * (xi[1] - target[4 * i + 1]),
-        gz = w * (xi[2] - target[4 * i + 2]);
-      T hxx = w, hxy = 0, hxz = 0, hyy = w, hyz = 0, hzz = w;
+      VbdBlock<T> blk{w * (xi[0] - target[4 * i]),
+                      w * (xi[1] - target[4 * i + 1]),
+                      w * (xi[2] - target[4 * i + 2]),
+                      w,
+                      0,
+                      0,
+                      w,
+                      0,
+                      w};
       for (auto q = static_cast<std::size_t>(link_start_[k]);
            q < static_cast<std::size_t>(link_start_[k + 1]); ++q) {
         const auto j = static_cast<std::size_t>(other_[q]);
         const T* xj = x + 4 * j;
-        T nx = xj[0] - xi[0], ny = xj[1] - xi[1], nz = xj[2] - xi[2];
-        const T len = std::sqrt(nx * nx + ny * ny + nz * nz);
-        const T kh2 = h2 * stiffness_[q];
-        if (!(len > T(0))) {  // no direction: only the isotropic stiffness of a zero-length spring
-          hxx += kh2, hyy += kh2, hzz += kh2;
-          continue;
-        }
-        const T inv_len = T(1) / len;
-        nx *= inv_len, ny *= inv_len, nz *= inv_len;
-        const T rest = rest_[q];
-        // Along n: Hooke's pull and the damper on the relative displacement this step.
-        const T rel = nx * (dix - (xj[0] - x0[4 * j])) + ny * (diy - (xj[1] - x0[4 * j + 1])) +
-                      nz * (diz - (xj[2] - x0[4 * j + 2]));
-        const T ch = h * damping_[q];
-        const T pull = -kh2 * (len - rest) + ch * rel;
-        gx += pull * nx, gy += pull * ny, gz += pull * nz;
-        const T tw = len > rest ? kh2 * (T(1) - rest * inv_len) : T(0);  // transverse
-        const T along = kh2 + ch - tw;
-        hxx += tw + along * nx * nx, hyy += tw + along * ny * ny, hzz += tw + along * nz * nz;
-        hxy += along * nx * ny, hxz += along * nx * nz, hyz += along * ny * nz;
+        vbd_add_spring(xj[0] - xi[0], xj[1] - xi[1], xj[2] - xi[2], dix - (xj[0] - x0[4 * j]),
+                       diy - (xj[1] - x0[4 * j + 1]), diz - (xj[2] - x0[4 * j + 2]),
+                       h2 * stiffness_[q], h * damping_[q], rest_[q], blk);
       }
-      // x -= H^-1 g (adjugate over determinant; H is symmetric positive definite).
-      const T cxx = hyy * hzz - hyz * hyz, cxy = hxz * hyz - hxy * hzz, cxz = hxy * hyz - hxz * hyy;
-      const T cyy = hxx * hzz - hxz * hxz, cyz = hxy * hxz - hxx * hyz, czz = hxx * hyy - hxy * hxy;
-      const T det = hxx * cxx + hxy * cxy + hxz * cxz;
-      if (!(det > T(0))) continue;
-      const T inv = T(1) / det;
-      xi[0] -= (cxx * gx + cxy * gy + cxz * gz) * inv;
-      xi[1] -= (cxy * gx + cyy * gy + cyz * gz) * inv;
-      xi[2] -= (cxz * gx + cyz * gy + czz * gz) * inv;
+      T sx, sy, sz;
+      vbd_newton_step(blk, sx, sy, sz);  // zero where H is not positive definite
+      xi[0] -= sx, xi[1] -= sy, xi[2] -= sz;
     }
   }
 
@@ -297,8 +256,21 @@ class Vbd final : public Integrator<T> {
 
 template <class T>
 std::unique_ptr<Integrator<T>> make_vbd(const Model<T>& m, const SolverSpec& spec) {
+  if (vbd_grid_applies(m)) return make_vbd_grid(m, spec);
   return std::make_unique<Vbd<T>>(m, spec);
 }
 CLOTHLAB_INSTANTIATE_FACTORY(make_vbd)
+
+template <class T>
+std::unique_ptr<Integrator<T>> make_vbd_in_order(const Model<T>& m, const SolverSpec& spec,
+                                                 std::vector<int> colours) {
+  return std::make_unique<Vbd<T>>(m, spec, std::move(colours));
+}
+template std::unique_ptr<Integrator<float>> make_vbd_in_order<float>(const Model<float>&,
+                                                                     const SolverSpec&,
+                                                                     std::vector<int>);
+template std::unique_ptr<Integrator<double>> make_vbd_in_order<double>(const Model<double>&,
+                                                                       const SolverSpec&,
+                                                                       std::vector<int>);
 
 }  // namespace clothlab
