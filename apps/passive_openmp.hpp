@@ -19,7 +19,7 @@
 
 namespace clothlab::app {
 
-// Measured on the scaling sheet, 2 threads, idle host (README "Threads"): 100 spins were no better
+// Measured on the scaling sheet, 2 threads, idle host (docs/results.md "Threads"): 100 spins were no better
 // than none, 1000 and 3000 alike fast; beside a busy process 1000 lost less.
 inline constexpr const char* kOpenMPSpinCount = "1000";
 

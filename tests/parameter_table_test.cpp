@@ -1,4 +1,4 @@
-// The parameter table (sim/scene/parameters.hpp): the README's key table is its output; every
+// The parameter table (sim/scene/parameters.hpp): the key table in docs/scene-format.md is its output; every
 // bounded range is enforced with the record's key; every documented default is the struct's;
 // the parser accepts exactly the table's keys.
 #include <gtest/gtest.h>
@@ -43,15 +43,15 @@ std::string read_file(const std::string& path) {
   return text.str();
 }
 
-TEST(ParameterTable, ReadmeKeyTableIsTheGeneratedOne) {
-  const std::string readme = read_file(std::string(CLOTHLAB_SOURCE_DIR) + "/README.md");
+TEST(ParameterTable, DocsKeyTableIsTheGeneratedOne) {
+  const std::string doc = read_file(std::string(CLOTHLAB_SOURCE_DIR) + "/docs/scene-format.md");
   const std::string begin = "<!-- clothlab params: begin -->\n";
   const std::string end = "<!-- clothlab params: end -->";
-  const auto from = readme.find(begin);
-  const auto to = readme.find(end);
-  ASSERT_NE(from, std::string::npos) << "README.md has no generated key table";
+  const auto from = doc.find(begin);
+  const auto to = doc.find(end);
+  ASSERT_NE(from, std::string::npos) << "docs/scene-format.md has no generated key table";
   ASSERT_NE(to, std::string::npos);
-  EXPECT_EQ(readme.substr(from + begin.size(), to - from - begin.size()), parameters_markdown())
+  EXPECT_EQ(doc.substr(from + begin.size(), to - from - begin.size()), parameters_markdown())
       << "regenerate it: scripts/params-table";
 }
 

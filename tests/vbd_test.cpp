@@ -142,7 +142,7 @@ INSTANTIATE_TEST_SUITE_P(Vbd, ConvergesToBackwardEuler, ::testing::Values(1e3, 1
 // Euler only dissipates. On the 8 x 8 sheet 1024 iterations converge every step (above), so a
 // gain would be VBD's own. With the default 10 iterations it does gain energy at this step (the
 // unconverged lattice stays stretched; measured 0.26 J in a step at k0 = 1e3 on the 16 x 16
-// falling sheet, README "Large steps").
+// falling sheet, docs/results.md "Large steps").
 TEST(Vbd, ConvergedStepsNeverGainEnergyWithoutDamping) {
   for (double stiffness : {1e3, 1e4}) {
     Scene scene = stepped_sheet(stiffness);

@@ -22,7 +22,7 @@ int run_check(const CheckArgs& args) {
   return 0;
 }
 
-// The parameter table, as the README's "Scene keys" section holds it.
+// The parameter table, as the key table in docs/scene-format.md holds it.
 int run_params() {
   std::fputs(parameters_markdown().c_str(), stdout);
   return 0;

@@ -2,7 +2,7 @@
 // accuracy sheet (docs/design.md, "Accuracy benchmark scenes") at stiffness k0 = 1e3, 1e4 and
 // 1e5, against a double-precision RK4 run of the same sheet, next to symplectic Euler at its
 // own automatic step; and one 1/60 s step of vbd on a 256 x 256 sheet against the explicit step
-// there (issue 22's targets; README "Large steps" has the measured tables).
+// there (issue 22's targets; docs/results.md "Large steps" has the measured tables).
 #include <algorithm>
 #include <cmath>
 #include <ostream>

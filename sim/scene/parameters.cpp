@@ -1,6 +1,6 @@
 // The parameter table: every key a scene file may hold, once. Its order is the order the parser
 // reads a table's keys in (the shape before the pins, the top-level springs before the cloths)
-// and the order of `clothlab params`. The README's "Scene keys" table is generated from it
+// and the order of `clothlab params`. The key table in docs/scene-format.md is generated from it
 // (tests/parameter_table_test.cpp compares them).
 #include "sim/scene/parameters.hpp"
 
@@ -217,7 +217,7 @@ std::vector<Parameter> dynamics() {
                              .ui = between(0.0, 1.0),
                              .description = "linear drag per vertex, F = -drag v"}),
       table_row<&ForceSpec::wind, S::wind>(
-          {.name = "wind", .description = "gusty wind on the surface normal (README \"Wind\")"}),
+          {.name = "wind", .description = "gusty wind on the surface normal (docs/scene-format.md \"Wind\")"}),
       row<&WindSpec::velocity>({.name = "velocity",
                                 .unit = "m/s",
                                 .description = "the mean wind W",
@@ -251,7 +251,7 @@ Parameter integrator_row() {
                                   .form = "a name",
                                   .choices = special::integrator_names(),
                                   .widget = W::combo,
-                                  .description = "the time integrator (README \"The solver\")"});
+                                  .description = "the time integrator (docs/solver.md)"});
   p.choice_index = &special::integrator_index;
   p.choose = &special::choose_integrator;
   return p;

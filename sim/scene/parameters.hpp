@@ -1,7 +1,7 @@
 // The scene's parameter table: one record per scene-file key (its path, type, range, unit,
 // default, group, panel widget and a one-line description). The parser reads every key through
 // it, validate_scene checks its ranges, the window's panel builds its editors from it and
-// `clothlab params` prints it (the README's key table is that output). A new parameter is one
+// `clothlab params` prints it (the key table in docs/scene-format.md is that output). A new parameter is one
 // record in parameters.cpp plus its member in the Scene's structs. See docs/scene-format.md.
 #pragma once
 
@@ -129,7 +129,7 @@ std::string key_list(Section section);
 std::string range_words(const Parameter& p);
 
 // `clothlab params`: the table in Markdown, one row per key (path, type, range, default, unit,
-// description), as the README's "Scene keys" section holds it.
+// description), as the key table in docs/scene-format.md holds it.
 std::string parameters_markdown();
 
 }  // namespace clothlab

@@ -1,5 +1,5 @@
 // Scene: the plain data a scene file (TOML, version 1) is parsed into. Objects are built from it
-// afterwards (see sim/solver.hpp). Layout and keys: docs/design.md, README.md.
+// afterwards (see sim/solver.hpp). Layout and keys: docs/design.md, docs/scene-format.md.
 #pragma once
 
 #include <array>
@@ -78,7 +78,7 @@ struct ForceSpec {
   WindSpec wind;
 };
 
-// Explicit methods first, then the large-step ones (README "Integrators" has the papers).
+// Explicit methods first, then the large-step ones (docs/solver.md has the papers).
 enum class IntegratorKind {
   explicit_euler,
   symplectic_euler,

@@ -21,7 +21,7 @@ struct StepChoice {
   double limit = 0.0;  // s, the explicit (symplectic Euler) stability limit of the scene
 };
 
-// What `solver.dt = "auto"` picks (README, "Choosing the step"):
+// What `solver.dt = "auto"` picks (docs/solver.md, "Choosing the step"):
 //  - explicit methods: kAutoSafety times the method's own limit (for explicit Euler without
 //    damping, which no step makes stable, a tenth of symplectic Euler's), rounded down to two
 //    significant digits;
