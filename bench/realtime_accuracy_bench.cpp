@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "apps/passive_openmp.hpp"
+#include "sim/core/passive_openmp.hpp"
 #include "bench/suites/lab_scenes.hpp"
 #include "sim/solver.hpp"
 
@@ -112,7 +112,7 @@ double rms(const std::vector<double>& a, const std::vector<double>& b) {
 }  // namespace clothlab
 
 int main(int argc, char** argv) {
-  clothlab::app::prefer_passive_openmp(argv);
+  clothlab::prefer_passive_openmp(argv);
   using namespace clothlab;
   const int res = argc > 1 ? std::atoi(argv[1]) : 256;
   const int threads = argc > 2 ? std::atoi(argv[2]) : 2;

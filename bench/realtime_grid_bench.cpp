@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "apps/passive_openmp.hpp"
+#include "sim/core/passive_openmp.hpp"
 #include "bench/bench_scenes.hpp"
 #include "sim/solver.hpp"
 
@@ -40,7 +40,7 @@ double step_seconds(int res, int threads, bool full_physics) {
 }  // namespace clothlab
 
 int main(int argc, char** argv) {
-  clothlab::app::prefer_passive_openmp(argv);
+  clothlab::prefer_passive_openmp(argv);
   using namespace clothlab;
   const std::string csv_path = argc > 1 ? argv[1] : "realtime_grid.csv";
   std::ifstream load("/proc/loadavg");

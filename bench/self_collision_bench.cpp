@@ -15,7 +15,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "apps/passive_openmp.hpp"
+#include "sim/core/passive_openmp.hpp"
 #include "bench/bench_scenes.hpp"
 #include "sim/solver_impl.hpp"
 
@@ -120,7 +120,7 @@ void run(int res, int threads, int steps) {
 }  // namespace clothlab
 
 int main(int /*argc*/, char** argv) {
-  clothlab::app::prefer_passive_openmp(argv);
+  clothlab::prefer_passive_openmp(argv);
   std::printf("per solver step of %d substeps (float)\n", clothlab::kSubsteps);
   for (int res : {64, 128})
     for (int threads : {1, 2}) clothlab::run(res, threads, res == 64 ? 20 : 6);

@@ -13,7 +13,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "apps/passive_openmp.hpp"
+#include "sim/core/passive_openmp.hpp"
 #include "bench/bench_scenes.hpp"
 #include "sim/solver.hpp"
 
@@ -96,7 +96,7 @@ void add_load_context() {
 }  // namespace clothlab
 
 int main(int argc, char** argv) {
-  clothlab::app::prefer_passive_openmp(argv);
+  clothlab::prefer_passive_openmp(argv);
   benchmark::Initialize(&argc, argv);
   clothlab::add_load_context();
   benchmark::RunSpecifiedBenchmarks();

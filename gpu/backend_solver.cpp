@@ -5,7 +5,7 @@
 #include "gpu/gpu_step.hpp"
 #include "sim/scene/parameter_keys.hpp"
 #include "sim/solver_impl.hpp"
-#include "vis/gl/gl_error.hpp"
+#include "gl/gl_error.hpp"
 
 namespace clothlab::gpu {
 

@@ -7,8 +7,8 @@
 #include <utility>
 
 #include "sim/forces/wind.hpp"
-#include "vis/gl/gl_error.hpp"
-#include "vis/gl/program.hpp"
+#include "gl/gl_error.hpp"
+#include "gl/program.hpp"
 
 namespace clothlab::gpu {
 

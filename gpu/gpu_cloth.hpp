@@ -19,7 +19,7 @@
 #include "sim/model/model.hpp"
 #include "sim/scene/scene.hpp"
 #include "sim/step_backend.hpp"
-#include "vis/gl/objects.hpp"
+#include "gl/objects.hpp"
 
 namespace clothlab::gpu {
 

@@ -1,6 +1,6 @@
 // A sound as plain data: mono float samples at one sample rate, read from and written to sound
 // files through libsndfile (WAV, FLAC, OGG/Vorbis, MP3 as libsndfile 1.2 decodes them). The
-// analysis (beat_tracker.hpp) and playback (vis/window/audio_playback.hpp) both take this struct.
+// analysis (beat_tracker.hpp) and playback (apps/view/audio_playback.hpp) both take this struct.
 #pragma once
 
 #include <stdexcept>

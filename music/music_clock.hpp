@@ -1,7 +1,7 @@
 // The audio clock as the master of an interactive view with music (docs/contact.md section 4): each
 // frame the simulation catches up to the playback position in fixed steps (FrameStepper), so the
 // dance lands on the beat you hear whatever the frame rate. This is the rule alone, free of any
-// audio library, so it is tested without a device; vis/window/music_sync.hpp applies its plans
+// audio library, so it is tested without a device; apps/view/music_sync.hpp applies its plans
 // to an OpenAL playback.
 //
 // The rule, per frame, from the playback position `audio`, the solver's time and whether the

@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "vis/gl/gl_error.hpp"
-#include "vis/gl/headless_context.hpp"
-#include "vis/gl/objects.hpp"
-#include "vis/gl/program.hpp"
+#include "gl/gl_error.hpp"
+#include "gl/headless_context.hpp"
+#include "gl/objects.hpp"
+#include "gl/program.hpp"
 #include "vis/shading/brdf.hpp"
 
 namespace clothlab {

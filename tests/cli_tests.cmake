@@ -290,7 +290,7 @@ clothlab_env_test(view.no_display "--unset=DISPLAY|--unset=WAYLAND_DISPLAY" 1
 # The window itself, under a virtual X display (Xvfb, installed by scripts/deps): it opens,
 # takes every display mode and the main keys, quits by itself after 40 frames with status 0
 # and writes a screenshot of its last frame, which must be a real picture. The test hooks are
-# described in vis/window/view_app.hpp.
+# described in apps/view/view_app.hpp.
 find_program(XVFB_RUN xvfb-run)
 if(XVFB_RUN)
   set(CLOTHLAB_VIEW_SHOT ${CLOTHLAB_TRACE_OUT}/view_last_frame.png)

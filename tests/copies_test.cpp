@@ -11,7 +11,7 @@
 #include "sim/cloth/scene_copies.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
-#include "vis/window/sim_session.hpp"
+#include "apps/view/sim_session.hpp"
 
 namespace clothlab {
 namespace {

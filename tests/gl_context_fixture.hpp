@@ -6,7 +6,7 @@
 
 #include <memory>
 
-#include "vis/gl/headless_context.hpp"
+#include "gl/headless_context.hpp"
 
 namespace clothlab::testing {
 

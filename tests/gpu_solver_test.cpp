@@ -21,7 +21,7 @@
 #include "test_scenes.hpp"
 #include "vis/render/headless_renderer.hpp"
 #include "vis/render/view_settings.hpp"
-#include "vis/window/sim_session.hpp"
+#include "apps/view/sim_session.hpp"
 
 namespace clothlab {
 namespace {

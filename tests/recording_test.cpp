@@ -8,7 +8,7 @@
 
 #include "sim/trace/csv_trace.hpp"
 #include "test_scenes.hpp"
-#include "vis/window/sim_session.hpp"
+#include "apps/view/sim_session.hpp"
 
 namespace clothlab {
 namespace {

@@ -8,10 +8,10 @@
 
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
-#include "vis/gl/gl_error.hpp"
-#include "vis/gl/headless_context.hpp"
-#include "vis/gl/offscreen_target.hpp"
-#include "vis/gl/program.hpp"
+#include "gl/gl_error.hpp"
+#include "gl/headless_context.hpp"
+#include "gl/offscreen_target.hpp"
+#include "gl/program.hpp"
 #include "vis/render/renderer.hpp"
 #include "vis/textures/image.hpp"
 

@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "apps/clothlab/commands.hpp"
-#include "apps/passive_openmp.hpp"
+#include "sim/core/passive_openmp.hpp"
 #include "bench/suites/suites.hpp"
 
 namespace clothlab::app {

@@ -10,14 +10,14 @@
 #include <vector>
 
 #include "apps/clothlab/commands.hpp"
-#include "apps/passive_openmp.hpp"
+#include "sim/core/passive_openmp.hpp"
 #include "bench/suites/suites.hpp"
 #include "sim/core/temp_files.hpp"
 #include "sim/forces/force_source.hpp"
 #include "sim/scene/scene_error.hpp"
 #include "vis/colormap/colormap.hpp"
 #include "vis/render/scalar_field.hpp"
-#include "vis/window/input.hpp"
+#include "apps/view/input.hpp"
 
 namespace {
 
@@ -310,7 +310,7 @@ bool unknown_subcommand(const CLI::App& app, int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  clothlab::app::prefer_passive_openmp(argv);
+  clothlab::prefer_passive_openmp(argv);
   clothlab::install_temp_file_cleanup();
   using namespace clothlab::app;
   CLI::App app{"ClothLab: a laboratory for simulating cloth and looking at it scientifically.",

@@ -15,7 +15,7 @@
 #include "sim/cloth/scene_copies.hpp"
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
-#include "vis/gl/gl_error.hpp"
+#include "gl/gl_error.hpp"
 #include "vis/render/headless_renderer.hpp"
 #include "vis/render/scalar_field.hpp"
 #include "vis/textures/image.hpp"

@@ -1,12 +1,12 @@
 // `clothlab view [SCENE] [--set k=v]...`: parses the scene, then hands it to the interactive
-// window (vis/window/view_app.hpp). Only wiring and the mapping of errors to exit statuses.
+// window (apps/view/view_app.hpp). Only wiring and the mapping of errors to exit statuses.
 #include <cstdio>
 #include <exception>
 
 #include "apps/clothlab/commands.hpp"
 #include "sim/scene/scene_parser.hpp"
-#include "vis/gl/gl_error.hpp"
-#include "vis/window/view_app.hpp"
+#include "gl/gl_error.hpp"
+#include "apps/view/view_app.hpp"
 
 namespace clothlab::app {
 

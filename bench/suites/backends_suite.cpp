@@ -19,7 +19,7 @@
 #include "gpu/backend_solver.hpp"
 #include "sim/cloth/scene_copies.hpp"
 #include "sim/solver.hpp"
-#include "vis/gl/headless_context.hpp"
+#include "gl/headless_context.hpp"
 
 namespace clothlab::bench {
 namespace {

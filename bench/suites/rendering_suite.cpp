@@ -1,5 +1,5 @@
 // `clothlab bench --suite rendering`: what each display mode and shadow filter costs per
-// headless frame, split by pass (vis/gl/pass_timer.hpp): the shadow map, the diffusion passes,
+// headless frame, split by pass (gl/pass_timer.hpp): the shadow map, the diffusion passes,
 // the scene (floor, scenery, cloth), the sky and the overlays (arrows, colour bars); and the
 // default scene with every optional pass off against the usual mode 3. The scene is the default
 // one with a sphere, a box and a torus knot beside the cloth, so shadows fall on objects too.
@@ -15,7 +15,7 @@
 #include "bench/suites/suites.hpp"
 #include "load/scene_load.hpp"
 #include "sim/solver.hpp"
-#include "vis/gl/gl.hpp"
+#include "gl/gl.hpp"
 #include "vis/render/headless_renderer.hpp"
 
 namespace clothlab::bench {

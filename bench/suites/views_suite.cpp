@@ -17,7 +17,7 @@
 #include "load/scene_load.hpp"
 #include "sim/scene/validate.hpp"
 #include "sim/solver.hpp"
-#include "vis/gl/gl.hpp"
+#include "gl/gl.hpp"
 #include "vis/render/headless_renderer.hpp"
 
 namespace clothlab::bench {

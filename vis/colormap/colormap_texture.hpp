@@ -3,7 +3,7 @@
 #pragma once
 
 #include "vis/colormap/colormap.hpp"
-#include "vis/gl/objects.hpp"
+#include "gl/objects.hpp"
 
 namespace clothlab::vis {
 

@@ -3,7 +3,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
-#include "vis/gl/gl.hpp"
+#include "gl/gl.hpp"
 
 namespace clothlab::vis {
 namespace {

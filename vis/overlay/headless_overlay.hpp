@@ -1,6 +1,6 @@
 // Dear ImGui without a window, for text and legends drawn into headless renders: its own ImGui
 // context and the OpenGL3 back-end on the current (EGL) context. The window has its own context
-// (vis/window/imgui_layer.hpp); this one is made current only while it draws.
+// (apps/view/imgui_layer.hpp); this one is made current only while it draws.
 #pragma once
 
 #include <functional>

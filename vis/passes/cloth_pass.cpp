@@ -5,12 +5,13 @@
 #include <cstdint>
 #include <vector>
 
-#include "vis/gl/program.hpp"
-#include "vis/gl/uploads.hpp"
+#include "gl/program.hpp"
+#include "gl/uploads.hpp"
 #include "vis/passes/diffusion_pass.hpp"
 #include "vis/render/cloth_geometry.hpp"
 #include "vis/render/shading_variant.hpp"
 #include "vis/textures/fabric_texture.hpp"
+#include "vis/textures/image_texture.hpp"
 #include "vis/textures/weave_maps.hpp"
 
 namespace clothlab::vis {

@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "vis/gl/objects.hpp"
-#include "vis/gl/program_variants.hpp"
+#include "gl/objects.hpp"
+#include "gl/program_variants.hpp"
 #include "vis/render/view_settings.hpp"
 
 namespace clothlab {

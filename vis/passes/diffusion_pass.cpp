@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "vis/gl/program.hpp"
+#include "gl/program.hpp"
 #include "vis/render/shading_variant.hpp"
 
 namespace clothlab::vis {

@@ -10,8 +10,8 @@
 #include <glm/glm.hpp>
 #include <string>
 
-#include "vis/gl/objects.hpp"
-#include "vis/gl/program_variants.hpp"
+#include "gl/objects.hpp"
+#include "gl/program_variants.hpp"
 
 namespace clothlab::vis {
 

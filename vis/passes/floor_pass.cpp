@@ -2,10 +2,11 @@
 
 #include <algorithm>
 
-#include "vis/gl/program.hpp"
-#include "vis/gl/uploads.hpp"
+#include "gl/program.hpp"
+#include "gl/uploads.hpp"
 #include "vis/render/shading_variant.hpp"
 #include "vis/textures/floor_texture.hpp"
+#include "vis/textures/image_texture.hpp"
 
 namespace clothlab::vis {
 namespace {

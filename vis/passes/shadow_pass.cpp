@@ -1,6 +1,6 @@
 #include "vis/passes/shadow_pass.hpp"
 
-#include "vis/gl/program.hpp"
+#include "gl/program.hpp"
 
 namespace clothlab::vis {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <glm/glm.hpp>
 
-#include "vis/gl/objects.hpp"
+#include "gl/objects.hpp"
 
 namespace clothlab::vis {
 
@@ -46,7 +46,7 @@ class ShadowPass {
   Framebuffer fbo_, opaque_fbo_, colour_fbo_;
   Texture depth_, opaque_depth_, colour_;
   bool translucent_ = false;  // the opaque and colour maps were drawn this frame
-  struct Samplers {           // GL sampler objects (no RAII type in vis/gl for them yet)
+  struct Samplers {           // GL sampler objects (no RAII type in gl/ for them yet)
     GLuint compare = 0, plain = 0;
     Samplers() = default;
     Samplers(const Samplers&) = delete;

@@ -1,6 +1,6 @@
 #include "vis/passes/sky_pass.hpp"
 
-#include "vis/gl/program.hpp"
+#include "gl/program.hpp"
 #include "vis/sky/preetham_sky.hpp"
 
 namespace clothlab::vis {

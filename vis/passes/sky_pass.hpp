@@ -6,7 +6,7 @@
 
 #include <glm/glm.hpp>
 
-#include "vis/gl/objects.hpp"
+#include "gl/objects.hpp"
 
 namespace clothlab::vis {
 

@@ -1,6 +1,6 @@
 #include "vis/passes/springs_pass.hpp"
 
-#include "vis/gl/program.hpp"
+#include "gl/program.hpp"
 #include "vis/render/cloth_geometry.hpp"
 
 namespace clothlab::vis {

@@ -3,7 +3,7 @@
 // (drawn so in every mode), its vertices as dots. Needs a current GL 4.5 context.
 #pragma once
 
-#include "vis/gl/objects.hpp"
+#include "gl/objects.hpp"
 
 namespace clothlab::vis {
 

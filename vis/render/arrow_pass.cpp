@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <numbers>
 
-#include "vis/gl/program.hpp"
+#include "gl/program.hpp"
 
 namespace clothlab::vis {
 namespace {

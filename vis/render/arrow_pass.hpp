@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "vis/gl/objects.hpp"
+#include "gl/objects.hpp"
 #include "vis/render/arrow_field.hpp"
 
 namespace clothlab::vis {

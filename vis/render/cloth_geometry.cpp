@@ -7,8 +7,8 @@
 
 #include "sim/solver.hpp"
 #include "sim/step_backend.hpp"
-#include "vis/gl/program.hpp"
-#include "vis/gl/uploads.hpp"
+#include "gl/program.hpp"
+#include "gl/uploads.hpp"
 #include "vis/render/quantile.hpp"
 #include "vis/textures/cloth_tangents.hpp"
 

@@ -10,7 +10,7 @@
 
 #include <glm/glm.hpp>
 
-#include "vis/gl/objects.hpp"
+#include "gl/objects.hpp"
 #include "vis/render/cloth_layout.hpp"
 #include "vis/render/view_settings.hpp"
 

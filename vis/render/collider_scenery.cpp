@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "sim/solver.hpp"
-#include "vis/gl/program.hpp"
+#include "gl/program.hpp"
 #include "vis/meshes/mesh.hpp"
 #include "vis/meshes/obj_mesh.hpp"
 #include "vis/meshes/shapes.hpp"

@@ -11,8 +11,8 @@
 
 #include "sim/contact/collider.hpp"
 #include "sim/scene/collider_spec.hpp"
-#include "vis/gl/objects.hpp"
-#include "vis/gl/program_variants.hpp"
+#include "gl/objects.hpp"
+#include "gl/program_variants.hpp"
 #include "vis/render/gpu_mesh.hpp"
 
 namespace clothlab {

@@ -7,8 +7,8 @@
 #include <utility>
 
 #include "sim/solver.hpp"
-#include "vis/gl/program.hpp"
-#include "vis/gl/uploads.hpp"
+#include "gl/program.hpp"
+#include "gl/uploads.hpp"
 #include "vis/render/renderer.hpp"
 
 namespace clothlab::vis {

@@ -9,7 +9,7 @@
 #include <optional>
 #include <vector>
 
-#include "vis/gl/objects.hpp"
+#include "gl/objects.hpp"
 
 namespace clothlab {
 class Solver;

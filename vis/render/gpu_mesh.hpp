@@ -3,7 +3,7 @@
 // props (Scenery) and the colliders (ColliderScenery).
 #pragma once
 
-#include "vis/gl/objects.hpp"
+#include "gl/objects.hpp"
 
 namespace clothlab::vis {
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "vis/gl/headless_context.hpp"
-#include "vis/gl/offscreen_target.hpp"
+#include "gl/headless_context.hpp"
+#include "gl/offscreen_target.hpp"
 #include "vis/overlay/legends.hpp"
 #include "vis/render/diagnostics.hpp"
 #include "vis/render/field_pass.hpp"

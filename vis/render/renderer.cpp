@@ -4,7 +4,7 @@
 
 #include "sim/solver.hpp"
 #include "vis/colormap/colormap_texture.hpp"
-#include "vis/gl/program.hpp"
+#include "gl/program.hpp"
 #include "vis/passes/diffusion_pass.hpp"
 #include "vis/passes/shadow_pass.hpp"
 #include "vis/passes/sky_pass.hpp"

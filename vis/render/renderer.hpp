@@ -14,8 +14,8 @@
 
 #include "sim/model/model.hpp"
 #include "sim/scene/collider_spec.hpp"
-#include "vis/gl/objects.hpp"
-#include "vis/gl/pass_timer.hpp"
+#include "gl/objects.hpp"
+#include "gl/pass_timer.hpp"
 #include "vis/passes/cloth_pass.hpp"
 #include "vis/passes/floor_pass.hpp"
 #include "vis/passes/springs_pass.hpp"
@@ -66,7 +66,7 @@ class Renderer {
   // view.quality for this context's GL renderer: full or fast (render_quality.hpp).
   RenderQuality quality(const ViewSettings& view) const;
   const std::string& gl_renderer() const { return gl_renderer_; }
-  // Time per pass (benchmarks): on, draw() brackets its passes (vis/gl/pass_timer.hpp).
+  // Time per pass (benchmarks): on, draw() brackets its passes (gl/pass_timer.hpp).
   void enable_pass_timing(bool on);
   PassTimer* pass_timer() { return timer_.get(); }
   // Replaces mode 6's procedural weave normal map with `map` (tangent-space, encoded as in

@@ -5,7 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "sim/solver.hpp"
-#include "vis/gl/program.hpp"
+#include "gl/program.hpp"
 #include "vis/meshes/mesh.hpp"
 #include "vis/meshes/obj_mesh.hpp"
 #include "vis/meshes/shapes.hpp"

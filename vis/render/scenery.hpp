@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "sim/scene/render_spec.hpp"
-#include "vis/gl/objects.hpp"
-#include "vis/gl/program_variants.hpp"
+#include "gl/objects.hpp"
+#include "gl/program_variants.hpp"
 #include "vis/render/gpu_mesh.hpp"
 
 namespace clothlab {

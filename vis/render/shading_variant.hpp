@@ -1,6 +1,6 @@
 // What the lit shaders (shaders/lighting.glsl and the passes that include it) are compiled for:
 // the shadow filter, coloured shadows and the PCF kernel's size are #defines, not uniforms, so
-// llvmpipe does not pay for the filters a frame does not use (vis/gl/program_variants.hpp).
+// llvmpipe does not pay for the filters a frame does not use (gl/program_variants.hpp).
 #pragma once
 
 #include <string>

@@ -1,0 +1,55 @@
+// The Dear ImGui side of the window: the control panel (edits the live scene's draft and shows
+// statistics), the help overlay (H) and the status overlay (pause, "can't keep up", divergence).
+// Immediate mode: each function reads and writes the state it is given, every frame.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vis/render/field_pass.hpp"
+#include "vis/render/view_settings.hpp"
+#include "apps/view/frame_stats.hpp"
+#include "apps/view/input.hpp"
+#include "apps/view/sim_session.hpp"
+
+namespace clothlab::vis {
+
+// Window options that are not about how the cloth is drawn (those live in ViewSettings).
+// What the panel says while the cloth's pins are released (D), and the window prints when it
+// happens.
+inline constexpr const char* kPinsReleasedMessage =
+    "pins released: the cloth drops (R pins it again)";
+
+struct PanelState {
+  double push_strength = 0.5;  // N*s, momentum of one push (P)
+  bool show_help = false;
+  std::optional<Field> probe;  // keys 8 / 9 / 0; nothing: probing off (no field pass drawn)
+  std::string message;         // last notice, e.g. where a screenshot went
+  // The scene picker: the .toml files beside the running scene (listed once), and the one the
+  // user chose this frame, for the app to open.
+  std::vector<std::string> scene_files;
+  std::optional<std::string> open_scene;
+  std::string gl_renderer;   // GL_RENDERER, for what render.quality = "auto" chose
+  float panel_right = 0.0f;  // the panel's right edge last frame (window pixels)
+};
+
+// Draws the panel. Applies edits to the session (values that keep the topology at once, a
+// resolution on Reset) and returns the action of a clicked button, dispatched like its key.
+std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view, PanelState& state,
+                                         const FrameStats& stats);
+
+// Every key of the key table and the mouse controls.
+void draw_help_overlay(bool& open);
+
+// The probe's readout (lines of text) in a small tooltip-like window at (x, y), window
+// coordinates, next to the cursor and right of the panel (whose right edge is panel_right).
+void draw_probe_overlay(const std::string& text, float x, float y, float panel_right);
+
+const char* field_name(Field field);
+
+// A line at the bottom of the window when the simulation is paused, behind real time or stopped
+// on divergence.
+void draw_status_overlay(const SimSession& session, const FrameStats& stats);
+
+}  // namespace clothlab::vis

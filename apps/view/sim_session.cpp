@@ -1,0 +1,255 @@
+#include "apps/view/sim_session.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "sim/cloth/scene_copies.hpp"
+#include "sim/scene/scene_error.hpp"
+#include "sim/scene/validate.hpp"
+#include "apps/view/scene_edit.hpp"
+
+namespace clothlab::vis {
+namespace {
+
+// A panel edit has no place in the scene file, so its message names the key, not a line.
+std::string edit_message(const SceneError& e) {
+  return e.key.empty() ? e.detail : e.key + ": " + e.detail;
+}
+
+}  // namespace
+
+SimSession::SimSession(Scene scene, SolverFactory factory)
+    : factory_(std::move(factory)), base_(scene), applied_(scene), draft_(std::move(scene)) {
+  solver_ = build(applied_);
+  rebuilt();
+  choose_threads();
+}
+
+void SimSession::rebuilt() {
+  built_ = with_copies(applied_, copies_, spacing_);
+  ++builds_;
+}
+
+void SimSession::choose_threads() {
+  if (parallel_chosen_ || base_.solver.threads == 1) return;
+  const int threads = solver_->vertex_count() >= kParallelVertices ? base_.solver.threads : 1;
+  applied_.solver.threads = draft_.solver.threads = threads;
+  solver_->set_threads(threads);
+}
+
+std::unique_ptr<Solver> SimSession::build(const Scene& scene) {
+  validate_scene(scene);
+  const Scene copied = with_copies(scene, copies_, spacing_);
+  std::string note;
+  std::unique_ptr<Solver> solver = factory_ ? factory_(copied, note) : make_solver(copied);
+  backend_note_ = note;
+  return solver;
+}
+
+void SimSession::apply_dynamics() {
+  Scene candidate = applied_;
+  copy_dynamics(draft_, candidate);
+  std::unique_ptr<Solver> next;
+  try {
+    next = build(candidate);
+  } catch (const SceneError& e) {
+    error_ = edit_message(e);
+    return;
+  }
+  error_.clear();
+  applied_ = std::move(candidate);
+  rebuilt();
+  // A diverged state is not worth carrying over: the new values wait for R.
+  if (divergence_) return;
+  next->load_state(*solver_);
+  if (solver_->pins_released()) next->release_pins();  // a dropped cloth stays dropped (D)
+  solver_ = std::move(next);
+}
+
+void SimSession::check_structure() {
+  remap_grid_indices(draft_, base_);
+  try {
+    validate_scene(draft_);
+    structure_error_.clear();
+  } catch (const SceneError& e) {
+    structure_error_ = edit_message(e);
+  }
+}
+
+void SimSession::reset() {
+  remap_grid_indices(draft_, base_);
+  try {
+    solver_ = build(draft_);
+  } catch (const SceneError& e) {
+    structure_error_ = edit_message(e);
+    return;
+  }
+  applied_ = draft_;
+  rebuilt();
+  error_.clear();
+  structure_error_.clear();
+  divergence_.reset();
+  ++generation_;
+  choose_threads();  // ] / [ may have crossed kParallelVertices
+}
+
+void SimSession::load(Scene scene) {
+  const int copies = copies_;
+  copies_ = 1;  // a new scene starts as one
+  std::unique_ptr<Solver> next;
+  try {
+    next = build(scene);
+  } catch (...) {
+    copies_ = copies;  // the running scene stays
+    throw;
+  }
+  if (recording()) stop_recording();
+  solver_ = std::move(next);
+  base_ = applied_ = draft_ = std::move(scene);
+  rebuilt();
+  error_.clear();
+  structure_error_.clear();
+  divergence_.reset();
+  parallel_chosen_ = false;
+  ++generation_;
+  choose_threads();
+}
+
+void SimSession::scale_resolution(double factor) {
+  if (vis::scale_resolution(draft_, factor)) reset();
+}
+
+std::string SimSession::set_copies(int copies) {
+  copies = std::clamp(copies, 1, kMaxCopies);
+  if (copies == copies_) return {};
+  if (std::string why = copies_unsupported_reason(applied_); !why.empty()) return why;
+  if (copies_ == 1) {
+    spacing_ = copy_spacing(applied_);
+  }
+  const int before = copies_;
+  copies_ = copies;
+  std::unique_ptr<Solver> next;
+  try {
+    next = build(applied_);
+  } catch (const SceneError& e) {
+    copies_ = before;
+    return edit_message(e);
+  }
+  if (recording()) stop_recording();
+  solver_ = std::move(next);
+  rebuilt();
+  divergence_.reset();
+  ++generation_;
+  choose_threads();
+  return {};
+}
+
+void SimSession::toggle_wind() {
+  draft_.forces.wind.enabled = !draft_.forces.wind.enabled;
+  apply_dynamics();
+}
+
+void SimSession::toggle_parallel() {
+  parallel_chosen_ = true;
+  const int threads = parallel() ? 1 : 0;
+  applied_.solver.threads = draft_.solver.threads = threads;
+  solver_->set_threads(threads);
+}
+
+void SimSession::push(const Vec3d& impulse) {
+  if (divergence_) return;
+  const std::size_t n = solver_->vertex_count();
+  std::vector<float> xyz(3 * n);
+  solver_->copy_positions(xyz.data());
+  Vec3d lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY}, centre{};
+  for (std::size_t v = 0; v < n; ++v) {
+    for (int k = 0; k < 3; ++k) {
+      const double x = xyz[3 * v + k];
+      lo[k] = std::min(lo[k], x);
+      hi[k] = std::max(hi[k], x);
+      centre[k] += x / double(n);
+    }
+  }
+  // A quarter of the cloth's diagonal: a hand-sized push on the middle, not a shove of the
+  // whole sheet.
+  const double diagonal =
+      std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  solver_->apply_impulse(centre, std::max(0.05, 0.25 * diagonal), impulse);
+}
+
+FrameAdvance SimSession::advance(const FrameStepper& stepper, double request, const FrameCap& cap) {
+  if (recorder_) return advance_recording(request, cap);
+  const FrameAdvance r = stepper.advance(*solver_, request, cap, paused || divergence_.has_value());
+  if (r.divergence) divergence_ = r.divergence;
+  return r;
+}
+
+void SimSession::single_step() {
+  if (divergence_) return;
+  const AdvanceResult r = solver_->step(1);
+  if (r.divergence) divergence_ = r.divergence;
+  if (recorder_ && !divergence_) record_step();
+}
+
+// The same real-time rule as FrameStepper (the cap included), one step at a time so that each
+// step can be written: the steps whose end lies within the simulated time asked for so far.
+FrameAdvance SimSession::advance_recording(double request, const FrameCap& cap) {
+  FrameAdvance out;
+  if (paused || divergence_ || !(request > 0.0)) return out;
+  const double dt = solver_->dt();
+  if (request > cap.seconds) {
+    out.capped = true;
+    out.limit = cap.limit;
+    out.dropped_seconds = request - cap.seconds;
+    request = cap.seconds;
+  }
+  record_clock_ += request;
+  // Whole steps only, as Solver::advance takes them (the remainder waits for the next frame).
+  const auto target = static_cast<long>(std::floor(record_clock_ / dt * (1.0 + 1e-12)));
+  while (solver_->step_count() < target) {
+    const AdvanceResult r = solver_->step(1);
+    out.steps += r.steps;
+    if (r.divergence) {
+      divergence_ = out.divergence = r.divergence;
+      break;
+    }
+    record_step();
+  }
+  return out;
+}
+
+void SimSession::record_step() {
+  if ((solver_->step_count() - record_start_step_) % record_spec_.every != 0) return;
+  recorder_->write_step(*solver_);
+  recorded_rows_ += std::max<long>(1, static_cast<long>(record_spec_.vertices.size()));
+}
+
+void SimSession::start_recording(const std::string& path, const TraceSpec& spec) {
+  stop_recording();
+  recorder_ = std::make_unique<TraceWriter>(path, spec, applied_.multi_cloth,
+                                            applied_.solver.precision == Precision::f64);
+  record_spec_ = spec;
+  record_path_ = path;
+  recorded_rows_ = 0;
+  record_start_step_ = solver_->step_count();
+  record_clock_ = solver_->time();
+  if (!divergence_) record_step();  // the state recording starts from
+}
+
+std::string SimSession::stop_recording() {
+  if (!recorder_) return {};
+  recorder_->commit();
+  recorder_.reset();
+  return "recorded " + std::to_string(recorded_rows_) + " rows to " + record_path_;
+}
+
+bool SimSession::structure_pending() const {
+  for (std::size_t c = 0; c < draft_.cloths.size(); ++c)
+    if (draft_.cloths[c].resolution != applied_.cloths[c].resolution) return true;
+  return false;
+}
+
+}  // namespace clothlab::vis

@@ -1,0 +1,78 @@
+// The folders' includes point down the data flow (docs/design.md, "Layout"): sim/ (physics) <-
+// gl/ (the GL foundation) <- gpu/ (the GPU step) and vis/ (the renderer) <- bench/ <- apps/,
+// with music/ and load/ (the files a scene names) on sim/. A file may include its own folder and
+// the folders below it, never one beside or above it.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// What each folder may include besides itself.
+const std::map<std::string, std::set<std::string>>& allowed() {
+  static const std::map<std::string, std::set<std::string>> table = {
+      {"sim", {}},
+      {"music", {"sim"}},
+      {"load", {"sim", "music"}},
+      {"gl", {}},
+      {"gpu", {"sim", "gl"}},
+      {"vis", {"sim", "gl"}},
+      {"bench", {"sim", "music", "load", "gl", "gpu", "vis"}},
+      {"apps", {"sim", "music", "load", "gl", "gpu", "vis", "bench"}},
+  };
+  return table;
+}
+
+// Every include of a folder that `folder` may not include, in the C++ files under root/folder,
+// as "file -> line".
+std::vector<std::string> upward_includes(const fs::path& root, const std::string& folder) {
+  const std::set<std::string>& ok = allowed().at(folder);
+  const std::regex include(R"re(^\s*#\s*include\s*"([a-z_]+)/)re");
+  std::vector<std::string> bad;
+  for (const auto& entry : fs::recursive_directory_iterator(root / folder)) {
+    const std::string ext = entry.path().extension().string();
+    if (ext != ".cpp" && ext != ".hpp") continue;
+    std::ifstream in(entry.path());
+    std::string line;
+    while (std::getline(in, line)) {
+      std::smatch m;
+      if (!std::regex_search(line, m, include)) continue;
+      const std::string target = m[1];
+      if (target == folder || !allowed().count(target) || ok.count(target)) continue;
+      bad.push_back(fs::relative(entry.path(), root).string() + " -> " + line);
+    }
+  }
+  return bad;
+}
+
+TEST(Layering, NoFolderIncludesOneBesideOrAboveIt) {
+  for (const auto& [folder, ok] : allowed()) {
+    const std::vector<std::string> bad = upward_includes(CLOTHLAB_SOURCE_DIR, folder);
+    EXPECT_TRUE(bad.empty()) << bad.size() << " includes out of " << folder << "/, e.g. "
+                             << bad.front();
+  }
+}
+
+// The scan finds a renderer file that includes the GPU backend, and passes one on the GL layer.
+TEST(Layering, TheScanFindsAnIncludeBesideItsFolder) {
+  const fs::path root = fs::temp_directory_path() / "clothlab_layering_test";
+  fs::remove_all(root);
+  fs::create_directories(root / "vis/render");
+  std::ofstream(root / "vis/render/a.cpp") << "#include \"gl/objects.hpp\"\n";
+  std::ofstream(root / "vis/render/b.hpp")
+      << "#include <vector>\n  #include \"gpu/gpu_step.hpp\"\n";
+  const std::vector<std::string> bad = upward_includes(root, "vis");
+  fs::remove_all(root);
+  ASSERT_EQ(bad.size(), 1u);
+  EXPECT_EQ(bad[0], "vis/render/b.hpp ->   #include \"gpu/gpu_step.hpp\"");
+}
+
+}  // namespace
