@@ -58,6 +58,9 @@ inline void delete_program(GLuint n) {
 inline void delete_shader(GLuint n) {
   glDeleteShader(n);
 }
+inline void delete_sampler(GLuint n) {
+  glDeleteSamplers(1, &n);
+}
 }  // namespace detail
 
 using Buffer = GlName<detail::delete_buffer>;
@@ -67,6 +70,7 @@ using Framebuffer = GlName<detail::delete_framebuffer>;
 using Renderbuffer = GlName<detail::delete_renderbuffer>;
 using Program = GlName<detail::delete_program>;
 using Shader = GlName<detail::delete_shader>;
+using Sampler = GlName<detail::delete_sampler>;
 
 // Creation helpers (direct state access, GL 4.5): one name from glCreate*(args..., 1, &name).
 template <class Name, class Create, class... Args>
@@ -89,6 +93,9 @@ inline Framebuffer make_framebuffer() {
 }
 inline Renderbuffer make_renderbuffer() {
   return create_one<Renderbuffer>(glCreateRenderbuffers);
+}
+inline Sampler make_sampler() {
+  return create_one<Sampler>(glCreateSamplers);
 }
 
 }  // namespace clothlab::vis

@@ -13,33 +13,28 @@ constexpr float kOffsetFactor = 1.5f, kOffsetUnits = 2.0f;
 
 }  // namespace
 
-ShadowPass::Samplers::~Samplers() {
-  if (compare) glDeleteSamplers(1, &compare);
-  if (plain) glDeleteSamplers(1, &plain);
-}
-
 ShadowPass::ShadowPass()
     : program_(build_program({"shadow_depth.vert", "shadow_depth.frag"})),
       transmittance_program_(build_program({"shadow_colour.vert", "shadow_colour.frag"})),
       fbo_(make_framebuffer()),
       opaque_fbo_(make_framebuffer()),
       colour_fbo_(make_framebuffer()),
+      compare_sampler_(make_sampler()),
+      plain_sampler_(make_sampler()),
       empty_vao_(make_vertex_array()) {
-  glCreateSamplers(1, &samplers_.compare);
-  glCreateSamplers(1, &samplers_.plain);
   // Outside the map: depth 1, so the compare says lit.
   const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-  for (GLuint s : {samplers_.compare, samplers_.plain}) {
+  for (GLuint s : {compare_sampler_.get(), plain_sampler_.get()}) {
     glSamplerParameteri(s, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
     glSamplerParameteri(s, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
     glSamplerParameterfv(s, GL_TEXTURE_BORDER_COLOR, border);
   }
-  glSamplerParameteri(samplers_.compare, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glSamplerParameteri(samplers_.compare, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glSamplerParameteri(samplers_.compare, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-  glSamplerParameteri(samplers_.compare, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-  glSamplerParameteri(samplers_.plain, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glSamplerParameteri(samplers_.plain, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glSamplerParameteri(compare_sampler_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glSamplerParameteri(compare_sampler_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(compare_sampler_.get(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glSamplerParameteri(compare_sampler_.get(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glSamplerParameteri(plain_sampler_.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glSamplerParameteri(plain_sampler_.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glObjectLabel(GL_FRAMEBUFFER, fbo_.get(), -1, "shadow map");
 }
 
@@ -145,12 +140,12 @@ void ShadowPass::draw_transmittance(GLuint vao, GLsizei index_count, GLuint albe
 void ShadowPass::bind_textures() const {
   glBindTextureUnit(6, depth_.get());
   glBindTextureUnit(7, depth_.get());
-  glBindSampler(6, samplers_.compare);
-  glBindSampler(7, samplers_.plain);
+  glBindSampler(6, compare_sampler_.get());
+  glBindSampler(7, plain_sampler_.get());
   // Without translucent casters the coloured-shadow units are emptied: llvmpipe specialises
   // shaders on every bound texture, and stale ones slowed every later frame (measured 2x).
   glBindTextureUnit(8, translucent_ ? opaque_depth_.get() : 0);
-  glBindSampler(8, translucent_ ? samplers_.compare : 0);
+  glBindSampler(8, translucent_ ? compare_sampler_.get() : 0);
   glBindTextureUnit(9, translucent_ ? colour_.get() : 0);
 }
 

@@ -45,14 +45,8 @@ class ShadowPass {
   Program program_, transmittance_program_;
   Framebuffer fbo_, opaque_fbo_, colour_fbo_;
   Texture depth_, opaque_depth_, colour_;
-  bool translucent_ = false;  // the opaque and colour maps were drawn this frame
-  struct Samplers {           // GL sampler objects (no RAII type in gl/ for them yet)
-    GLuint compare = 0, plain = 0;
-    Samplers() = default;
-    Samplers(const Samplers&) = delete;
-    Samplers& operator=(const Samplers&) = delete;
-    ~Samplers();
-  } samplers_;
+  bool translucent_ = false;                 // the opaque and colour maps were drawn this frame
+  Sampler compare_sampler_, plain_sampler_;  // PCF's comparing one; a plain one for PCSS
   VertexArray empty_vao_;
   int size_ = 0;
 };
