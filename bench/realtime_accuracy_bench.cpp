@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "sim/core/passive_openmp.hpp"
 #include "bench/suites/lab_scenes.hpp"
+#include "sim/core/passive_openmp.hpp"
 #include "sim/solver.hpp"
 
 namespace clothlab {

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "sim/core/passive_openmp.hpp"
 #include "bench/bench_scenes.hpp"
+#include "sim/core/passive_openmp.hpp"
 #include "sim/solver.hpp"
 
 namespace clothlab {

@@ -15,8 +15,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "sim/core/passive_openmp.hpp"
 #include "bench/bench_scenes.hpp"
+#include "sim/core/passive_openmp.hpp"
 #include "sim/solver_impl.hpp"
 
 namespace clothlab {

@@ -13,8 +13,8 @@
 #include <cmath>
 #include <fstream>
 
-#include "sim/core/passive_openmp.hpp"
 #include "bench/bench_scenes.hpp"
+#include "sim/core/passive_openmp.hpp"
 #include "sim/solver.hpp"
 
 namespace clothlab {

@@ -2,10 +2,10 @@
 
 #include <stdexcept>
 
+#include "gl/gl_error.hpp"
 #include "gpu/gpu_step.hpp"
 #include "sim/scene/parameter_keys.hpp"
 #include "sim/solver_impl.hpp"
-#include "gl/gl_error.hpp"
 
 namespace clothlab::gpu {
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <utility>
 
-#include "sim/forces/wind.hpp"
 #include "gl/gl_error.hpp"
 #include "gl/program.hpp"
+#include "sim/forces/wind.hpp"
 
 namespace clothlab::gpu {
 

@@ -16,10 +16,10 @@
 #include <cstddef>
 #include <vector>
 
+#include "gl/objects.hpp"
 #include "sim/model/model.hpp"
 #include "sim/scene/scene.hpp"
 #include "sim/step_backend.hpp"
-#include "gl/objects.hpp"
 
 namespace clothlab::gpu {
 

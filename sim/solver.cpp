@@ -18,8 +18,8 @@ namespace clothlab {
 namespace {
 
 // solver.threads = 0 ("auto"): one thread below kParallelMinVertices, where a second thread's
-// wake-up and barriers cost more than it computes (docs/results.md, "Threads"), else all cores OpenMP
-// offers. An explicit count is used as given.
+// wake-up and barriers cost more than it computes (docs/results.md, "Threads"), else all cores
+// OpenMP offers. An explicit count is used as given.
 int resolve_threads(int requested, std::size_t vertices) {
   if (requested > 0) return requested;
   return vertices < kParallelMinVertices ? 1 : omp_get_max_threads();

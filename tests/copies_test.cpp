@@ -8,10 +8,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "apps/view/sim_session.hpp"
 #include "sim/cloth/scene_copies.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
-#include "apps/view/sim_session.hpp"
 
 namespace clothlab {
 namespace {

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/view/sim_session.hpp"
 #include "gl_context_fixture.hpp"
 #include "gpu/backend_solver.hpp"
 #include "sim/cloth/scene_copies.hpp"
@@ -21,7 +22,6 @@
 #include "test_scenes.hpp"
 #include "vis/render/headless_renderer.hpp"
 #include "vis/render/view_settings.hpp"
-#include "apps/view/sim_session.hpp"
 
 namespace clothlab {
 namespace {

@@ -1,6 +1,6 @@
-// The parameter table (sim/scene/parameters.hpp): the key table in docs/scene-format.md is its output; every
-// bounded range is enforced with the record's key; every documented default is the struct's;
-// the parser accepts exactly the table's keys.
+// The parameter table (sim/scene/parameters.hpp): the key table in docs/scene-format.md is its
+// output; every bounded range is enforced with the record's key; every documented default is the
+// struct's; the parser accepts exactly the table's keys.
 #include <gtest/gtest.h>
 
 #include <fstream>

@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <string>
 
+#include "apps/view/sim_session.hpp"
 #include "sim/trace/csv_trace.hpp"
 #include "test_scenes.hpp"
-#include "apps/view/sim_session.hpp"
 
 namespace clothlab {
 namespace {

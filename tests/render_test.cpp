@@ -6,12 +6,12 @@
 #include <cmath>
 #include <memory>
 
-#include "sim/solver.hpp"
-#include "test_scenes.hpp"
 #include "gl/gl_error.hpp"
 #include "gl/headless_context.hpp"
 #include "gl/offscreen_target.hpp"
 #include "gl/program.hpp"
+#include "sim/solver.hpp"
+#include "test_scenes.hpp"
 #include "vis/render/renderer.hpp"
 #include "vis/textures/image.hpp"
 

@@ -4,8 +4,8 @@
 #include <iostream>
 
 #include "apps/clothlab/commands.hpp"
-#include "sim/core/passive_openmp.hpp"
 #include "bench/suites/suites.hpp"
+#include "sim/core/passive_openmp.hpp"
 
 namespace clothlab::app {
 

@@ -10,14 +10,14 @@
 #include <vector>
 
 #include "apps/clothlab/commands.hpp"
-#include "sim/core/passive_openmp.hpp"
+#include "apps/view/input.hpp"
 #include "bench/suites/suites.hpp"
+#include "sim/core/passive_openmp.hpp"
 #include "sim/core/temp_files.hpp"
 #include "sim/forces/force_source.hpp"
 #include "sim/scene/scene_error.hpp"
 #include "vis/colormap/colormap.hpp"
 #include "vis/render/scalar_field.hpp"
-#include "apps/view/input.hpp"
 
 namespace {
 

@@ -11,13 +11,13 @@
 
 #include "apps/clothlab/commands.hpp"
 #include "apps/clothlab/progress_bar.hpp"
-#include "sim/core/passive_openmp.hpp"
+#include "gl/gl_error.hpp"
+#include "gl/headless_context.hpp"
 #include "gpu/backend_solver.hpp"
+#include "sim/core/passive_openmp.hpp"
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
 #include "sim/trace/trace_run.hpp"
-#include "gl/gl_error.hpp"
-#include "gl/headless_context.hpp"
 
 namespace clothlab::app {
 

@@ -4,9 +4,9 @@
 #include <exception>
 
 #include "apps/clothlab/commands.hpp"
-#include "sim/scene/scene_parser.hpp"
-#include "gl/gl_error.hpp"
 #include "apps/view/view_app.hpp"
+#include "gl/gl_error.hpp"
+#include "sim/scene/scene_parser.hpp"
 
 namespace clothlab::app {
 

@@ -10,11 +10,11 @@
 #include <filesystem>
 #include <string>
 
-#include "sim/scene/parameter_keys.hpp"
-#include "vis/render/render_quality.hpp"
 #include "apps/view/parameter_editors.hpp"
 #include "apps/view/scene_edit.hpp"
 #include "apps/view/views_panel.hpp"
+#include "sim/scene/parameter_keys.hpp"
+#include "vis/render/render_quality.hpp"
 
 namespace clothlab::vis {
 namespace {

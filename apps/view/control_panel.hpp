@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "vis/render/field_pass.hpp"
-#include "vis/render/view_settings.hpp"
 #include "apps/view/frame_stats.hpp"
 #include "apps/view/input.hpp"
 #include "apps/view/sim_session.hpp"
+#include "vis/render/field_pass.hpp"
+#include "vis/render/view_settings.hpp"
 
 namespace clothlab::vis {
 

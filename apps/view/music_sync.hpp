@@ -8,9 +8,9 @@
 #include <optional>
 #include <string>
 
-#include "music/music_clock.hpp"
 #include "apps/view/audio_playback.hpp"
 #include "apps/view/sim_session.hpp"
+#include "music/music_clock.hpp"
 
 namespace clothlab::vis {
 

@@ -6,9 +6,9 @@
 #include <optional>
 #include <string>
 
+#include "apps/view/control_panel.hpp"
 #include "sim/solver.hpp"
 #include "vis/render/field_pass.hpp"
-#include "apps/view/control_panel.hpp"
 
 namespace clothlab::vis {
 

@@ -5,10 +5,10 @@
 #include <utility>
 #include <vector>
 
+#include "apps/view/scene_edit.hpp"
 #include "sim/cloth/scene_copies.hpp"
 #include "sim/scene/scene_error.hpp"
 #include "sim/scene/validate.hpp"
-#include "apps/view/scene_edit.hpp"
 
 namespace clothlab::vis {
 namespace {

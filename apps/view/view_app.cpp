@@ -10,20 +10,20 @@
 #include <filesystem>
 #include <utility>
 
-#include "gpu/backend_solver.hpp"
-#include "sim/solver.hpp"
-#include "sim/trace/trace_run.hpp"
-#include "gl/gl.hpp"
-#include "gl/offscreen_target.hpp"
-#include "vis/render/diagnostics.hpp"
-#include "vis/render/field_pass.hpp"
-#include "vis/render/render_quality.hpp"
-#include "vis/render/renderer.hpp"
 #include "apps/view/imgui_layer.hpp"
 #include "apps/view/probe_readout.hpp"
 #include "apps/view/scene_edit.hpp"
 #include "apps/view/screenshot.hpp"
 #include "apps/view/views_panel.hpp"
+#include "gl/gl.hpp"
+#include "gl/offscreen_target.hpp"
+#include "gpu/backend_solver.hpp"
+#include "sim/solver.hpp"
+#include "sim/trace/trace_run.hpp"
+#include "vis/render/diagnostics.hpp"
+#include "vis/render/field_pass.hpp"
+#include "vis/render/render_quality.hpp"
+#include "vis/render/renderer.hpp"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 

@@ -10,9 +10,6 @@
 #include <string>
 #include <vector>
 
-#include "sim/realtime/frame_stepper.hpp"
-#include "sim/scene/scene.hpp"
-#include "vis/render/view_settings.hpp"
 #include "apps/view/cloth_grab.hpp"
 #include "apps/view/control_panel.hpp"
 #include "apps/view/frame_stats.hpp"
@@ -21,6 +18,9 @@
 #include "apps/view/music_panel.hpp"
 #include "apps/view/music_sync.hpp"
 #include "apps/view/sim_session.hpp"
+#include "sim/realtime/frame_stepper.hpp"
+#include "sim/scene/scene.hpp"
+#include "vis/render/view_settings.hpp"
 
 namespace clothlab::vis {
 

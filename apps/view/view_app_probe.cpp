@@ -4,13 +4,13 @@
 #include <cstdio>
 #include <utility>
 
+#include "apps/view/probe_readout.hpp"
+#include "apps/view/screenshot.hpp"
+#include "apps/view/view_app.hpp"
 #include "sim/solver.hpp"
 #include "sim/trace/trace_run.hpp"
 #include "vis/render/field_pass.hpp"
 #include "vis/render/renderer.hpp"
-#include "apps/view/probe_readout.hpp"
-#include "apps/view/screenshot.hpp"
-#include "apps/view/view_app.hpp"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 

@@ -16,10 +16,10 @@
 #include "bench/bench_scenes.hpp"
 #include "bench/suites/step_timing.hpp"
 #include "bench/suites/suites.hpp"
+#include "gl/headless_context.hpp"
 #include "gpu/backend_solver.hpp"
 #include "sim/cloth/scene_copies.hpp"
 #include "sim/solver.hpp"
-#include "gl/headless_context.hpp"
 
 namespace clothlab::bench {
 namespace {

@@ -13,9 +13,9 @@
 
 #include "bench/suites/step_timing.hpp"
 #include "bench/suites/suites.hpp"
+#include "gl/gl.hpp"
 #include "load/scene_load.hpp"
 #include "sim/solver.hpp"
-#include "gl/gl.hpp"
 #include "vis/render/headless_renderer.hpp"
 
 namespace clothlab::bench {

@@ -14,10 +14,10 @@
 #include <stdexcept>
 
 #include "bench/suites/suites.hpp"
+#include "gl/gl.hpp"
 #include "load/scene_load.hpp"
 #include "sim/scene/validate.hpp"
 #include "sim/solver.hpp"
-#include "gl/gl.hpp"
 #include "vis/render/headless_renderer.hpp"
 
 namespace clothlab::bench {

@@ -13,7 +13,8 @@ inline constexpr std::size_t kBlockSize = 512;
 
 // solver.threads = 0 runs one thread on scenes with fewer vertices: below it a second thread
 // gains at most 1.2-1.4x on an idle host and loses several times over beside one busy process
-// (measured with the programs' short spin then passive wait; docs/results.md "Threads", docs/design.md).
+// (measured with the programs' short spin then passive wait; docs/results.md "Threads",
+// docs/design.md).
 inline constexpr std::size_t kParallelMinVertices = 8192;
 
 inline std::size_t block_count(std::size_t n) {

@@ -19,8 +19,8 @@
 
 namespace clothlab {
 
-// Measured on the scaling sheet, 2 threads, idle host (docs/results.md "Threads"): 100 spins were no better
-// than none, 1000 and 3000 alike fast; beside a busy process 1000 lost less.
+// Measured on the scaling sheet, 2 threads, idle host (docs/results.md "Threads"): 100 spins were
+// no better than none, 1000 and 3000 alike fast; beside a busy process 1000 lost less.
 inline constexpr const char* kOpenMPSpinCount = "1000";
 
 // Re-executes the program with OMP_WAIT_POLICY=passive and GOMP_SPINCOUNT=kOpenMPSpinCount

@@ -217,7 +217,8 @@ std::vector<Parameter> dynamics() {
                              .ui = between(0.0, 1.0),
                              .description = "linear drag per vertex, F = -drag v"}),
       table_row<&ForceSpec::wind, S::wind>(
-          {.name = "wind", .description = "gusty wind on the surface normal (docs/scene-format.md \"Wind\")"}),
+          {.name = "wind",
+           .description = "gusty wind on the surface normal (docs/scene-format.md \"Wind\")"}),
       row<&WindSpec::velocity>({.name = "velocity",
                                 .unit = "m/s",
                                 .description = "the mean wind W",

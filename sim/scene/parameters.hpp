@@ -1,8 +1,9 @@
 // The scene's parameter table: one record per scene-file key (its path, type, range, unit,
 // default, group, panel widget and a one-line description). The parser reads every key through
 // it, validate_scene checks its ranges, the window's panel builds its editors from it and
-// `clothlab params` prints it (the key table in docs/scene-format.md is that output). A new parameter is one
-// record in parameters.cpp plus its member in the Scene's structs. See docs/scene-format.md.
+// `clothlab params` prints it (the key table in docs/scene-format.md is that output). A new
+// parameter is one record in parameters.cpp plus its member in the Scene's structs. See
+// docs/scene-format.md.
 #pragma once
 
 #include <limits>

@@ -2,8 +2,8 @@
 // 8).
 #pragma once
 
-#include "vis/colormap/colormap.hpp"
 #include "gl/objects.hpp"
+#include "vis/colormap/colormap.hpp"
 
 namespace clothlab::vis {
 

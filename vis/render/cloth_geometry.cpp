@@ -5,10 +5,10 @@
 #include <cstdint>
 #include <stdexcept>
 
-#include "sim/solver.hpp"
-#include "sim/step_backend.hpp"
 #include "gl/program.hpp"
 #include "gl/uploads.hpp"
+#include "sim/solver.hpp"
+#include "sim/step_backend.hpp"
 #include "vis/render/quantile.hpp"
 #include "vis/textures/cloth_tangents.hpp"
 

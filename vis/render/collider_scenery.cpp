@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim/solver.hpp"
 #include "gl/program.hpp"
+#include "sim/solver.hpp"
 #include "vis/meshes/mesh.hpp"
 #include "vis/meshes/obj_mesh.hpp"
 #include "vis/meshes/shapes.hpp"

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "sim/contact/collider.hpp"
-#include "sim/scene/collider_spec.hpp"
 #include "gl/objects.hpp"
 #include "gl/program_variants.hpp"
+#include "sim/contact/collider.hpp"
+#include "sim/scene/collider_spec.hpp"
 #include "vis/render/gpu_mesh.hpp"
 
 namespace clothlab {

@@ -6,9 +6,9 @@
 #include <string>
 #include <utility>
 
-#include "sim/solver.hpp"
 #include "gl/program.hpp"
 #include "gl/uploads.hpp"
+#include "sim/solver.hpp"
 #include "vis/render/renderer.hpp"
 
 namespace clothlab::vis {

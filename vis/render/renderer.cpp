@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
+#include "gl/program.hpp"
 #include "sim/solver.hpp"
 #include "vis/colormap/colormap_texture.hpp"
-#include "gl/program.hpp"
 #include "vis/passes/diffusion_pass.hpp"
 #include "vis/passes/shadow_pass.hpp"
 #include "vis/passes/sky_pass.hpp"

@@ -12,10 +12,10 @@
 #include <optional>
 #include <string>
 
-#include "sim/model/model.hpp"
-#include "sim/scene/collider_spec.hpp"
 #include "gl/objects.hpp"
 #include "gl/pass_timer.hpp"
+#include "sim/model/model.hpp"
+#include "sim/scene/collider_spec.hpp"
 #include "vis/passes/cloth_pass.hpp"
 #include "vis/passes/floor_pass.hpp"
 #include "vis/passes/springs_pass.hpp"

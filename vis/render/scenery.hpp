@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "sim/scene/render_spec.hpp"
 #include "gl/objects.hpp"
 #include "gl/program_variants.hpp"
+#include "sim/scene/render_spec.hpp"
 #include "vis/render/gpu_mesh.hpp"
 
 namespace clothlab {
