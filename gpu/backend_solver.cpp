@@ -2,7 +2,6 @@
 
 #include <stdexcept>
 
-#include "gl/gl_error.hpp"
 #include "gpu/gpu_step.hpp"
 #include "sim/scene/parameter_keys.hpp"
 #include "sim/solver_impl.hpp"
@@ -29,21 +28,6 @@ std::unique_ptr<Solver> make_gpu_solver(const Scene& scene) {
 std::string cpu_fallback_note(const std::string& why) {
   const Parameter& backend = *find_parameter(Section::solver, key_of<&SolverSpec::backend>());
   return parameter_path(backend) + " = \"gpu\": " + why + "; the cloth steps on the CPU";
-}
-
-std::unique_ptr<Solver> make_backend_solver(const Scene& scene, std::string& note) {
-  note.clear();
-  if (scene.solver.backend != Backend::gpu) return make_solver(scene);
-  std::string why = gpu_unsupported_reason(scene);
-  if (why.empty()) {
-    try {
-      return make_gpu_solver(scene);
-    } catch (const vis::GlUnavailable& e) {
-      why = e.what();
-    }
-  }
-  note = cpu_fallback_note(why);
-  return make_solver(scene);
 }
 
 }  // namespace clothlab::gpu

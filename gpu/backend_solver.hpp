@@ -25,9 +25,4 @@ std::unique_ptr<Solver> make_gpu_solver(const Scene& scene);
 // The line said when solver.backend = "gpu" cannot be honoured for reason `why`.
 std::string cpu_fallback_note(const std::string& why);
 
-// The solver for `scene`: on the GPU when scene.solver.backend is gpu and the scene and the
-// current GL context allow it, else the CPU solver, with `note` set to one line saying why the
-// GPU was not used (left empty otherwise). Needs a current GL context when backend is gpu.
-std::unique_ptr<Solver> make_backend_solver(const Scene& scene, std::string& note);
-
 }  // namespace clothlab::gpu

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "apps/view/sim_session.hpp"
+#include "factory/solver_factory.hpp"
 #include "gl_context_fixture.hpp"
 #include "gpu/backend_solver.hpp"
 #include "sim/cloth/scene_copies.hpp"
@@ -227,26 +228,26 @@ TEST_F(GpuSolverTest, DropOntoASphereFollowsTheCpu) {
 TEST_F(GpuSolverTest, ScenesTheGpuCannotRunStayOnTheCpuWithAReason) {
   std::string note;
   Scene scene = hanging(IntegratorKind::symplectic_euler);
-  EXPECT_EQ(gpu::make_backend_solver(scene, note)->device_cloth(), nullptr);
+  EXPECT_EQ(make_backend_solver(scene, note)->device_cloth(), nullptr);
   EXPECT_EQ(note, "");
   scene.solver.backend = Backend::gpu;
-  EXPECT_NE(gpu::make_backend_solver(scene, note)->device_cloth(), nullptr);
+  EXPECT_NE(make_backend_solver(scene, note)->device_cloth(), nullptr);
   EXPECT_EQ(note, "");
   scene.solver.integrator = IntegratorKind::rk4;
-  EXPECT_EQ(gpu::make_backend_solver(scene, note)->device_cloth(), nullptr);
+  EXPECT_EQ(make_backend_solver(scene, note)->device_cloth(), nullptr);
   EXPECT_EQ(note,
             "solver.backend = \"gpu\": the GPU step runs symplectic_euler and verlet, not rk4; the "
             "cloth steps on the CPU");
   scene.solver.integrator = IntegratorKind::verlet;
   scene.solver.precision = Precision::f64;
-  EXPECT_EQ(gpu::make_backend_solver(scene, note)->device_cloth(), nullptr);
+  EXPECT_EQ(make_backend_solver(scene, note)->device_cloth(), nullptr);
   EXPECT_NE(note.find("float, not double"), std::string::npos);
 }
 
 // The panel's CPU / GPU switch (SimSession::apply_dynamics with the window's factory) carries the
 // running motion over, both ways; a choice the GPU cannot run stays on the CPU with the reason.
 TEST_F(GpuSolverTest, PanelSwitchCarriesTheMotionOver) {
-  vis::SimSession session(windy(IntegratorKind::symplectic_euler), gpu::make_backend_solver);
+  vis::SimSession session(windy(IntegratorKind::symplectic_euler), make_backend_solver);
   const FrameStepper stepper;
   for (int f = 0; f < 5; ++f) session.advance(stepper, 1.0 / 60.0);
   const double t = session.solver().time();

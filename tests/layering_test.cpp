@@ -1,6 +1,7 @@
 // The folders' includes point down the data flow (docs/design.md, "Layout"): sim/ (physics) <-
-// gl/ (the GL foundation) <- gpu/ (the GPU step) and vis/ (the renderer) <- bench/ <- apps/,
-// with music/ and load/ (the files a scene names) on sim/. A file may include its own folder and
+// gl/ (the GL foundation) <- gpu/ (the GPU step) <- factory/ (the solver factory), and vis/ (the
+// renderer) on sim/ and gl/, <- bench/ <- apps/, with music/ and load/ (the files a scene names)
+// on sim/. A file may include its own folder and
 // the folders below it, never one beside or above it.
 #include <gtest/gtest.h>
 
@@ -24,9 +25,10 @@ const std::map<std::string, std::set<std::string>>& allowed() {
       {"load", {"sim", "music"}},
       {"gl", {}},
       {"gpu", {"sim", "gl"}},
+      {"factory", {"sim", "gl", "gpu"}},
       {"vis", {"sim", "gl"}},
-      {"bench", {"sim", "music", "load", "gl", "gpu", "vis"}},
-      {"apps", {"sim", "music", "load", "gl", "gpu", "vis", "bench"}},
+      {"bench", {"sim", "music", "load", "gl", "gpu", "factory", "vis"}},
+      {"apps", {"sim", "music", "load", "gl", "gpu", "factory", "vis", "bench"}},
   };
   return table;
 }

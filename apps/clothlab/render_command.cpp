@@ -10,8 +10,8 @@
 #include "apps/clothlab/commands.hpp"
 #include "apps/clothlab/progress_bar.hpp"
 #include "apps/clothlab/video_pipe.hpp"
+#include "factory/solver_factory.hpp"
 #include "gl/gl_error.hpp"
-#include "gpu/backend_solver.hpp"
 #include "music/music_track.hpp"
 #include "sim/cloth/scene_copies.hpp"
 #include "sim/scene/scene_parser.hpp"
@@ -175,7 +175,7 @@ int render_scene(const RenderArgs& args, Scene& scene) {
     scene = with_copies(scene, args.copies, copy_spacing(scene));
   }
   std::string backend_note;
-  const auto solver = gpu::make_backend_solver(scene, backend_note);
+  const auto solver = make_backend_solver(scene, backend_note);
   if (!backend_note.empty()) std::printf("clothlab render: %s\n", backend_note.c_str());
   renderer.set_cloth(*solver);
   renderer.set_scene(scene.render, *solver, scene.colliders);

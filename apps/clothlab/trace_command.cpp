@@ -11,9 +11,7 @@
 
 #include "apps/clothlab/commands.hpp"
 #include "apps/clothlab/progress_bar.hpp"
-#include "gl/gl_error.hpp"
-#include "gl/headless_context.hpp"
-#include "gpu/backend_solver.hpp"
+#include "factory/solver_factory.hpp"
 #include "sim/core/passive_openmp.hpp"
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
@@ -119,21 +117,10 @@ long step_count(const TraceArgs& args, const Scene& scene, double dt) {
 
 // The scene's solver; solver.backend = "gpu" steps the cloth in a headless GL context of its
 // own (`context`), and without one on the CPU, saying why.
-std::unique_ptr<Solver> make_trace_solver(Scene& scene,
-                                          std::optional<vis::HeadlessContext>& context) {
-  std::string no_context;
-  if (scene.solver.backend == Backend::gpu) {
-    try {
-      context.emplace();
-    } catch (const vis::GlUnavailable& e) {
-      no_context = gpu::cpu_fallback_note(e.what());
-      scene.solver.backend = Backend::cpu;
-    }
-  }
-  std::string backend_note;
-  auto solver = gpu::make_backend_solver(scene, backend_note);
-  if (backend_note.empty()) backend_note = no_context;
-  if (!backend_note.empty()) std::printf("clothlab trace: %s\n", backend_note.c_str());
+std::unique_ptr<Solver> make_trace_solver(const Scene& scene, GlContextHandle& context) {
+  std::string note;
+  auto solver = make_headless_backend_solver(scene, context, note);
+  if (!note.empty()) std::printf("clothlab trace: %s\n", note.c_str());
   return solver;
 }
 
@@ -191,7 +178,7 @@ int run_trace_command(const TraceArgs& args) {
   std::optional<Scene> loaded = load_scene("trace", args.scene, args.overrides);
   if (!loaded) return kBadInput;
   Scene& scene = *loaded;
-  std::optional<vis::HeadlessContext> context;
+  GlContextHandle context;
   const auto solver = make_trace_solver(scene, context);
   const TraceSpec spec = scene.trace ? *scene.trace : default_trace(scene);
   const bool doubles = scene.solver.precision == Precision::f64;

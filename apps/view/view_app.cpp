@@ -15,9 +15,9 @@
 #include "apps/view/scene_edit.hpp"
 #include "apps/view/screenshot.hpp"
 #include "apps/view/views_panel.hpp"
+#include "factory/solver_factory.hpp"
 #include "gl/gl.hpp"
 #include "gl/offscreen_target.hpp"
-#include "gpu/backend_solver.hpp"
 #include "sim/solver.hpp"
 #include "sim/trace/trace_run.hpp"
 #include "vis/render/diagnostics.hpp"
@@ -45,7 +45,7 @@ ViewApp& app_of(GLFWwindow* window) {
 ViewApp::ViewApp(Scene scene, ViewHooks hooks)
     : scene_name_(std::filesystem::path(scene.file).filename().string()),
       window_("ClothLab — " + scene_name_, kInitialWidth, kInitialHeight),
-      session_(std::move(scene), gpu::make_backend_solver),
+      session_(std::move(scene), make_backend_solver),
       hooks_(std::move(hooks)),
       music_(hooks_.no_audio),
       renderer_(std::make_unique<Renderer>()),
