@@ -114,6 +114,8 @@ TEST(AutoStep, XpbdSubstepsFollowTheLongestSide) {
   EXPECT_EQ(auto_substeps(K::xpbd, 1.0 / 120.0, 256), 13);
   EXPECT_EQ(auto_substeps(K::xpbd, 1e-4, 32), 1);
   EXPECT_EQ(auto_substeps(K::xpbd, 1e9, 32), kXpbdMaxSubsteps);
+  EXPECT_EQ(auto_substeps(K::xpbd, 0.0166667, 32), 10);  // 1/60 s written to six digits
+  EXPECT_EQ(auto_substeps(K::xpbd, 0.0167, 32), 11);
   EXPECT_EQ(auto_substeps(K::vbd, 1.0 / 60.0, 256), 1);
   EXPECT_EQ(auto_substeps(K::symplectic_euler, 1e-3, 256), 1);
   Scene scene = testing::falling_sheet(16, K::xpbd, 1.0 / 60.0);

@@ -155,8 +155,9 @@ int auto_substeps(IntegratorKind kind, double dt, int longest_side) {
   if (kind != IntegratorKind::xpbd) return 1;
   const double per_frame =
       std::max<double>(kXpbdMinSubsteps, std::ceil(double(longest_side) / kXpbdSideVertices));
-  // In double and clamped before the conversion: dt may be any positive number.
-  return static_cast<int>(std::clamp(std::ceil(dt / kDisplayStep * per_frame * (1.0 - 1e-9)), 1.0,
+  // In double and clamped before the conversion: dt may be any positive number. A step written
+  // with a few digits (0.0166667) is 1/60 s: 1e-4 of slack before rounding up, else it took 11.
+  return static_cast<int>(std::clamp(std::ceil(dt / kDisplayStep * per_frame * (1.0 - 1e-4)), 1.0,
                                      double(kXpbdMaxSubsteps)));
 }
 
