@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "apps/clothlab/commands.hpp"
+#include "apps/clothlab/output_path.hpp"
 #include "apps/view/input.hpp"
 #include "bench/suites/suites.hpp"
 #include "sim/core/passive_openmp.hpp"
@@ -49,7 +50,7 @@ CLI::App* add_trace(CLI::App& app, TraceArgs& trace) {
                        : std::string("must be a finite number in (0, 1e6] seconds");
           },
           "SECONDS"));
-  trace_cmd->add_option("--out", trace.out, "CSV file to write")->required();
+  trace_cmd->add_option("--out", trace.out, "CSV file to write")->required()->check(output_file());
 
   return trace_cmd;
 }
@@ -193,13 +194,19 @@ CLI::App* add_render(CLI::App& app, RenderCli& cli) {
   render_cmd->add_option("--fps", render.fps, "frames per simulated second")
       ->capture_default_str()
       ->check(between(1.0, 10000.0));
-  render_cmd->add_option("--out", render.out,
-                         "directory for the numbered PNGs (at least one of --out and --video)");
-  render_cmd->add_option("--video", render.video,
-                         "an MP4 through Debian's ffmpeg: the frames go straight to it, and to "
-                         "PNGs only with --out as well");
-  render_cmd->add_option("--music-out", render.music_out,
-                         "also write the scene's [music] (e.g. its generated drum track) as WAV");
+  render_cmd
+      ->add_option("--out", render.out,
+                   "directory for the numbered PNGs (at least one of --out and --video)")
+      ->check(output_file_or_directory());
+  render_cmd
+      ->add_option("--video", render.video,
+                   "an MP4 through Debian's ffmpeg: the frames go straight to it, and to PNGs "
+                   "only with --out as well")
+      ->check(output_file());
+  render_cmd
+      ->add_option("--music-out", render.music_out,
+                   "also write the scene's [music] (e.g. its generated drum track) as WAV")
+      ->check(output_file());
   render_cmd->add_flag("--quiet", render.quiet, "no progress bar");
   render_cmd
       ->add_option(
@@ -279,8 +286,10 @@ CLI::App* add_bench(CLI::App& app, BenchArgs& bench) {
   bench_cmd->add_option("--suite", bench.suite, listed + "or all")
       ->capture_default_str()
       ->check(CLI::IsMember(suites));
-  bench_cmd->add_option("--out", bench.out,
-                        "CSV file (one suite) or directory (all); default out/bench/SUITE.csv");
+  bench_cmd
+      ->add_option("--out", bench.out,
+                   "CSV file (one suite) or directory (all); default out/bench/SUITE.csv")
+      ->check(output_file_or_directory());
   bench_cmd->add_flag("--quick", bench.quick,
                       "reduced sweeps in seconds instead of minutes: smaller grids, fewer "
                       "stiffnesses, rounds and frames, shorter horizons (the tables say which)");
