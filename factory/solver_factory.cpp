@@ -31,7 +31,9 @@ std::unique_ptr<Solver> make_backend_solver(const Scene& scene, std::string& not
 
 std::unique_ptr<Solver> make_headless_backend_solver(const Scene& scene, GlContextHandle& context,
                                                      std::string& note) {
-  if (scene.solver.backend == Backend::gpu && !context) {
+  // A context only where the GPU could run the scene; else make_backend_solver says why not.
+  if (scene.solver.backend == Backend::gpu && gpu::gpu_unsupported_reason(scene).empty() &&
+      !context) {
     try {
       context.reset(new OwnedGlContext{});
     } catch (const vis::GlUnavailable& e) {

@@ -102,8 +102,14 @@ TEST_F(OutputPaths, RenderAndBenchRefuseThemToo) {
 }
 
 // The check is not a blanket refusal: a regular file is overwritten (through a temporary file
-// renamed over it) and a new name in the directory is created.
-TEST_F(OutputPaths, TraceWritesARegularFileAndANewOne) {
+// renamed over it), a new name in the directory is created, and a link to a directory is taken
+// where a directory is (render's frames go inside it).
+TEST_F(OutputPaths, TraceWritesARegularFileAndANewOneRenderALinkedDirectory) {
+  fs::create_directory_symlink("folder", dir_ / "frames");
+  const Outcome r =
+      clothlab(dir_, "render " + scene_ + " --frames 1 --size 64x64 --quiet --out frames");
+  EXPECT_EQ(r.rc, 0) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(dir_ / "folder/frame_00000.png"));
   EXPECT_EQ(clothlab(dir_, "trace " + scene_ + " --duration 0.01 --out real.csv").rc, 0);
   EXPECT_EQ(clothlab(dir_, "trace " + scene_ + " --duration 0.01 --out folder/new.csv").rc, 0);
   std::ifstream in(dir_ / "real.csv");

@@ -8,6 +8,11 @@ std::string output_path_problem(const std::string& path, bool directory_ok) {
   if (path.empty()) return "an empty path names no file";
   struct stat st {};
   if (::lstat(path.c_str(), &st) != 0) return {};  // nothing there yet: written and renamed
+  // A link to a directory is fine where a directory is: files are written inside it.
+  struct stat target {};
+  if (S_ISLNK(st.st_mode) && directory_ok && ::stat(path.c_str(), &target) == 0 &&
+      S_ISDIR(target.st_mode))
+    return {};
   if (S_ISLNK(st.st_mode))
     return "'" + path + "' is a symbolic link, which the finished file would replace; name the " +
            "file it points to";

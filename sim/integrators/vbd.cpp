@@ -181,15 +181,8 @@ class Vbd final : public Integrator<T> {
       const T w = weight_[k] + h * drag_;
       T* xi = x + 4 * i;
       const T dix = xi[0] - x0[4 * i], diy = xi[1] - x0[4 * i + 1], diz = xi[2] - x0[4 * i + 2];
-      VbdBlock<T> blk{w * (xi[0] - target[4 * i]),
-                      w * (xi[1] - target[4 * i + 1]),
-                      w * (xi[2] - target[4 * i + 2]),
-                      w,
-                      0,
-                      0,
-                      w,
-                      0,
-                      w};
+      VbdBlock<T> blk = vbd_inertia(w, xi[0] - target[4 * i], xi[1] - target[4 * i + 1],
+                                    xi[2] - target[4 * i + 2]);
       for (auto q = static_cast<std::size_t>(link_start_[k]);
            q < static_cast<std::size_t>(link_start_[k + 1]); ++q) {
         const auto j = static_cast<std::size_t>(other_[q]);

@@ -65,6 +65,12 @@ struct VbdBlock {
   T gx, gy, gz, hxx, hxy, hxz, hyy, hyz, hzz;
 };
 
+// The block's inertial term: g = w (x - t) from (dx, dy, dz) = x - t, and H = w I.
+template <class T>
+[[gnu::always_inline]] inline VbdBlock<T> vbd_inertia(T w, T dx, T dy, T dz) {
+  return {w * dx, w * dy, w * dz, w, T(0), T(0), w, T(0), w};
+}
+
 // Adds one spring to the block of its end i (vbd.cpp's header): (ex, ey, ez) = x_j - x_i,
 // (rx, ry, rz) = dx_i - dx_j, kh2 = h^2 k, ch = h c. A spring of no length has no direction and
 // adds only its isotropic stiffness. Branch-free, so the grid path's loops vectorise.

@@ -212,7 +212,7 @@ class VbdGrid final : public Integrator<T> {
 #pragma omp simd
     for (int l = 0; l < kChunk; ++l) {
       const T w = mass[l] + drag_h;
-      k.store(l, {w * (x[l] - tx[l]), w * (y[l] - ty[l]), w * (z[l] - tz[l]), w, 0, 0, w, 0, w});
+      k.store(l, vbd_inertia(w, x[l] - tx[l], y[l] - ty[l], z[l] - tz[l]));
       k.dx[l] = x[l] - sx[l], k.dy[l] = y[l] - sy[l], k.dz[l] = z[l] - sz[l];
     }
   }
