@@ -3,6 +3,7 @@
 // see it as outside), the same drop on an OBJ cube and on a box collider, and the scene errors
 // for a missing, malformed or empty OBJ file.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cmath>
 #include <filesystem>
@@ -149,9 +150,19 @@ TEST_F(MeshCollider, BadObjFilesAreSceneErrors) {
   struct Case {
     std::string file, says;
   };
+  // An index beyond int range: tinyobjloader alone wrapped 4294967297 to 1 and took the face.
+  const std::string wrapped = write("wrap.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 4294967297 2 3\n");
+  const std::string zero = write("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1 2//2 0\n");
+  const std::string pipe = (dir_ / "pipe.obj").string();
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0644), 0);  // reading it would block: refused by its kind
   const Case cases[] = {{(dir_ / "missing.obj").string(), "no such OBJ file"},
+                        {dir_.string(), "a directory, not an OBJ file"},
+                        {pipe, "a device, pipe or socket, not an OBJ file"},
+                        {"/dev/zero", "a device, pipe or socket, not an OBJ file"},
                         {empty, "has no faces"},
-                        {bad_index, "bad.obj"}};
+                        {bad_index, "bad.obj"},
+                        {wrapped, "wrap.obj: line 4: face corner \"4294967297\" has index"},
+                        {zero, "zero.obj: line 4: face corner \"0\" has index 0"}};
   for (const Case& c : cases) {
     const std::string text =
         "[cloth]\nresolution = [4, 4]\n\n[[colliders]]\ntype = \"mesh\"\nfile = \"" + c.file +

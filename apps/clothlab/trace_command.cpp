@@ -136,13 +136,12 @@ void print_summary(const TraceArgs& args, const Scene& scene, const Solver& solv
   std::printf(
       "trace: %.6g s simulated in %ld steps of %g s%s%s, %.4g ms/step (%s, %s, %s, %d thread(s), "
       "%s, %zu vertices), final energy %.6g J (kinetic %.4g, elastic %.4g, gravity %.6g); "
-      "wrote %s "
-      "(%ld steps)\n",
+      "wrote %s (%ld of the steps)\n",
       r.simulated_time, r.steps, solver.dt(), scene.solver.dt_auto ? " (auto)" : "", substeps,
       ms_per_step, to_string(scene.solver.integrator), doubles ? "double" : "float",
       backend_name(solver), solver.threads(), openmp_wait_policy().c_str(), solver.vertex_count(),
       r.final_energy.total(), r.final_energy.kinetic, r.final_energy.elastic,
-      r.final_energy.gravity, args.out.c_str(), r.rows);
+      r.final_energy.gravity, args.out.c_str(), r.written_steps);
   const SolveTotals& t = solver.solve_totals();
   if (t.iterations > 0)
     std::printf(

@@ -1,5 +1,7 @@
 #include "sim/mesh/obj_scan.hpp"
 
+#include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -19,6 +21,28 @@ std::string coordinate_problem(const std::string& token) {
   if (!std::isfinite(x)) return "\"" + token + "\" is not finite";
   if (std::abs(x) > std::numeric_limits<float>::max())
     return token + " is beyond the largest float (3.4e+38)";
+  return "";
+}
+
+// The problem with one face corner ("v", "v/vt", "v//vn", "v/vt/vn"), or "" when each index it
+// gives is a non-zero integer within int range (OBJ counts from 1; negative counts back).
+// tinyobjloader reads indices into an int without a range check: 4294967297 wrapped to 1.
+std::string corner_problem(const std::string& corner) {
+  std::size_t at = 0;
+  for (int field = 0; at <= corner.size(); ++field) {
+    const std::size_t slash = std::min(corner.find('/', at), corner.size());
+    const std::string index = corner.substr(at, slash - at);
+    at = slash + 1;
+    if (index.empty() && field > 0) continue;  // "v//vn": no texture index
+    char* end = nullptr;
+    errno = 0;
+    const long long i = std::strtoll(index.c_str(), &end, 10);
+    if (index.empty() || *end != '\0') return "\"" + corner + "\" is not a face corner";
+    if (errno == ERANGE || i == 0 || i > std::numeric_limits<int>::max() ||
+        i < -std::numeric_limits<int>::max())
+      return "\"" + corner + "\" has index " + index +
+             ", outside 1..2147483647 (or -1..-2147483647 from the end)";
+  }
   return "";
 }
 
@@ -45,7 +69,12 @@ ObjScan scan_obj(const std::string& path) {
     if (!(words >> word)) continue;
     if (word == "f") {
       int corners = 0;
-      while (words >> token) ++corners;
+      while (words >> token) {
+        ++corners;
+        const std::string problem = corner_problem(token);
+        if (!problem.empty())
+          throw ObjError(path + ": line " + std::to_string(number) + ": face corner " + problem);
+      }
       scan.face_lines.push_back(number);
       scan.face_corners.push_back(corners);
       continue;

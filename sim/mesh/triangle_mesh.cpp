@@ -12,7 +12,11 @@ namespace clothlab {
 
 TriangleMesh load_obj(const std::string& path, double scale) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw ObjError(path + ": no such OBJ file");
+  const std::filesystem::file_status st = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(st)) throw ObjError(path + ": no such OBJ file");
+  if (std::filesystem::is_directory(st)) throw ObjError(path + ": a directory, not an OBJ file");
+  if (!std::filesystem::is_regular_file(st))
+    throw ObjError(path + ": a device, pipe or socket, not an OBJ file");
   if (!std::ifstream(path)) throw ObjError(path + ": cannot open OBJ file");
   const ObjScan scan = scan_obj(path);
   tinyobj::ObjReaderConfig config;

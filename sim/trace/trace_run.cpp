@@ -50,7 +50,7 @@ TraceRunResult run_trace(Solver& solver, const TraceSpec& spec, bool multi_cloth
   TraceRunResult r;
   TraceWriter writer(out_path, spec, multi_cloth, double_digits);
   writer.write_step(solver);
-  ++r.rows;
+  ++r.written_steps;
   Clock::duration stepping{};
   long next_row = std::min<long>(spec.every, total);
   while (r.steps < total && row_is_finite(writer, solver, r)) {
@@ -72,7 +72,7 @@ TraceRunResult run_trace(Solver& solver, const TraceSpec& spec, bool multi_cloth
     }
     if (r.steps < next_row) continue;
     writer.write_step(solver);
-    ++r.rows;
+    ++r.written_steps;
     next_row = std::min<long>(next_row + spec.every, total);
   }
   if (!r.divergence && !r.stopped) row_is_finite(writer, solver, r);

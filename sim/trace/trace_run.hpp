@@ -13,7 +13,7 @@ struct TraceRunResult {
   long steps = 0;
   double simulated_time = 0.0;  // s
   double step_seconds = 0.0;    // wall-clock seconds spent in steps (file output excluded)
-  long rows = 0;
+  long written_steps = 0;       // steps written to the file (step 0, every `every`-th, the last)
   Energy final_energy;
   std::optional<Divergence> divergence;  // set: no file was written
   bool stopped = false;                  // the progress callback asked to stop: no file written
