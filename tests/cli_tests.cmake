@@ -130,9 +130,16 @@ clothlab_cli_test(trace.out_in_missing_directory 2
   "clothlab trace: --out: cannot write '/nonexistent_dir/t\\.csv': no such directory \\('/nonexistent_dir'\\)"
   trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.1 --out /nonexistent_dir/t.csv)
 clothlab_cli_test(trace.diverges 1
-  "diverged at step [0-9]+ \\(t = [0-9.e-]+ s\\): vertex \\(cloth 0, i [0-9]+, j [0-9]+\\), .*replay with: clothlab trace .*--set 'solver.dt=0.002'"
+  "diverged at step [0-9]+ \\(t = [0-9.e-]+ s\\): vertex \\(cloth 0, i [0-9]+, j [0-9]+\\), .*replay with: clothlab trace .*--set 'solver.dt=0.002'.*a step of 0\\.002 s is above symplectic_euler's stability limit on this scene \\(0\\.000786 s\\); solver\\.dt = \"auto\" takes 0\\.00062 s"
   trace ${CLOTHLAB_DEFAULT_SCENE} --duration 1 --out ${CLOTHLAB_TRACE_OUT}/diverged.csv
   --set solver.dt=0.002)
+# check knows the explicit methods' limits: a fixed step above one is valid input (exit 0) but
+# said, with dt = "auto"'s step; below it nothing is said.
+clothlab_cli_test(check.step_above_the_limit 0
+  "default\\.toml: warning: a step of 0\\.01 s is above symplectic_euler's stability limit on this scene \\(0\\.000786 s\\); solver\\.dt = \"auto\" takes 0\\.00062 s"
+  check ${CLOTHLAB_DEFAULT_SCENE} --set solver.dt=0.01)
+clothlab_cli_test(check.step_below_the_limit 0 "dt = 0\\.0005 s\\)[^a-z]*$"
+  check ${CLOTHLAB_DEFAULT_SCENE} --set solver.dt=0.0005)
 # Every explicit method run at 10x its stable step on the default scene (limits from
 # `clothlab bench --suite stability`'s theory for this scene: explicit Euler 1.05e-4 s, symplectic
 # Euler 6.26e-4, seed_hack 4.62e-4, verlet 5.43e-4, rk4 1.07e-3) is caught: exit 1, a message

@@ -4,6 +4,7 @@
 #include "sim/scene/parameters.hpp"
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
+#include "sim/stability/step_advice.hpp"
 
 namespace clothlab::app {
 
@@ -19,6 +20,11 @@ int run_check(const CheckArgs& args) {
               args.scene.c_str(), scene->cloths.size(), solver->vertex_count(),
               solver->spring_count(), to_string(scene->solver.integrator), solver->dt(),
               scene->solver.dt_auto ? " (auto)" : "", substeps);
+  // The scene is valid, but a fixed step above an explicit method's limit will diverge: said
+  // here, before a run finds it out.
+  if (const auto advice = step_advice(*scene); advice && advice->above())
+    std::printf("%s: warning: %s\n", args.scene.c_str(),
+                step_advice_line(*advice, scene->solver.integrator).c_str());
   return 0;
 }
 

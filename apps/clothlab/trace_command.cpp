@@ -15,6 +15,7 @@
 #include "sim/core/passive_openmp.hpp"
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
+#include "sim/stability/step_advice.hpp"
 #include "sim/trace/trace_run.hpp"
 
 namespace clothlab::app {
@@ -152,8 +153,8 @@ void print_summary(const TraceArgs& args, const Scene& scene, const Solver& solv
 
 // The exit status of a run that did not finish: refused as too long (2, with the estimate) or
 // diverged (1, with the replay command).
-int unfinished(const TraceArgs& args, const Solver& solver, const TraceRunResult& r, long total,
-               const TraceWatch& watch) {
+int unfinished(const TraceArgs& args, const Scene& scene, const Solver& solver,
+               const TraceRunResult& r, long total, const TraceWatch& watch) {
   if (r.stopped) {
     std::fprintf(stderr,
                  "clothlab trace: %ld steps of %g s would take about %s here (%.3g ms/step over "
@@ -167,6 +168,8 @@ int unfinished(const TraceArgs& args, const Solver& solver, const TraceRunResult
   std::fprintf(stderr, "clothlab trace: %s\n  no trace written; replay with: %s\n",
                r.divergence->message().c_str(),
                replay_command(args.scene, args.overrides, r.divergence->time).c_str());
+  if (const auto advice = step_advice(scene); advice && advice->above())
+    std::fprintf(stderr, "  %s\n", step_advice_line(*advice, scene.solver.integrator).c_str());
   return 1;
 }
 
@@ -191,7 +194,7 @@ int run_trace_command(const TraceArgs& args) {
     std::fprintf(stderr, "clothlab trace: %s\n", e.what());
     return 1;
   }
-  if (r.stopped || r.divergence) return unfinished(args, *solver, r, total, watch);
+  if (r.stopped || r.divergence) return unfinished(args, scene, *solver, r, total, watch);
   print_summary(args, scene, *solver, r);
   return 0;
 }
