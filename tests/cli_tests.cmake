@@ -138,6 +138,10 @@ clothlab_cli_test(trace.diverges 1
 clothlab_cli_test(check.step_above_the_limit 0
   "default\\.toml: warning: a step of 0\\.01 s is above symplectic_euler's stability limit on this scene \\(0\\.000786 s\\); solver\\.dt = \"auto\" takes 0\\.00062 s"
   check ${CLOTHLAB_DEFAULT_SCENE} --set solver.dt=0.01)
+clothlab_cli_test(check.no_stable_step 0
+  "warning: explicit_euler has no stable step on this scene \\(it needs damping\\)"
+  check ${CLOTHLAB_DEFAULT_SCENE} --set solver.integrator=explicit_euler --set springs.damping=0
+  --set forces.drag=0 --set solver.dt=0.0001)
 clothlab_cli_test(check.step_below_the_limit 0 "dt = 0\\.0005 s\\)[^a-z]*$"
   check ${CLOTHLAB_DEFAULT_SCENE} --set solver.dt=0.0005)
 # Every explicit method run at 10x its stable step on the default scene (limits from

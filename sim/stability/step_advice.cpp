@@ -21,6 +21,13 @@ std::optional<StepAdvice> step_advice(const Scene& scene) {
 
 std::string step_advice_line(const StepAdvice& advice, IntegratorKind kind) {
   char line[256];
+  if (!(advice.limit > 0.0)) {  // explicit Euler without damping: no step is stable
+    std::snprintf(line, sizeof line,
+                  "%s has no stable step on this scene (it needs damping); solver.dt = \"auto\" "
+                  "takes %.3g s",
+                  to_string(kind), advice.auto_dt);
+    return line;
+  }
   std::snprintf(line, sizeof line,
                 "a step of %.3g s is above %s's stability limit on this scene (%.3g s); "
                 "solver.dt = \"auto\" takes %.3g s",
