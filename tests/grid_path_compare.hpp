@@ -36,6 +36,20 @@ Outcome<T> run_from_disturbed(const Scene& scene, SpringKernel kernel, int threa
   return r;
 }
 
+// The comparison both grid-path tests make: grid, the row-sweep model's integrator from
+// make_grid(model); else the neighbour-list model's from make_list(model, grid_model), the list
+// path told the grid path's order from the row-sweep model of the same scene.
+template <class T, class MakeGrid, class MakeList>
+Outcome<T> run_grid_or_list(const Scene& scene, bool grid, int threads, int steps, T h,
+                            MakeGrid&& make_grid, MakeList&& make_list) {
+  const SpringKernel kernel = grid ? SpringKernel::row_sweep : SpringKernel::neighbour_list;
+  return run_from_disturbed<T>(
+      scene, kernel, threads, steps, h, [&](const Model<T>& m) -> std::unique_ptr<Integrator<T>> {
+        if (grid) return make_grid(m);
+        return make_list(m, build_model<T>(scene, SpringKernel::row_sweep));
+      });
+}
+
 template <class T>
 double largest_difference(const State<T>& a, const State<T>& b, bool velocity) {
   double worst = 0.0;

@@ -20,14 +20,13 @@ using testing::Outcome;
 // neighbour-list model's list path in the grid path's colours.
 template <class T>
 Outcome<T> run(const Scene& scene, bool grid, int threads, int steps, T h) {
-  const SpringKernel kernel = grid ? SpringKernel::row_sweep : SpringKernel::neighbour_list;
-  return testing::run_from_disturbed<T>(
-      scene, kernel, threads, steps, h, [&](const Model<T>& m) -> std::unique_ptr<Integrator<T>> {
-        if (grid) {
-          EXPECT_TRUE(vbd_grid_applies(m));
-          return make_vbd_grid(m, scene.solver);
-        }
-        const Model<T> g = build_model<T>(scene, SpringKernel::row_sweep);
+  return testing::run_grid_or_list<T>(
+      scene, grid, threads, steps, h,
+      [&](const Model<T>& m) {
+        EXPECT_TRUE(vbd_grid_applies(m));
+        return make_vbd_grid(m, scene.solver);
+      },
+      [&](const Model<T>& m, const Model<T>& g) {
         return make_vbd_in_order(m, scene.solver, vbd_grid_colours(g));
       });
 }
