@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "pixels.hpp"
+#include "render_frame.hpp"
 #include "sim/mesh/triangle_mesh.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
@@ -88,7 +89,7 @@ class ColliderRenderTest : public ::testing::Test {
     spec.pole.enabled = false;
     renderer_->set_cloth(solver);
     renderer_->set_scene(spec, solver, colliders);
-    Shot shot{renderer_->render(solver, v)};
+    Shot shot{test::render_frame(*renderer_, solver, v)};
     // CLOTHLAB_TEST_IMAGES=DIR keeps every image for a look (named by test and count).
     if (const char* dir = std::getenv("CLOTHLAB_TEST_IMAGES")) {
       static int count = 0;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "pixels.hpp"
+#include "render_frame.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
 #include "vis/render/headless_renderer.hpp"
@@ -86,9 +87,9 @@ class ColouredShadow : public ::testing::Test {
     const std::vector<std::uint8_t> lit_img = [&] {
       vis::ViewSettings v = f.view;
       v.shadows = ShadowFilter::none;
-      return renderer_->render(*f.solver, v);
+      return test::render_frame(*renderer_, *f.solver, v);
     }();
-    const std::vector<std::uint8_t> shadow_img = renderer_->render(*f.solver, f.view);
+    const std::vector<std::uint8_t> shadow_img = test::render_frame(*renderer_, *f.solver, f.view);
     const std::size_t k = testing::pixel_index(f.view.camera, kW, kH, p);
     std::array<double, 3> out{};
     for (int ch = 0; ch < 3; ++ch)

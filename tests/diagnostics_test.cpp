@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "pixels.hpp"
+#include "render_frame.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
 #include "vis/colormap/colormap.hpp"
@@ -87,9 +88,9 @@ TEST_F(DiagnosticsTest, RangeEndsShowTheTablesEndEntries) {
     view.color.map = map;
     const auto table = vis::colormap_table(map);
     view.color.fixed = {1.0, 2.0};  // the sheet at 1 m is the minimum
-    const auto low = pixel(renderer_->render(*solver, view), kWidth / 2, kHeight / 2);
+    const auto low = pixel(test::render_frame(*renderer_, *solver, view), kWidth / 2, kHeight / 2);
     view.color.fixed = {-3.0, 0.5};  // above the maximum
-    const auto high = pixel(renderer_->render(*solver, view), kWidth / 2, kHeight / 2);
+    const auto high = pixel(test::render_frame(*renderer_, *solver, view), kWidth / 2, kHeight / 2);
     for (int k = 0; k < 3; ++k) {
       const int lo_entry[3] = {table[0].r, table[0].g, table[0].b};
       const int hi_entry[3] = {table[255].r, table[255].g, table[255].b};
@@ -109,7 +110,7 @@ TEST_F(DiagnosticsTest, InterpolatedValuesAreMappedPerFragment) {
   vis::ViewSettings view = top_view(*solver);
   view.color.field = vis::ScalarField::height;
   view.color.map = vis::ColorMap::turbo;  // strongly curved: a wrong mapping is visible
-  const std::vector<std::uint8_t> image = renderer_->render(*solver, view);
+  const std::vector<std::uint8_t> image = test::render_frame(*renderer_, *solver, view);
   const vis::ScalarRange range = *renderer_->diagnostics().color_range();
   EXPECT_NEAR(range.min, 1.0, 1e-6);
   EXPECT_NEAR(range.max, 1.5, 1e-6);
@@ -132,7 +133,7 @@ TEST_F(DiagnosticsTest, ColourBarMatchesTheCloth) {
   vis::ViewSettings view = top_view(*solver);
   view.color.field = vis::ScalarField::height;
   view.color.map = vis::ColorMap::turbo;
-  const std::vector<std::uint8_t> image = renderer_->render(*solver, view);
+  const std::vector<std::uint8_t> image = test::render_frame(*renderer_, *solver, view);
   ASSERT_EQ(renderer_->legends().size(), 1u);
   const vis::LegendBar& bar = renderer_->legends()[0];
   EXPECT_NEAR(bar.range.min, 1.0, 1e-6);
@@ -148,7 +149,7 @@ TEST_F(DiagnosticsTest, ColourBarMatchesTheCloth) {
   }
   // Without legends nothing is drawn there.
   view.legends = false;
-  renderer_->render(*solver, view);
+  test::render_frame(*renderer_, *solver, view);
   EXPECT_TRUE(renderer_->legends().empty());
 }
 
@@ -171,7 +172,7 @@ TEST_F(DiagnosticsTest, ArrowsComeOnePerShownVertexInTheMapsColour) {
   view.color.fixed = {0.0, 2.0 * mg};
   for (int stride : {3, 2, 1}) {
     view.arrows.stride = stride;
-    const std::vector<std::uint8_t> image = renderer_->render(*solver, view);
+    const std::vector<std::uint8_t> image = test::render_frame(*renderer_, *solver, view);
     const vis::Diagnostics& d = renderer_->diagnostics();
     // 0, s, 2s, ... plus the last index, along both sides of the sheet.
     const int per_side = (kRes - 1 + stride - 1) / stride + 1;
@@ -195,10 +196,10 @@ TEST_F(DiagnosticsTest, ZeroArrowsDrawNothing) {
   renderer_->set_cloth(*solver);
   vis::ViewSettings view = vis::default_view(*solver);
   view.legends = false;  // the arrows' colour bar would differ; the arrows must not
-  const std::vector<std::uint8_t> plain = renderer_->render(*solver, view);
+  const std::vector<std::uint8_t> plain = test::render_frame(*renderer_, *solver, view);
   view.arrows.force = true;
   view.force_source = ForceSource::wind;
-  const std::vector<std::uint8_t> with_zero_arrows = renderer_->render(*solver, view);
+  const std::vector<std::uint8_t> with_zero_arrows = test::render_frame(*renderer_, *solver, view);
   for (const vis::ArrowInstance& a : renderer_->diagnostics().force_arrows()) {
     EXPECT_EQ(glm::length(a.vector), 0.0f);
     EXPECT_TRUE(std::isfinite(a.value));
@@ -217,7 +218,7 @@ TEST_F(DiagnosticsTest, NormalArrowsPointToTheCamerasSide) {
     vis::ViewSettings view = top_view(*solver);
     view.camera.pitch_deg = side == 0 ? 60.0f : -60.0f;  // above, then below the sheet
     view.arrows.normals = true;
-    renderer_->render(*solver, view);
+    test::render_frame(*renderer_, *solver, view);
     const glm::vec3 eye = view.camera.eye();
     ASSERT_FALSE(renderer_->diagnostics().normal_arrows().empty());
     for (const vis::ArrowInstance& a : renderer_->diagnostics().normal_arrows()) {
@@ -237,12 +238,12 @@ TEST_F(DiagnosticsTest, EverythingOffHoldsNothing) {
   vis::ViewSettings view = vis::default_view(*solver);
   view.arrows.force = true;
   view.force_source = ForceSource::springs;
-  renderer_->render(*solver, view);
+  test::render_frame(*renderer_, *solver, view);
   EXPECT_TRUE(renderer_->diagnostics().active());
   EXPECT_EQ(solver->force_field_source(), ForceSource::springs);
   view = vis::default_view(*solver);
   solver->update_force_field(ForceSource::gravity);
-  renderer_->render(*solver, view);
+  test::render_frame(*renderer_, *solver, view);
   EXPECT_FALSE(renderer_->diagnostics().active());
   EXPECT_FALSE(renderer_->diagnostics().color_range());
   EXPECT_EQ(solver->force_field_source(), ForceSource::gravity);  // untouched by the render

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "pixels.hpp"
+#include "render_frame.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
 #include "vis/render/headless_renderer.hpp"
@@ -62,7 +63,7 @@ class Diffusion : public ::testing::Test {
     spec.pole.enabled = false;
     spec.meshes = meshes;
     renderer_->set_scene(spec, *solver_);
-    return renderer_->render(*solver_, v);
+    return test::render_frame(*renderer_, *solver_, v);
   }
   static std::array<double, 3> at(const std::vector<std::uint8_t>& img, const vis::ViewSettings& v,
                                   glm::vec3 p) {
@@ -184,7 +185,7 @@ TEST_F(Diffusion, StretchedClothKeepsTheWorldWidthOfItsGlow) {
       speck.half_extents = {0.01, 0.01, 0.01};
       spec.meshes = {shadow_plate(), speck};
       renderer_->set_scene(spec, *small);
-      const auto img = renderer_->render(*small, v);
+      const auto img = test::render_frame(*renderer_, *small, v);
       return edge_widths([&](glm::vec3 p) { return at(img, v, p); })[0];
     };
     const double built = red_width();

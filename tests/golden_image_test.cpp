@@ -15,6 +15,7 @@
 #include <memory>
 #include <string>
 
+#include "render_frame.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
 #include "vis/render/headless_renderer.hpp"
@@ -102,7 +103,7 @@ vis::ViewSettings full_view(const Solver& solver) {
 Image check_golden(vis::HeadlessRenderer& renderer, Solver& solver, const vis::ViewSettings& view,
                    const std::string& name) {
   Image actual(kWidth, kHeight);
-  actual.rgba = renderer.render(solver, view);
+  actual.rgba = test::render_frame(renderer, solver, view);
   const fs::path golden_path = fs::path(CLOTHLAB_SOURCE_DIR) / "tests" / "golden" / (name + ".png");
   if (const char* update = std::getenv("CLOTHLAB_UPDATE_GOLDEN"); update && *update == '1') {
     write_png(actual, golden_path.string(), PngCompression::small);  // kept in the repository
@@ -160,7 +161,7 @@ TEST_F(GoldenImage, ClothBrdfThreadsAndSheen) {
   view.mode = vis::DisplayMode::cloth_brdf;
   view.shadows = ShadowFilter::none;
   auto mean = [&](const vis::ViewSettings& v, int channel, int x0, int x1, int y0, int y1) {
-    const std::vector<std::uint8_t> img = renderer_->render(*solver_, v);
+    const std::vector<std::uint8_t> img = test::render_frame(*renderer_, *solver_, v);
     double sum = 0.0;
     for (int y = y0; y < y1; ++y)
       for (int x = x0; x < x1; ++x) sum += img[4 * (std::size_t(y) * kWidth + x) + channel];
@@ -209,18 +210,18 @@ TEST_F(GoldenImage, WeaveMode6) {
 TEST_F(GoldenImage, FlatWeaveMapIsMode3) {
   vis::ViewSettings view = full_view(*solver_);
   view.mode = vis::DisplayMode::lambert;
-  const std::vector<std::uint8_t> lambert = renderer_->render(*solver_, view);
+  const std::vector<std::uint8_t> lambert = test::render_frame(*renderer_, *solver_, view);
   view.mode = vis::DisplayMode::weave;
   view.weave_coarsening = 1.0f;  // the weave at mode 3's scale
   view.look.bump = 0.0;
   view.look.subsurface = 0.0;  // a zero-width diffusion profile: plain Lambert
-  const std::vector<std::uint8_t> flat = renderer_->render(*solver_, view);
+  const std::vector<std::uint8_t> flat = test::render_frame(*renderer_, *solver_, view);
   int worst = 0;
   for (std::size_t i = 0; i < flat.size(); ++i)
     worst = std::max(worst, std::abs(int(flat[i]) - int(lambert[i])));
   EXPECT_LE(worst, 2);
   view.look.bump = 1.0;
-  const std::vector<std::uint8_t> bumpy = renderer_->render(*solver_, view);
+  const std::vector<std::uint8_t> bumpy = test::render_frame(*renderer_, *solver_, view);
   long changed = 0;
   for (std::size_t i = 0; i < bumpy.size(); ++i)
     changed += std::abs(int(bumpy[i]) - int(lambert[i])) > 4;
@@ -235,9 +236,9 @@ TEST_F(GoldenImage, GlintLightsTouchOnlyTheMetal) {
   auto changed = [&](ThreadMetal threads) {
     view.look.threads = threads;
     view.look.glints = false;
-    const std::vector<std::uint8_t> off = renderer_->render(*solver_, view);
+    const std::vector<std::uint8_t> off = test::render_frame(*renderer_, *solver_, view);
     view.look.glints = true;
-    const std::vector<std::uint8_t> on = renderer_->render(*solver_, view);
+    const std::vector<std::uint8_t> on = test::render_frame(*renderer_, *solver_, view);
     long n = 0;
     for (std::size_t i = 0; i < on.size(); ++i) n += on[i] != off[i];
     return n;

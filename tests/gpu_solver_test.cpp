@@ -18,6 +18,7 @@
 #include "factory/solver_factory.hpp"
 #include "gl_context_fixture.hpp"
 #include "gpu/backend_solver.hpp"
+#include "render_frame.hpp"
 #include "sim/cloth/scene_copies.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
@@ -336,12 +337,12 @@ TEST(GpuSolverRender, DrawsAndProbesTheGpuStateAsTheCpus) {
   Solver& cpu = *cpu_owner;
   renderer.set_cloth(gpu);
   vis::ViewSettings view = vis::scene_view(scene, gpu);
-  const std::vector<std::uint8_t> rest = renderer.render(gpu, view);
+  const std::vector<std::uint8_t> rest = test::render_frame(renderer, gpu, view);
   ASSERT_TRUE(gpu.step(300).ok());
   cpu.load_state(gpu);
-  const std::vector<std::uint8_t> from_gpu = renderer.render(gpu, view);
+  const std::vector<std::uint8_t> from_gpu = test::render_frame(renderer, gpu, view);
   renderer.set_cloth(cpu);
-  const std::vector<std::uint8_t> from_cpu = renderer.render(cpu, view);
+  const std::vector<std::uint8_t> from_cpu = test::render_frame(renderer, cpu, view);
   ASSERT_EQ(from_gpu.size(), from_cpu.size());
   int worst = 0;
   long moved = 0;
@@ -356,9 +357,9 @@ TEST(GpuSolverRender, DrawsAndProbesTheGpuStateAsTheCpus) {
   EXPECT_LE(worst, 2);
   EXPECT_GT(moved, 1000);  // the frame shows the moved cloth, not the rest state
 
-  const auto a = renderer.probe(cpu, view, 160, 120);
+  const auto a = test::probe_frame(renderer, cpu, view, 160, 120);
   renderer.set_cloth(gpu);
-  const auto b = renderer.probe(gpu, view, 160, 120);
+  const auto b = test::probe_frame(renderer, gpu, view, 160, 120);
   ASSERT_TRUE(a && b);
   EXPECT_EQ(a->vertex, b->vertex);
   EXPECT_LT(glm::length(a->force - b->force), 1e-4f * std::max(1.0f, glm::length(a->force)));

@@ -2,7 +2,8 @@
 // gl/ (the GL foundation) <- gpu/ (the GPU step) <- factory/ (the solver factory), and vis/ (the
 // renderer) on sim/ and gl/, <- bench/ <- apps/, with music/ and load/ (the files a scene names)
 // on sim/. A file may include its own folder and
-// the folders below it, never one beside or above it.
+// the folders below it, never one beside or above it. And the renderer reads the solver: no
+// header under vis/ takes a mutable solver (docs/design.md, "One field snapshot per frame").
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -75,6 +76,51 @@ TEST(Layering, TheScanFindsAnIncludeBesideItsFolder) {
   fs::remove_all(root);
   ASSERT_EQ(bad.size(), 1u);
   EXPECT_EQ(bad[0], "vis/render/b.hpp ->   #include \"gpu/gpu_step.hpp\"");
+}
+
+// Every mention of a solver role (Solver, SolverState, SolverStepping, SolverInteraction) or of
+// the device cloth by a non-const reference or pointer in the headers under root/folder, as
+// "file:line: text". Comment lines are skipped.
+std::vector<std::string> mutable_solver_uses(const fs::path& root, const std::string& folder) {
+  const std::regex use(
+      R"re(\b(const\s+)?(Solver|SolverState|SolverStepping|SolverInteraction|DeviceCloth)\s*[&*])re");
+  const std::regex comment(R"re(^\s*//)re");
+  std::vector<std::string> bad;
+  for (const auto& entry : fs::recursive_directory_iterator(root / folder)) {
+    if (entry.path().extension() != ".hpp") continue;
+    std::ifstream in(entry.path());
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+      if (std::regex_search(line, comment)) continue;
+      for (std::sregex_iterator m(line.begin(), line.end(), use), end; m != end; ++m) {
+        if ((*m)[1].matched) continue;
+        bad.push_back(fs::relative(entry.path(), root).string() + ":" + std::to_string(number) +
+                      ": " + line);
+        break;
+      }
+    }
+  }
+  return bad;
+}
+
+TEST(Layering, TheRendererTakesTheSolverAsConst) {
+  const std::vector<std::string> bad = mutable_solver_uses(CLOTHLAB_SOURCE_DIR, "vis");
+  EXPECT_TRUE(bad.empty()) << bad.size() << " mutable solver uses in vis/ headers, e.g. "
+                           << bad.front();
+}
+
+// The scan finds a mutable solver parameter beside const ones, and skips comments.
+TEST(Layering, TheScanFindsAMutableSolver) {
+  const fs::path root = fs::temp_directory_path() / "clothlab_layering_const_test";
+  fs::remove_all(root);
+  fs::create_directories(root / "vis/render");
+  std::ofstream(root / "vis/render/a.hpp")
+      << "void f(const SolverState& s, const Solver* p);\n// g(Solver& s) in a comment\n"
+         "void g(const FrameFields& f, Solver &s);\nconst DeviceCloth* d;\n";
+  const std::vector<std::string> bad = mutable_solver_uses(root, "vis");
+  fs::remove_all(root);
+  ASSERT_EQ(bad.size(), 1u);
+  EXPECT_EQ(bad[0], "vis/render/a.hpp:3: void g(const FrameFields& f, Solver &s);");
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "render_frame.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
 #include "vis/render/headless_renderer.hpp"
@@ -38,7 +39,7 @@ class ProbeTest : public ::testing::Test {
     renderer_ = std::make_unique<vis::HeadlessRenderer>(kWidth, kHeight);
     renderer_->set_cloth(*solver_);
     view_ = vis::default_view(*solver_);
-    renderer_->render(*solver_, view_);
+    test::render_frame(*renderer_, *solver_, view_);
   }
   static void TearDownTestSuite() {
     renderer_.reset();
@@ -76,7 +77,7 @@ TEST_F(ProbeTest, VertexPixelGivesTheSolversValuesAndNamesTheVertex) {
   for (const auto [i, j] : {std::array<int, 2>{8, 8}, {4, 5}, {11, 10}, {7, 13}}) {
     const int v = solver.vertex_index({0, i, j});
     const auto [px, py] = pixel_of(solver.position(v));
-    const std::optional<vis::ProbeSample> s = renderer_->probe(solver, view_, px, py);
+    const std::optional<vis::ProbeSample> s = test::probe_frame(*renderer_, solver, view_, px, py);
     ASSERT_TRUE(s) << "vertex (" << i << ", " << j << ") at pixel " << px << "," << py;
     EXPECT_EQ(s->vertex, v) << "vertex (" << i << ", " << j << ")";
 
@@ -110,9 +111,10 @@ TEST_F(ProbeTest, VertexPixelGivesTheSolversValuesAndNamesTheVertex) {
 }
 
 TEST_F(ProbeTest, PixelOffTheClothGivesNothing) {
-  EXPECT_FALSE(renderer_->probe(*solver_, view_, 0, 0));                     // sky corner
-  EXPECT_FALSE(renderer_->probe(*solver_, view_, kWidth - 1, kHeight - 1));  // floor: not cloth
-  EXPECT_FALSE(renderer_->probe(*solver_, view_, kWidth, 0));                // outside the image
+  EXPECT_FALSE(test::probe_frame(*renderer_, *solver_, view_, 0, 0));  // sky corner
+  EXPECT_FALSE(
+      test::probe_frame(*renderer_, *solver_, view_, kWidth - 1, kHeight - 1));  // floor: not cloth
+  EXPECT_FALSE(test::probe_frame(*renderer_, *solver_, view_, kWidth, 0));  // outside the image
 }
 
 }  // namespace

@@ -10,8 +10,10 @@
 #include "gl/headless_context.hpp"
 #include "gl/offscreen_target.hpp"
 #include "gl/program.hpp"
+#include "sim/fields/frame_fields.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
+#include "vis/render/frame_request.hpp"
 #include "vis/render/renderer.hpp"
 #include "vis/textures/image.hpp"
 
@@ -33,7 +35,8 @@ class RenderTest : public ::testing::Test {
   std::vector<std::uint8_t> render(Solver& solver, const vis::ViewSettings& view, int w, int h) {
     vis::Renderer renderer;
     renderer.set_cloth(solver);
-    renderer.update_cloth(solver);
+    FieldSnapshot snapshot;
+    renderer.update_cloth(snapshot.take(solver, vis::frame_request(view, renderer)));
     vis::OffscreenTarget target(w, h);
     target.bind();
     renderer.draw(view, w, h);

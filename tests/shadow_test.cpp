@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "pixels.hpp"
+#include "render_frame.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
 #include "vis/render/headless_renderer.hpp"
@@ -89,7 +90,7 @@ class ShadowTest : public ::testing::Test {
     spec.pole.enabled = false;
     spec.meshes = meshes;
     renderer_->set_scene(spec, *solver_);
-    return {renderer_->render(*solver_, v)};
+    return {test::render_frame(*renderer_, *solver_, v)};
   }
   static glm::vec2 pixel(const vis::ViewSettings& v, glm::vec3 p) {
     return testing::screen_position(v.camera, kW, kH, p);

@@ -15,6 +15,7 @@
 
 #include "load/scene_load.hpp"
 #include "pixels.hpp"
+#include "render_frame.hpp"
 #include "sim/solver.hpp"
 #include "vis/render/headless_renderer.hpp"
 
@@ -48,13 +49,15 @@ class ShippedView : public ::testing::Test {
     const Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/" + name);
     std::unique_ptr<Solver> solver = make_solver(scene);
     vis::ViewSettings view = vis::scene_view(scene, *solver);
-    if (t > 0.0) EXPECT_TRUE(solver->advance(t).ok());
+    if (t > 0.0) {
+      EXPECT_TRUE(solver->advance(t).ok());
+    }
     renderer_->set_cloth(*solver);
     renderer_->set_scene(scene.render, *solver, scene.colliders);
     view.mode = mode;
     view.legends = false;
     if (by_height) view.color.field = vis::ScalarField::height;
-    return {renderer_->render(*solver, view)};
+    return {test::render_frame(*renderer_, *solver, view)};
   }
 
   // The cloth's pixels: where colouring it by height changes mode 3's image.
@@ -209,7 +212,7 @@ TEST_F(ShippedView, ForceArrowsShowAtRest) {
     renderer_->set_cloth(*solver);
     renderer_->set_scene(scene.render, *solver, scene.colliders);
     view.arrows.force = true;
-    renderer_->render(*solver, view);
+    test::render_frame(*renderer_, *solver, view);
     const vis::Diagnostics& d = renderer_->diagnostics();
     EXPECT_EQ(d.shown_force_source(), wind ? ForceSource::total : ForceSource::springs);
     EXPECT_EQ(d.showing_springs_at_rest(), !wind);
@@ -229,7 +232,7 @@ TEST_F(ShippedView, ForceArrowsShowAtRest) {
   vis::ViewSettings view = vis::scene_view(scene, *solver);
   view.arrows.force = true;
   view.springs_at_rest = false;
-  renderer_->render(*solver, view);
+  test::render_frame(*renderer_, *solver, view);
   EXPECT_EQ(renderer_->diagnostics().shown_force_source(), ForceSource::total);
 }
 

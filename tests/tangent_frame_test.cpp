@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "pixels.hpp"
+#include "render_frame.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
 #include "vis/render/headless_renderer.hpp"
@@ -100,7 +101,7 @@ class TangentFrame : public ::testing::Test {
     renderer_->set_scene(spec, solver);
     renderer_->renderer().set_normal_map(map);
     const vis::ViewSettings v = view(solver);
-    const std::vector<std::uint8_t> img = renderer_->render(solver, v);
+    const std::vector<std::uint8_t> img = test::render_frame(*renderer_, solver, v);
     renderer_->renderer().set_normal_map(nullptr);
     std::vector<double> out;
     for (float x = -0.55f; x <= 0.56f; x += 0.22f)

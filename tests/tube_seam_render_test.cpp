@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "pixels.hpp"
+#include "render_frame.hpp"
 #include "sim/solver.hpp"
 #include "vis/render/headless_renderer.hpp"
 #include "vis/textures/cloth_tangents.hpp"
@@ -79,7 +80,7 @@ class TubeSeam : public ::testing::Test {
     return v;
   }
   static std::vector<std::uint8_t> shoot(const vis::ViewSettings& v, const char* name) {
-    std::vector<std::uint8_t> img = renderer_->render(*solver_, v);
+    std::vector<std::uint8_t> img = test::render_frame(*renderer_, *solver_, v);
     if (const char* dir = std::getenv("CLOTHLAB_TEST_PNG_DIR")) {  // to look at by eye
       Image out;
       out.width = kW;

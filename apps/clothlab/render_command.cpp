@@ -14,6 +14,7 @@
 #include "gl/gl_error.hpp"
 #include "music/music_track.hpp"
 #include "sim/cloth/scene_copies.hpp"
+#include "sim/fields/frame_fields.hpp"
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
 #include "vis/render/headless_renderer.hpp"
@@ -43,7 +44,9 @@ void print_probe(Solver& solver, vis::HeadlessRenderer& renderer, const vis::Vie
                            : args.field == "position" ? vis::Field::position
                                                       : vis::Field::force;
   const auto [px, py] = *args.probe;
-  const std::optional<vis::ProbeSample> s = renderer.probe(solver, view, px, py);
+  FieldSnapshot snapshot;
+  const FrameFields& fields = snapshot.take(solver, renderer.request(view, true));
+  const std::optional<vis::ProbeSample> s = renderer.probe(solver, fields, view, px, py);
   std::printf("{\"field\": \"%s\", \"pixel\": [%d, %d], ", args.field.c_str(), px, py);
   if (!s) {
     std::printf(
@@ -51,7 +54,8 @@ void print_probe(Solver& solver, vis::HeadlessRenderer& renderer, const vis::Vie
     return;
   }
   const glm::vec3 v = s->value(field);
-  // The force is that of the probe's update_force_field(), the state is the same.
+  // The nodal value in the solver's precision (the snapshot holds floats).
+  if (field == vis::Field::force) solver.update_force_field(ForceSource::total);
   const Vec3d n = field == vis::Field::force      ? solver.force(s->vertex)
                   : field == vis::Field::velocity ? solver.velocity(s->vertex)
                                                   : solver.position(s->vertex);
@@ -105,6 +109,7 @@ FrameTimes render_frames(const RenderArgs& args, Solver& solver, vis::HeadlessRe
   FrameTimes t;
   ProgressBar progress(args.frames, !args.quiet);
   Image image(args.width, args.height);
+  FieldSnapshot snapshot;  // one per frame, its buffers reused
   for (int frame = 0; frame < args.frames; ++frame) {
     auto t0 = Clock::now();
     if (frame > 0) {
@@ -119,7 +124,7 @@ FrameTimes render_frames(const RenderArgs& args, Solver& solver, vis::HeadlessRe
     }
     t.simulate += seconds_since(t0);
     t0 = Clock::now();
-    image.rgba = renderer.render(solver, view);
+    image.rgba = renderer.render(solver, snapshot.take(solver, renderer.request(view)), view);
     t.draw += seconds_since(t0);
     t0 = Clock::now();
     if (!args.out.empty()) write_png(image, frame_path(args.out, frame));

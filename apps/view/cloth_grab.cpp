@@ -19,8 +19,9 @@ Vec3d to_vec(glm::vec3 v) {
 
 }  // namespace
 
-bool ClothGrab::pick(Solver& solver, const Renderer& renderer, std::unique_ptr<FieldPass>& pass,
-                     const ViewSettings& view, int width, int height, int window_w, int window_h) {
+bool ClothGrab::pick(Solver& solver, const FrameFields& fields, const Renderer& renderer,
+                     std::unique_ptr<FieldPass>& pass, const ViewSettings& view, int width,
+                     int height, int window_w, int window_h) {
   if (!pending_ || width <= 0 || height <= 0 || window_w <= 0 || window_h <= 0) return false;
   const auto [x, y] = *pending_;
   pending_.reset();
@@ -29,8 +30,8 @@ bool ClothGrab::pick(Solver& solver, const Renderer& renderer, std::unique_ptr<F
   // Cursor positions are in window points; the framebuffer may have more pixels.
   const int px = static_cast<int>(std::floor(x * width / window_w));
   const int py = static_cast<int>(std::floor(y * height / window_h));
-  const std::optional<ProbeSample> s =
-      probe_fields(solver, renderer, *pass, view_projection(view.camera, width, height), px, py);
+  const std::optional<ProbeSample> s = probe_fields(
+      solver, fields, renderer, *pass, view_projection(view.camera, width, height), px, py);
   if (!s || s->vertex < 0) return false;
   const glm::vec3 p = to_glm(solver.position(s->vertex));
   if (!solver.grab(s->vertex, to_vec(p))) return false;  // a pinned vertex stays where it is

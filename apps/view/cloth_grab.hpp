@@ -16,7 +16,8 @@
 
 namespace clothlab {
 class Solver;
-}
+struct FrameFields;
+}  // namespace clothlab
 
 namespace clothlab::vis {
 
@@ -31,8 +32,10 @@ class ClothGrab {
   // Picks the vertex under a pending press (window of window_w x window_h points, framebuffer
   // of width x height pixels, `pass` rebuilt at that size when needed) and starts pulling it.
   // Returns false when nothing was pending or no free vertex lies under the press.
-  bool pick(Solver& solver, const Renderer& renderer, std::unique_ptr<FieldPass>& pass,
-            const ViewSettings& view, int width, int height, int window_w, int window_h);
+  // `fields`: the frame's snapshot, taken with the probe's fields (frame_request(..., true)).
+  bool pick(Solver& solver, const FrameFields& fields, const Renderer& renderer,
+            std::unique_ptr<FieldPass>& pass, const ViewSettings& view, int width, int height,
+            int window_w, int window_h);
   // The cursor moved to window point (x, y) while dragging: the target follows it.
   void drag_to(Solver& solver, const OrbitCamera& camera, double x, double y, int window_w,
                int window_h);

@@ -26,9 +26,10 @@ ProbeReadout probe_readout(Field field, SolverState& solver, const std::optional
                            int vertex, bool pinned, int px, int py) {
   const char* name = field_name(field);
   const char* unit = unit_of(field);
-  // The pinned vertex may be hidden or off screen: its nodal value still holds (probe_fields
-  // computed the force field whenever it drew; without a draw, compute it here).
-  if (!s && field == Field::force) solver.update_force_field();
+  // The frame's snapshot computed the total force for the probe; a source computed after it
+  // (the arrows' springs) may have replaced it in the solver since.
+  if (field == Field::force && solver.force_field_source() != ForceSource::total)
+    solver.update_force_field();
   const Vec3d n = field == Field::force      ? solver.force(vertex)
                   : field == Field::velocity ? solver.velocity(vertex)
                                              : solver.position(vertex);

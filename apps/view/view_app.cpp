@@ -22,6 +22,7 @@
 #include "sim/trace/trace_run.hpp"
 #include "vis/render/diagnostics.hpp"
 #include "vis/render/field_pass.hpp"
+#include "vis/render/frame_request.hpp"
 #include "vis/render/render_quality.hpp"
 #include "vis/render/renderer.hpp"
 #define GLFW_INCLUDE_NONE
@@ -412,24 +413,30 @@ void ViewApp::draw(int width, int height) {
     renderer_->set_cloth(solver);  // a reset may have changed the vertex count
     renderer_->set_scene(session_.scene().render, solver, session_.scene().colliders);
     diagnostics_->set_cloth();
+    snapshot_.forget_topology();
     pinned_vertex_ = -1;
     grab_.forget();  // its vertex belonged to the old solver
     rendered_generation_ = session_.generation();
   }
-  // A diverged state is all NaN or kilometres away: keep showing the last sane one.
+  // A diverged state is all NaN or kilometres away: keep showing the last sane one. One field
+  // snapshot per frame serves the cloth, the diagnostics, the probe and a grab's pick.
+  const bool probing = panel_.probe || grab_.pending();
   if (!session_.divergence()) {
-    renderer_->update_cloth(solver);
-    diagnostics_->update(solver, view_, *renderer_);
+    const FrameFields& fields = snapshot_.take(solver, frame_request(view_, *renderer_, probing));
+    renderer_->update_cloth(fields);
+    diagnostics_->update(solver, fields, view_, *renderer_);
   }
   bind_scene_target(width, height);
   renderer_->draw(view_, width, height);
   diagnostics_->draw(view_, *renderer_);
   if (scene_target_) scene_target_->resolve_into(0);
   draw_legends(view_, *diagnostics_, renderer_->strain_range());
+  if (grab_.pending() && session_.divergence()) grab_.forget();  // nothing sane to pull
   if (grab_.pending()) {
     int window_w = 0, window_h = 0;
     glfwGetWindowSize(window_.handle(), &window_w, &window_h);
-    grab_.pick(solver, *renderer_, field_pass_, view_, width, height, window_w, window_h);
+    grab_.pick(solver, snapshot_.fields(), *renderer_, field_pass_, view_, width, height, window_w,
+               window_h);
     if (!panel_.probe) field_pass_.reset();
   }
   if (panel_.probe) probe_under_cursor(width, height);

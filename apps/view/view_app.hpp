@@ -18,6 +18,7 @@
 #include "apps/view/music_panel.hpp"
 #include "apps/view/music_sync.hpp"
 #include "apps/view/sim_session.hpp"
+#include "sim/fields/frame_fields.hpp"
 #include "sim/realtime/frame_stepper.hpp"
 #include "sim/scene/scene.hpp"
 #include "vis/render/view_settings.hpp"
@@ -118,6 +119,7 @@ class ViewApp {
   // Only while a probe is on (and for the pick of a Ctrl + drag); sized to the framebuffer.
   std::unique_ptr<FieldPass> field_pass_;
   std::unique_ptr<Diagnostics> diagnostics_;  // colour-by scalar and arrows (what is on)
+  FieldSnapshot snapshot_;                    // the fields of the frame being drawn
   // Clicking with a probe on pins it to the vertex under the cursor: it follows that vertex.
   std::optional<std::array<double, 2>> pending_click_;
   int pinned_vertex_ = -1;

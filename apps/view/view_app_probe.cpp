@@ -74,7 +74,7 @@ void ViewApp::probe_under_cursor(int width, int height) {
   if (!field_pass_ || field_pass_->width() != width || field_pass_->height() != height)
     field_pass_ = std::make_unique<FieldPass>(width, height);
   const std::optional<ProbeSample> s =
-      probe_fields(solver, *renderer_, *field_pass_, view_proj, px, py);
+      probe_fields(solver, snapshot_.fields(), *renderer_, *field_pass_, view_proj, px, py);
   if (clicked) pinned_vertex_ = s ? s->vertex : -1;  // a click off the cloth unpins
   const int vertex = pinned_vertex_ >= 0 ? pinned_vertex_ : s ? s->vertex : -1;
   if (vertex < 0) {

@@ -15,6 +15,7 @@
 #include "bench/suites/suites.hpp"
 #include "gl/gl.hpp"
 #include "load/scene_load.hpp"
+#include "sim/fields/frame_fields.hpp"
 #include "sim/solver.hpp"
 #include "vis/render/headless_renderer.hpp"
 
@@ -83,17 +84,18 @@ struct Series {
 // the same frames again split into passes.
 void time_variant(vis::HeadlessRenderer& renderer, Solver& solver, const vis::ViewSettings& view,
                   int frames, Series& series) {
-  renderer.draw(solver, view);
+  FieldSnapshot snapshot;
+  renderer.draw(solver, snapshot.take(solver, renderer.request(view)), view);
   glFinish();
   std::array<double, vis::kPassCount> sum{};
   double wall = 0.0;
   for (int f = 0; f < frames; ++f) {
     renderer.renderer().enable_pass_timing(false);
     Stopwatch clock;
-    (void)renderer.render(solver, view);
+    (void)renderer.render(solver, snapshot.take(solver, renderer.request(view)), view);
     wall += clock.seconds();
     renderer.renderer().enable_pass_timing(true);
-    renderer.draw(solver, view);
+    renderer.draw(solver, snapshot.take(solver, renderer.request(view)), view);
     const auto ms = renderer.renderer().pass_timer()->collect();
     for (std::size_t p = 0; p < vis::kPassCount; ++p) sum[p] += ms[p];
   }

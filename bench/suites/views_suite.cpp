@@ -16,6 +16,7 @@
 #include "bench/suites/suites.hpp"
 #include "gl/gl.hpp"
 #include "load/scene_load.hpp"
+#include "sim/fields/frame_fields.hpp"
 #include "sim/scene/validate.hpp"
 #include "sim/solver.hpp"
 #include "vis/render/headless_renderer.hpp"
@@ -115,9 +116,10 @@ Timing time_variant(vis::HeadlessRenderer& renderer, Solver& solver, const vis::
     const AdvanceResult r = solver.advance(1.0 / 60.0);
     if (r.divergence) throw std::runtime_error("views: " + r.divergence->message());
   };
+  FieldSnapshot snapshot;  // one per frame, as the window takes it
   auto probe = [&] {
     if (!probing) return;
-    const auto sample = renderer.probe(solver, view, width / 2, height / 2);
+    const auto sample = renderer.probe(solver, snapshot.fields(), view, width / 2, height / 2);
     ++s.probes;
     if (sample) ++s.probe_hits;
   };
@@ -128,11 +130,12 @@ Timing time_variant(vis::HeadlessRenderer& renderer, Solver& solver, const vis::
       advance();
       const double t_sim = sim_clock.seconds();
       Stopwatch clock;
+      const FrameFields& fields = snapshot.take(solver, renderer.request(view, probing));
       if (path == 0) {
-        (void)renderer.render(solver, view);
+        (void)renderer.render(solver, fields, view);
       } else {
-        renderer.draw(solver, view);  // render() without the resolve and readback
-        glFinish();                   // count the GPU's work
+        renderer.draw(solver, fields, view);  // render() without the resolve and readback
+        glFinish();                           // count the GPU's work
       }
       probe();
       if (f == 0) continue;

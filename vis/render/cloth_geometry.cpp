@@ -7,6 +7,7 @@
 
 #include "gl/program.hpp"
 #include "gl/uploads.hpp"
+#include "sim/fields/frame_fields.hpp"
 #include "sim/solver.hpp"
 #include "sim/step_backend.hpp"
 #include "vis/render/quantile.hpp"
@@ -28,6 +29,7 @@ void ClothGeometry::build(const SolverState& solver) {
   line_ebo_ = static_buffer(layout_.lines);
   tangents_.assign(4 * rn, 0.0f);
   tangents_stale_ = true;
+  strain_top_ = kMinStrainRange;
   make_vertex_arrays();
   staging_.resize(6 * rn);
   scalar_staging_.resize(rn);
@@ -61,19 +63,17 @@ void ClothGeometry::make_vertex_arrays() {
   glVertexArrayElementBuffer(line_vao_.get(), line_ebo_.get());
 }
 
-void ClothGeometry::update(SolverState& solver) {
-  DeviceCloth* device = solver.device_cloth();  // the GPU backend's buffers, or null
-  device_ = device;
-  solver.copy_positions(staging_.data());
+void ClothGeometry::update(const FrameFields& fields) {
+  if (fields.vertices != layout_.vertices || fields.positions.size() != 3 * fields.vertices)
+    throw std::invalid_argument("ClothGeometry::update: a snapshot of another cloth");
+  device_ = fields.device;
+  std::copy(fields.positions.begin(), fields.positions.end(), staging_.begin());
   update_bounds();
   tangents_stale_ = true;
-  if (device) {
-    device->update_normals();
-    pack_from_device(*device);
-    return;
-  }
+  if (!fields.spring_strain.empty()) update_strain_top(fields.spring_strain);
+  if (device_) return pack_from_device(*device_);
   const std::size_t rn = layout_.render_vertices();
-  solver.copy_normals(staging_.data() + 3 * rn);
+  std::copy(fields.normals.begin(), fields.normals.end(), staging_.begin() + 3 * rn);
   // The seam copies take their solver vertex's position and normal.
   copy_seams(staging_.data(), 3, 0);
   copy_seams(staging_.data(), 3, 3 * rn);
@@ -81,24 +81,14 @@ void ClothGeometry::update(SolverState& solver) {
                        static_cast<GLsizeiptr>(staging_.size() * sizeof(float)), staging_.data());
 }
 
-float ClothGeometry::strain_quantile(double q) {
-  const std::size_t rn = layout_.render_vertices(), lines = layout_.lines.size() / 2;
-  const float* rest = layout_.fixed.data() + 2 * rn;  // after the UV block
-  const std::size_t every = std::max<std::size_t>(1, lines / 4096);
+void ClothGeometry::update_strain_top(const std::vector<float>& spring_strain) {
+  const std::size_t every = std::max<std::size_t>(1, spring_strain.size() / 4096);
   strains_.clear();
-  for (std::size_t s = 0; s < lines; s += every) {
-    const std::size_t a = layout_.lines[2 * s], b = layout_.lines[2 * s + 1];
-    if (a >= layout_.vertices || b >= layout_.vertices) continue;  // seam copies: their twin
-    const auto at = [](const float* p, std::size_t v) {
-      return glm::vec3(p[3 * v], p[3 * v + 1], p[3 * v + 2]);
-    };
-    const float rest_length = glm::length(at(rest, b) - at(rest, a));
-    if (!(rest_length > 0.0f)) continue;
-    const float strain = glm::length(at(staging_.data(), b) - at(staging_.data(), a)) / rest_length;
-    if (std::isfinite(strain)) strains_.push_back(std::abs(strain - 1.0f));
-  }
-  if (strains_.empty()) return kMinStrainRange;
-  return std::max(quantile(strains_, q), kMinStrainRange);
+  for (std::size_t s = 0; s < spring_strain.size(); s += every)
+    if (std::isfinite(spring_strain[s])) strains_.push_back(std::abs(spring_strain[s]));
+  strain_top_ = strains_.empty()
+                    ? kMinStrainRange
+                    : std::max(quantile(strains_, kStrainRangeQuantile), kMinStrainRange);
 }
 
 // values[offset + stride * (vertices + k) + d] = values[offset + stride * seam_copies[k] + d].

@@ -17,6 +17,7 @@
 namespace clothlab {
 class DeviceCloth;
 class SolverState;
+struct FrameFields;
 }  // namespace clothlab
 
 namespace clothlab::vis {
@@ -30,15 +31,18 @@ class ClothGeometry {
  public:
   // (Re)builds every buffer for `solver`'s cloths (after building or resizing the solver).
   void build(const SolverState& solver);
-  // The current positions and smooth normals into the vertex buffer, in place, and the box
-  // around the positions (the light's frustum follows the cloth).
-  void update(SolverState& solver);
+  // The snapshot's positions and smooth normals into the vertex buffer, in place (or, with a
+  // device cloth, packed from its buffers on the GPU), the box around the positions (the
+  // light's frustum follows the cloth) and, when the snapshot holds the springs' strain, its
+  // strain_top().
+  void update(const FrameFields& fields);
   // The colour-by scalar, one per solver vertex.
   void set_scalars(const std::vector<float>& values);
-  // The q-quantile of |strain| (|x_b - x_a| / |X_b - X_a| - 1) over the springs at the last
-  // update()'s positions, at least kMinStrainRange: mode 1's automatic colour range. Springs
-  // are sampled (at most about 4096) so a large cloth pays little.
-  float strain_quantile(double q);
+  // The kStrainRangeQuantile quantile of |strain| over the springs of the last update() whose
+  // snapshot held their strain (kMinStrainRange before any), at least kMinStrainRange: mode 1's
+  // automatic colour range. Springs are sampled (at most about 4096) so a large cloth pays
+  // little.
+  float strain_top() const { return strain_top_; }
   // The tangent frame of the last update(), computed only when a mode needs it.
   void update_tangents();
 
@@ -58,6 +62,7 @@ class ClothGeometry {
  private:
   void make_vertex_arrays();
   void update_bounds();
+  void update_strain_top(const std::vector<float>& spring_strain);
   void pack_from_device(const DeviceCloth& device);
   void copy_seams(float* values, std::size_t stride, std::size_t offset) const;
 
@@ -70,7 +75,8 @@ class ClothGeometry {
   std::vector<float> staging_;         // positions, then normals, per render vertex
   std::vector<float> scalar_staging_;  // the colour-by scalar per render vertex
   std::vector<float> tangents_, tangent_scratch_;
-  std::vector<float> strains_;  // strain_quantile's sample
+  std::vector<float> strains_;  // strain_top's sample
+  float strain_top_ = kMinStrainRange;
   bool tangents_stale_ = true;
   glm::vec3 lo_{0.0f}, hi_{0.0f};
   // The GPU backend's cloth the last update() packed from (the tangents read its normals back

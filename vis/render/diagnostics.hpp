@@ -1,8 +1,9 @@
 // The scientific views drawn over the cloth, shared by the window and headless rendering: the
 // colour-by scalar (ViewSettings::color) and the force and normal arrows (ViewSettings::arrows).
-// Each frame update() computes only what the view shows, from the solver's current state: no
-// force field, no scalar and no arrow buffer exists while everything is off (docs/design.md: no
-// field export unless something displays, probes or traces it).
+// Each frame update() builds only what the view shows, from the frame's field snapshot
+// (sim/fields/frame_fields.hpp, filled as frame_request() asks): no scalar and no arrow buffer
+// exists while everything is off (docs/design.md: no field export unless something displays,
+// probes or traces it).
 #pragma once
 
 #include <cstddef>
@@ -14,14 +15,14 @@
 #include "vis/render/view_settings.hpp"
 
 namespace clothlab {
-class Solver;
-}
+class SolverState;
+struct FrameFields;
+}  // namespace clothlab
 
 namespace clothlab::vis {
 
 class ArrowPass;
 class Renderer;
-class ScalarFieldSampler;
 
 class Diagnostics {
  public:
@@ -32,9 +33,11 @@ class Diagnostics {
 
   // Forgets what depends on the cloth's topology; call with Renderer::set_cloth.
   void set_cloth();
-  // Computes the scalar and the arrows `view` asks for and hands the scalar to `renderer`
-  // (before renderer.draw). Needs a current GL context only when arrows are on.
-  void update(Solver& solver, const ViewSettings& view, Renderer& renderer);
+  // Builds the scalar and the arrows `view` asks for from `fields` (taken for a request that
+  // includes frame_request(view)) and hands the scalar to `renderer` (before renderer.draw).
+  // Needs a current GL context only when arrows are on.
+  void update(const SolverState& solver, const FrameFields& fields, const ViewSettings& view,
+              Renderer& renderer);
   // Draws the arrows over the cloth: right after renderer.draw(), into the same framebuffer.
   void draw(const ViewSettings& view, const Renderer& renderer);
 
@@ -48,18 +51,19 @@ class Diagnostics {
   const std::vector<ArrowInstance>& force_arrows() const { return force_arrows_; }
   const std::vector<ArrowInstance>& normal_arrows() const { return normal_arrows_; }
   const ArrowLayout& arrow_layout() const { return layout_; }
-  // True while any diagnostic state (sampler, arrow pass) is held.
-  bool active() const { return sampler_ || arrows_; }
+  // True while any diagnostic state (scalars, arrow pass) is held.
+  bool active() const { return !scalars_.empty() || arrows_; }
 
  private:
-  std::unique_ptr<ScalarFieldSampler> sampler_;  // while colouring by a scalar
-  std::unique_ptr<ArrowPass> arrows_;            // while arrows are shown
+  std::unique_ptr<ArrowPass> arrows_;  // while arrows are shown
   ArrowLayout layout_;
   int layout_request_ = -1;  // the stride setting layout_ was built for (-1: none)
-  void update_force_vectors(Solver& solver, const ViewSettings& view);
+  // The force arrows' vectors: the view's source, or the springs' where the total is near zero.
+  const std::vector<float>& choose_force_vectors(const SolverState& solver,
+                                                 const FrameFields& fields,
+                                                 const ViewSettings& view);
 
-  std::vector<float> scalars_, positions_, vectors_;
-  std::vector<float> spring_vectors_;  // the springs' force, while it may replace the total
+  std::vector<float> scalars_;
   std::vector<ArrowInstance> force_arrows_, normal_arrows_;
   std::optional<ScalarRange> color_range_, force_range_;
   ForceSource shown_source_ = ForceSource::total;

@@ -8,7 +8,9 @@
 
 #include "gl/program.hpp"
 #include "gl/uploads.hpp"
+#include "sim/fields/frame_fields.hpp"
 #include "sim/solver.hpp"
+#include "vis/render/frame_request.hpp"
 #include "vis/render/renderer.hpp"
 
 namespace clothlab::vis {
@@ -134,20 +136,14 @@ std::optional<ProbeSample> FieldPass::read(int px, int py) const {
   return s;
 }
 
-std::optional<ProbeSample> probe_fields(Solver& solver, const Renderer& renderer, FieldPass& pass,
+std::optional<ProbeSample> probe_fields(const SolverState& solver, const FrameFields& fields,
+                                        const Renderer& renderer, FieldPass& pass,
                                         const glm::mat4& view_proj, int px, int py) {
   if (px < 0 || py < 0 || px >= pass.width() || py >= pass.height()) return std::nullopt;
-  const std::size_t n = solver.vertex_count();
-  std::vector<float>& force = pass.force_scratch;
-  std::vector<float>& velocity = pass.velocity_scratch;
-  force.resize(3 * n);
-  velocity.resize(3 * n);
-  solver.update_force_field();
-  for (std::size_t v = 0; v < n; ++v) {
-    const Vec3d f = solver.force(static_cast<int>(v));
-    for (int k = 0; k < 3; ++k) force[3 * v + k] = static_cast<float>(f[k]);
-  }
-  solver.copy_velocities(velocity.data());
+  const std::vector<float>& force = fields.force(ForceSource::total);
+  const std::vector<float>& velocity = fields.velocities;
+  require_field(force, 3 * fields.vertices, "the probe's total force");
+  require_field(velocity, 3 * fields.vertices, "the probe's velocities");
   pass.draw(renderer, force, velocity, view_proj);
   // One pixel read back per call with glReadPixels, which waits for the draw (a pixel buffer
   // object read one frame late would avoid the stall; one pixel a frame is cheap enough).

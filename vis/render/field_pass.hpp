@@ -12,8 +12,9 @@
 #include "gl/objects.hpp"
 
 namespace clothlab {
-class Solver;
-}
+class SolverState;
+struct FrameFields;
+}  // namespace clothlab
 
 namespace clothlab::vis {
 
@@ -50,9 +51,6 @@ class FieldPass {
 
   int width() const { return width_; }
   int height() const { return height_; }
-  // Scratch for probe_fields: force and velocity per vertex, kept so a probe every frame does
-  // not allocate.
-  std::vector<float> force_scratch, velocity_scratch;
 
  private:
   int width_, height_;
@@ -65,13 +63,14 @@ class FieldPass {
   std::vector<float> copy_scratch_;  // the seam copies' force, then velocity
 };
 
-// The one probe both the headless renderer and the window use: computes the solver's force field
-// (its only caller on these paths, so nothing pays for it unless something probes), uploads
-// force and velocity, draws `pass` with `renderer`'s cloth (positions from its last
-// update_cloth(), which the caller does), reads pixel (px, py) (row 0 at the top) and names the
-// triangle's vertex nearest to the surface point there. Nothing where the pixel misses the cloth
-// or lies outside the pass. Leaves the pass's framebuffer bound.
-std::optional<ProbeSample> probe_fields(Solver& solver, const Renderer& renderer, FieldPass& pass,
+// The one probe both the headless renderer and the window use: uploads the snapshot's total force
+// and velocities (`fields` taken for frame_request(view, renderer, true), so nothing pays for
+// them unless something probes), draws `pass` with `renderer`'s cloth (positions from its last
+// update_cloth(), which the caller does with the same snapshot), reads pixel (px, py) (row 0 at
+// the top) and names the triangle's vertex nearest to the surface point there. Nothing where the
+// pixel misses the cloth or lies outside the pass. Leaves the pass's framebuffer bound.
+std::optional<ProbeSample> probe_fields(const SolverState& solver, const FrameFields& fields,
+                                        const Renderer& renderer, FieldPass& pass,
                                         const glm::mat4& view_proj, int px, int py);
 
 }  // namespace clothlab::vis

@@ -1,6 +1,5 @@
 #include "vis/render/headless_renderer.hpp"
 
-#include "sim/solver.hpp"
 #include "vis/overlay/headless_overlay.hpp"
 #include "vis/overlay/legends.hpp"
 #include "vis/render/render_quality.hpp"
@@ -10,11 +9,12 @@ namespace clothlab::vis {
 HeadlessRenderer::HeadlessRenderer(int width, int height) : target_(width, height) {}
 HeadlessRenderer::~HeadlessRenderer() = default;
 
-void HeadlessRenderer::draw(Solver& solver, const ViewSettings& view) {
+void HeadlessRenderer::draw(const SolverState& solver, const FrameFields& fields,
+                            const ViewSettings& view) {
   const int samples = msaa_samples(renderer_.quality(view), view.mode);
   if (samples != target_.samples()) target_ = OffscreenTarget(width(), height(), samples);
-  renderer_.update_cloth(solver);
-  diagnostics_.update(solver, view, renderer_);
+  renderer_.update_cloth(fields);
+  diagnostics_.update(solver, fields, view, renderer_);
   target_.bind();
   renderer_.draw(view, target_.width(), target_.height());
   if (PassTimer* timer = renderer_.pass_timer()) timer->begin(Pass::overlay);
@@ -31,18 +31,21 @@ void HeadlessRenderer::draw(Solver& solver, const ViewSettings& view) {
   if (PassTimer* timer = renderer_.pass_timer()) timer->end();
 }
 
-std::vector<std::uint8_t> HeadlessRenderer::render(Solver& solver, const ViewSettings& view) {
-  draw(solver, view);
+std::vector<std::uint8_t> HeadlessRenderer::render(const SolverState& solver,
+                                                   const FrameFields& fields,
+                                                   const ViewSettings& view) {
+  draw(solver, fields, view);
   return target_.read_rgba();
 }
 
-std::optional<ProbeSample> HeadlessRenderer::probe(Solver& solver, const ViewSettings& view, int px,
-                                                   int py) {
+std::optional<ProbeSample> HeadlessRenderer::probe(const SolverState& solver,
+                                                   const FrameFields& fields,
+                                                   const ViewSettings& view, int px, int py) {
   if (px < 0 || py < 0 || px >= width() || py >= height()) return std::nullopt;
-  if (!fields_) fields_ = std::make_unique<FieldPass>(width(), height());
-  renderer_.update_cloth(solver);
-  return probe_fields(solver, renderer_, *fields_, view_projection(view.camera, width(), height()),
-                      px, py);
+  if (!field_pass_) field_pass_ = std::make_unique<FieldPass>(width(), height());
+  renderer_.update_cloth(fields);
+  return probe_fields(solver, fields, renderer_, *field_pass_,
+                      view_projection(view.camera, width(), height()), px, py);
 }
 
 }  // namespace clothlab::vis

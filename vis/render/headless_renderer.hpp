@@ -13,6 +13,7 @@
 #include "vis/overlay/legends.hpp"
 #include "vis/render/diagnostics.hpp"
 #include "vis/render/field_pass.hpp"
+#include "vis/render/frame_request.hpp"
 #include "vis/render/renderer.hpp"
 
 namespace clothlab::vis {
@@ -35,17 +36,25 @@ class HeadlessRenderer {
                  const std::vector<ColliderSpec>& colliders = {}) {
     renderer_.set_scene(spec, solver, colliders);
   }
-  // Uploads the solver's state (and what the view's diagnostics need) and draws the frame, with
-  // its colour bars, into the multisampled target, without reading it back.
-  void draw(Solver& solver, const ViewSettings& view);
+  // The fields draw() and probe() read for `view`: take the frame's snapshot with this request
+  // (sim/fields/frame_fields.hpp; `probe` adds the probe's fields).
+  FieldRequest request(const ViewSettings& view, bool probe = false) const {
+    return frame_request(view, renderer_, probe);
+  }
+  // Uploads the snapshot (and what the view's diagnostics need) and draws the frame, with its
+  // colour bars, into the multisampled target, without reading it back. `solver` is the one the
+  // snapshot was taken of (its topology and pins).
+  void draw(const SolverState& solver, const FrameFields& fields, const ViewSettings& view);
   // draw(), then the resolved image: RGBA rows, top first.
-  std::vector<std::uint8_t> render(Solver& solver, const ViewSettings& view);
+  std::vector<std::uint8_t> render(const SolverState& solver, const FrameFields& fields,
+                                   const ViewSettings& view);
 
-  // The fields under pixel (px, py), row 0 at the top, for the solver's current state seen
-  // with `view`: draws the field pass (built on first use) after computing the solver's force
-  // field, reads the one pixel and names the vertex of the triangle there nearest to the
-  // surface point. Nothing where the pixel misses the cloth or lies outside the image.
-  std::optional<ProbeSample> probe(Solver& solver, const ViewSettings& view, int px, int py);
+  // The fields under pixel (px, py), row 0 at the top, of the snapshot (taken for
+  // request(view, true)) seen with `view`: draws the field pass (built on first use), reads the
+  // one pixel and names the vertex of the triangle there nearest to the surface point. Nothing
+  // where the pixel misses the cloth or lies outside the image.
+  std::optional<ProbeSample> probe(const SolverState& solver, const FrameFields& fields,
+                                   const ViewSettings& view, int px, int py);
 
   int width() const { return target_.width(); }
   int height() const { return target_.height(); }
@@ -66,7 +75,7 @@ class HeadlessRenderer {
   Diagnostics diagnostics_;
   std::unique_ptr<HeadlessOverlay> overlay_;  // only once a legend is drawn
   std::vector<LegendBar> legends_;
-  std::unique_ptr<FieldPass> fields_;  // only once something probes
+  std::unique_ptr<FieldPass> field_pass_;  // only once something probes
 };
 
 }  // namespace clothlab::vis

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "gl/program.hpp"
+#include "sim/fields/frame_fields.hpp"
 #include "sim/solver.hpp"
 #include "vis/colormap/colormap_texture.hpp"
 #include "vis/passes/diffusion_pass.hpp"
@@ -88,9 +89,13 @@ void Renderer::set_cloth(const SolverState& solver) {
   cloth_.build(solver);
 }
 
-void Renderer::update_cloth(Solver& solver) {
-  cloth_.update(solver);
-  if (colliders_) colliders_->update(solver.time());  // where the moving ones are now
+void Renderer::update_cloth(const FrameFields& fields) {
+  cloth_.update(fields);
+  if (colliders_) colliders_->update(fields.time);  // where the moving ones are now
+}
+
+bool Renderer::draws_springs(const ViewSettings& view) const {
+  return view.mode == DisplayMode::springs || cloth_.triangle_indices() == 0;
 }
 
 void Renderer::set_scalars(const std::vector<float>& values, ScalarRange range) {
@@ -192,9 +197,8 @@ glm::mat4 Renderer::upload_frame(const ViewSettings& view, int width, int height
                                  bool translucent) {
   FrameBlock frame = make_frame(view, light_, width, height, translucent);
   // Springs are drawn in mode 1, and in every mode for a cloth without triangles.
-  const bool springs = view.mode == DisplayMode::springs || cloth_.triangle_indices() == 0;
-  if (!(view.strain_range > 0.0f))
-    frame.params.x = springs ? cloth_.strain_quantile(kStrainRangeQuantile) : kMinStrainRange;
+  const bool springs = draws_springs(view);
+  if (!(view.strain_range > 0.0f)) frame.params.x = springs ? cloth_.strain_top() : kMinStrainRange;
   strain_range_.reset();
   if (springs) strain_range_ = ScalarRange{-frame.params.x, frame.params.x};
   glNamedBufferSubData(frame_ubo_.get(), 0, sizeof frame, &frame);

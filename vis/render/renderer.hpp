@@ -26,6 +26,7 @@
 namespace clothlab {
 class Solver;
 class SolverState;
+struct FrameFields;
 struct Image;
 }  // namespace clothlab
 
@@ -50,13 +51,14 @@ class Renderer {
   // plane is the floor, which scene_view() places). Call after set_cloth.
   void set_scene(const RenderSpec& spec, const Solver& solver,
                  const std::vector<ColliderSpec>& colliders = {});
-  // Uploads the current positions and smooth normals (computed in parallel by the solver) into
-  // the vertex buffer, in place, and poses moving colliders at the solver's time(). Call once
-  // per frame before draw().
-  // With the GPU backend (Solver::device_cloth()) the positions and normals go from the solver's
-  // buffers into the vertex buffer by a compute pass (ClothGeometry), never through the CPU; the
-  // CPU reads only the state mirror the solver keeps anyway, for the cloth's bounds.
-  void update_cloth(Solver& solver);
+  // Uploads the snapshot's positions and smooth normals into the vertex buffer, in place, and
+  // poses moving colliders at its time. Call once per frame before draw(), with a snapshot taken
+  // for frame_request(view, *this) (vis/render/frame_request.hpp). With the GPU backend
+  // (FrameFields::device) the positions and normals go from the solver's device buffers to the
+  // vertex buffer on the GPU.
+  void update_cloth(const FrameFields& fields);
+  // Whether draw(view) draws the springs (mode 1, or a cloth without triangles in any mode).
+  bool draws_springs(const ViewSettings& view) const;
   // The colour-by scalar, one per vertex (vertex_count() values), and the range the colour map
   // spans, for draws while view.color.field is not none.
   void set_scalars(const std::vector<float>& values, ScalarRange range);

@@ -1,8 +1,7 @@
 // The scalars the cloth can be coloured by (ViewSettings::color): per-vertex values computed on
-// the CPU from the solver's state, only while they are shown. Plain data out, no GL.
+// the CPU from the frame's field snapshot, only while they are shown. Plain data out, no GL.
 #pragma once
 
-#include <array>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -11,7 +10,7 @@
 #include "vis/render/view_settings.hpp"
 
 namespace clothlab {
-class SolverState;
+struct FrameFields;
 }
 
 namespace clothlab::vis {
@@ -23,22 +22,11 @@ std::string_view scalar_field_title(ScalarField field);  // "|force|", "|velocit
 // Signed fields (strain) read best on a diverging map with a symmetric range.
 bool scalar_field_signed(ScalarField field);
 
-// Computes one scalar per vertex. Built for one cloth topology (rebuild after Solver resets that
-// change it); compute() never allocates once `out` has the vertex count.
-class ScalarFieldSampler {
- public:
-  explicit ScalarFieldSampler(const SolverState& solver);
-
-  // |force| (of `source`, after solver.update_force_field(source)), |velocity|, strain or height
-  // (world y). Strain at a vertex is the mean engineering strain (l - l0) / l0 of the springs
-  // that end there, l0 the spring's built length (the seed rule's rest length).
-  void compute(SolverState& solver, ScalarField field, ForceSource source, std::vector<float>& out);
-
- private:
-  std::vector<std::array<int, 2>> springs_;
-  std::vector<float> rest_length_;  // per spring, m
-  std::vector<float> inv_degree_;   // per vertex, 1 / springs ending there (0 for none)
-  std::vector<float> xyz_;          // scratch: positions or velocities
-};
+// One scalar per vertex from the frame's snapshot into `out`: |force| of `source`, |velocity|,
+// strain (the mean engineering strain (l - l0) / l0 of the springs that end at the vertex,
+// sim/fields/spring_strain.hpp) or height (world y). The snapshot must hold the field
+// (frame_request asks for it); never allocates once `out` has the vertex count.
+void scalar_values(const FrameFields& fields, ScalarField field, ForceSource source,
+                   std::vector<float>& out);
 
 }  // namespace clothlab::vis
