@@ -31,18 +31,54 @@ Texture upload_rgba_texture(int width, int height, const std::uint8_t* rgba, boo
   return t;
 }
 
-void float_attribute(GLuint vao, GLuint index, GLuint binding, int components) {
+Texture srgb_table_texture(const std::uint8_t* rgb, const std::string& label) {
+  Texture t = make_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(t.get(), 1, GL_SRGB8, 256, 1);
+  // One row of tightly packed 3-byte texels: the unpack alignment, which only spaces rows, does
+  // not matter.
+  glTextureSubImage2D(t.get(), 0, 0, 0, 256, 1, GL_RGB, GL_UNSIGNED_BYTE, rgb);
+  glTextureParameteri(t.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(t.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(t.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(t.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glObjectLabel(GL_TEXTURE, t.get(), -1, label.c_str());
+  return t;
+}
+
+void float_attribute(GLuint vao, GLuint index, GLuint binding, int components, std::size_t offset) {
   glEnableVertexArrayAttrib(vao, index);
-  glVertexArrayAttribFormat(vao, index, components, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribFormat(vao, index, components, GL_FLOAT, GL_FALSE,
+                            static_cast<GLuint>(offset));
   glVertexArrayAttribBinding(vao, index, binding);
 }
 
+void vertex_buffer(GLuint vao, GLuint binding, GLuint buffer, std::size_t offset,
+                   std::size_t stride) {
+  glVertexArrayVertexBuffer(vao, binding, buffer, static_cast<GLintptr>(offset),
+                            static_cast<GLsizei>(stride));
+}
+
+void element_buffer(GLuint vao, GLuint buffer) {
+  glVertexArrayElementBuffer(vao, buffer);
+}
+
 Buffer dynamic_float_buffer(std::size_t floats) {
+  return dynamic_buffer(std::max<std::size_t>(1, floats) * sizeof(float));
+}
+
+Buffer dynamic_buffer(std::size_t bytes) {
   Buffer b = make_buffer();
-  glNamedBufferStorage(b.get(),
-                       static_cast<GLsizeiptr>(std::max<std::size_t>(1, floats) * sizeof(float)),
-                       nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(b.get(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, bytes)), nullptr,
+                       GL_DYNAMIC_STORAGE_BIT);
   return b;
+}
+
+void update_buffer(GLuint buffer, const void* data, std::size_t bytes, std::size_t offset) {
+  glNamedBufferSubData(buffer, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
+}
+
+void bind_uniform_buffer(GLuint index, GLuint buffer) {
+  glBindBufferBase(GL_UNIFORM_BUFFER, index, buffer);
 }
 
 }  // namespace clothlab::vis

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "gl/objects.hpp"
@@ -17,8 +18,19 @@ float max_anisotropy();
 // (albedo) or linear (normal maps, masks). vis/textures/image_texture.hpp takes an Image.
 Texture upload_rgba_texture(int width, int height, const std::uint8_t* rgba, bool srgb);
 
-// Attribute `index` of `vao`: `components` floats from binding `binding`.
-void float_attribute(GLuint vao, GLuint index, GLuint binding, int components);
+// A 256 x 1 sRGB texture of 256 RGB8 texels (a colour map's table): linear filtering, clamped,
+// labelled `label` for GL debuggers.
+Texture srgb_table_texture(const std::uint8_t* rgb, const std::string& label);
+
+// Attribute `index` of `vao`: `components` floats from binding `binding`, `offset` bytes into
+// each element.
+void float_attribute(GLuint vao, GLuint index, GLuint binding, int components,
+                     std::size_t offset = 0);
+// Binding `binding` of `vao` reads `buffer` from byte `offset` in elements of `stride` bytes.
+void vertex_buffer(GLuint vao, GLuint binding, GLuint buffer, std::size_t offset,
+                   std::size_t stride);
+// `vao`'s index buffer.
+void element_buffer(GLuint vao, GLuint buffer);
 
 // An immutable buffer holding `data` (at least one byte, so an empty vector is a valid buffer).
 template <class T>
@@ -30,7 +42,17 @@ Buffer static_buffer(const std::vector<T>& data, GLbitfield flags = 0) {
   return b;
 }
 
-// A buffer of `floats` floats (at least one) that glNamedBufferSubData updates.
+// A buffer of `floats` floats (at least one) that update_buffer() fills.
 Buffer dynamic_float_buffer(std::size_t floats);
+// A buffer of `bytes` bytes (at least one) that update_buffer() fills.
+Buffer dynamic_buffer(std::size_t bytes);
+// Writes `bytes` bytes of `data` into a dynamic buffer at byte `offset`.
+void update_buffer(GLuint buffer, const void* data, std::size_t bytes, std::size_t offset = 0);
+template <class T>
+void update_buffer(GLuint buffer, const std::vector<T>& data) {
+  update_buffer(buffer, data.data(), data.size() * sizeof(T));
+}
+// Binds `buffer` to uniform block binding `index`.
+void bind_uniform_buffer(GLuint index, GLuint buffer);
 
 }  // namespace clothlab::vis

@@ -1,7 +1,7 @@
 #version 450 core
 #include "frame.glsl"
 
-// Instanced arrow glyphs (vis/render/arrow_pass.cpp). The mesh gives each vertex a direction
+// Instanced arrow glyphs (vis/passes/arrow_pass.cpp). The mesh gives each vertex a direction
 // around the axis and a ring; the ring's radius and height follow from the arrow's length:
 // shaft radius r = min(u_radius, L / 10), head 2.2 r wide and L / 4 long (Polyscope keeps the
 // radius at most a fifth of the length so the length stays readable).

@@ -1,6 +1,6 @@
 #version 450 core
 
-// The field pass (vis/render/field_pass.cpp): the cloth as in the main pass, carrying the
+// The field pass (vis/passes/field_pass.cpp): the cloth as in the main pass, carrying the
 // solver's per-vertex force and velocity to be read back as floats under a probed pixel.
 layout(location = 0) uniform mat4 u_view_proj;  // the main pass's camera (view_projection())
 

@@ -4,6 +4,8 @@
 // on sim/. A file may include its own folder and
 // the folders below it, never one beside or above it. And the renderer reads the solver: no
 // header under vis/ takes a mutable solver (docs/design.md, "One field snapshot per frame").
+// Raw GL calls stay in gl/, the passes' draw code (vis/passes/) and the GPU step's dispatches
+// (gpu/); GL objects are made and deleted only by gl/'s RAII wrappers.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -121,6 +123,69 @@ TEST(Layering, TheScanFindsAMutableSolver) {
   fs::remove_all(root);
   ASSERT_EQ(bad.size(), 1u);
   EXPECT_EQ(bad[0], "vis/render/a.hpp:3: void g(const FrameFields& f, Solver &s);");
+}
+
+// Every raw GL call (gl + capital, then an opening parenthesis) in the C++ files under
+// root/folder outside the subfolders `allowed`, as "file:line: text"; with `objects_only`, only
+// calls that create or delete GL objects (glCreate*, glGen* but glGenerate*, glDelete*).
+std::vector<std::string> raw_gl_calls(const fs::path& root, const std::string& folder,
+                                      const std::vector<std::string>& allowed, bool objects_only) {
+  const std::regex call(objects_only ? R"re(\bgl(Create|Delete|Gen(?!erate))[A-Z]\w*\s*\()re"
+                                     : R"re(\bgl[A-Z]\w*\s*\()re");
+  const std::regex comment(R"re(^\s*//)re");
+  std::vector<std::string> bad;
+  if (!fs::exists(root / folder)) return bad;
+  for (const auto& entry : fs::recursive_directory_iterator(root / folder)) {
+    const std::string ext = entry.path().extension().string();
+    if (ext != ".cpp" && ext != ".hpp") continue;
+    const std::string rel = fs::relative(entry.path(), root).string();
+    bool exempt = false;
+    for (const std::string& a : allowed) exempt = exempt || rel.rfind(a + "/", 0) == 0;
+    if (exempt) continue;
+    std::ifstream in(entry.path());
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number)
+      if (!std::regex_search(line, comment) && std::regex_search(line, call))
+        bad.push_back(rel + ":" + std::to_string(number) + ": " + line);
+  }
+  return bad;
+}
+
+TEST(Layering, RawGlCallsStayInGlPassesAndTheGpuStep) {
+  for (const std::string folder : {"sim", "music", "load", "factory", "vis", "bench", "apps"}) {
+    const std::vector<std::string> bad =
+        raw_gl_calls(CLOTHLAB_SOURCE_DIR, folder, {"vis/passes"}, false);
+    EXPECT_TRUE(bad.empty()) << bad.size() << " raw GL calls in " << folder << "/, e.g. "
+                             << bad.front();
+  }
+}
+
+TEST(Layering, GlObjectsComeOnlyFromTheRaiiWrappers) {
+  for (const std::string folder : {"vis", "gpu", "bench", "apps"}) {
+    const std::vector<std::string> bad = raw_gl_calls(CLOTHLAB_SOURCE_DIR, folder, {}, true);
+    EXPECT_TRUE(bad.empty()) << bad.size() << " GL objects made by hand in " << folder << "/, e.g. "
+                             << bad.front();
+  }
+}
+
+// The scans find a call outside the passes (not glfw's, not in a comment), and a sampler made
+// by hand in a pass but not a mipmap generated there.
+TEST(Layering, TheScanFindsRawGlCalls) {
+  const fs::path root = fs::temp_directory_path() / "clothlab_layering_gl_test";
+  fs::remove_all(root);
+  fs::create_directories(root / "vis/render");
+  fs::create_directories(root / "vis/passes");
+  std::ofstream(root / "vis/render/a.cpp")
+      << "glfwPollEvents();\n// glEnable(GL_BLEND);\n  glEnable (GL_BLEND);\n";
+  std::ofstream(root / "vis/passes/b.cpp")
+      << "glGenerateTextureMipmap(t);\nglCreateSamplers(1, &s);\nglDrawArrays(m, 0, 3);\n";
+  const std::vector<std::string> calls = raw_gl_calls(root, "vis", {"vis/passes"}, false);
+  const std::vector<std::string> objects = raw_gl_calls(root, "vis", {}, true);
+  fs::remove_all(root);
+  ASSERT_EQ(calls.size(), 1u);
+  EXPECT_EQ(calls[0], "vis/render/a.cpp:3:   glEnable (GL_BLEND);");
+  ASSERT_EQ(objects.size(), 1u);
+  EXPECT_EQ(objects[0], "vis/passes/b.cpp:2: glCreateSamplers(1, &s);");
 }
 
 }  // namespace

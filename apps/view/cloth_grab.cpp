@@ -4,7 +4,7 @@
 #include <cstdio>
 
 #include "sim/solver.hpp"
-#include "vis/render/field_pass.hpp"
+#include "vis/passes/field_pass.hpp"
 #include "vis/render/view_ray.hpp"
 
 namespace clothlab::vis {

@@ -10,7 +10,7 @@
 #include "apps/view/frame_stats.hpp"
 #include "apps/view/input.hpp"
 #include "apps/view/sim_session.hpp"
-#include "vis/render/field_pass.hpp"
+#include "vis/passes/field_pass.hpp"
 #include "vis/render/view_settings.hpp"
 
 namespace clothlab::vis {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "gl/draw_state.hpp"
 #include "gl/gl.hpp"
 #include "gl/gl_error.hpp"
 #define GLFW_INCLUDE_NONE
@@ -28,17 +29,6 @@ bool has_display_variable() {
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
   return (x11 && *x11) || (wayland && *wayland);
 }
-
-#ifndef NDEBUG
-// Debug builds: the driver reports every error where it happens (synchronous output), so a
-// debugger's backtrace points at the offending call. Notifications are too chatty to print.
-void APIENTRY print_gl_message(GLenum, GLenum type, GLuint, GLenum severity, GLsizei,
-                               const GLchar* message, const void*) {
-  if (severity == GL_DEBUG_SEVERITY_NOTIFICATION) return;
-  std::fprintf(stderr, "clothlab view: GL %s: %s\n",
-               type == GL_DEBUG_TYPE_ERROR ? "error" : "warning", message);
-}
-#endif
 
 }  // namespace
 
@@ -89,9 +79,7 @@ GlfwWindow::GlfwWindow(const std::string& title, int width, int height) {
                         std::string(kHeadlessHint));
   }
 #ifndef NDEBUG
-  glEnable(GL_DEBUG_OUTPUT);
-  glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
-  glDebugMessageCallback(print_gl_message, nullptr);
+  enable_debug_output("clothlab view");
 #endif
 }
 

@@ -8,7 +8,7 @@
 
 #include "apps/view/control_panel.hpp"
 #include "sim/solver.hpp"
-#include "vis/render/field_pass.hpp"
+#include "vis/passes/field_pass.hpp"
 
 namespace clothlab::vis {
 

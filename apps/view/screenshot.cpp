@@ -5,27 +5,13 @@
 #include <cstring>
 #include <ctime>
 
-#include "gl/gl.hpp"
+#include "gl/draw_state.hpp"
 
 namespace clothlab::vis {
 
 Image read_default_framebuffer(int width, int height) {
   Image image(width, height);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  glReadBuffer(GL_BACK);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-  // GL's row 0 is the bottom; Image's is the top.
-  const std::size_t row = 4 * std::size_t(width);
-  std::vector<std::uint8_t> swap(row);
-  for (int y = 0; y < height / 2; ++y) {
-    std::uint8_t* a = image.at(0, y);
-    std::uint8_t* b = image.at(0, height - 1 - y);
-    std::memcpy(swap.data(), a, row);
-    std::memcpy(a, b, row);
-    std::memcpy(b, swap.data(), row);
-  }
-  for (std::size_t i = 3; i < image.rgba.size(); i += 4) image.rgba[i] = 255;
+  image.rgba = read_window_rgba(width, height);
   return image;
 }
 

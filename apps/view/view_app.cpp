@@ -16,12 +16,13 @@
 #include "apps/view/screenshot.hpp"
 #include "apps/view/views_panel.hpp"
 #include "factory/solver_factory.hpp"
+#include "gl/draw_state.hpp"
 #include "gl/gl.hpp"
 #include "gl/offscreen_target.hpp"
 #include "sim/solver.hpp"
 #include "sim/trace/trace_run.hpp"
+#include "vis/passes/field_pass.hpp"
 #include "vis/render/diagnostics.hpp"
-#include "vis/render/field_pass.hpp"
 #include "vis/render/frame_request.hpp"
 #include "vis/render/render_quality.hpp"
 #include "vis/render/renderer.hpp"
@@ -440,10 +441,9 @@ void ViewApp::draw(int width, int height) {
     if (!panel_.probe) field_pass_.reset();
   }
   if (panel_.probe) probe_under_cursor(width, height);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glViewport(0, 0, width, height);
+  bind_target(0, width, height);
   // The UI's colours are sRGB already: no second encoding.
-  glDisable(GL_FRAMEBUFFER_SRGB);
+  set_capability(GL_FRAMEBUFFER_SRGB, false);
   imgui_->end_frame();
 }
 
@@ -453,8 +453,7 @@ void ViewApp::bind_scene_target(int width, int height) {
   const int samples = msaa_samples(renderer_->quality(view_), view_.mode);
   if (samples <= 1) {
     scene_target_.reset();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, width, height);
+    bind_target(0, width, height);
     return;
   }
   if (!scene_target_ || scene_target_->width() != width || scene_target_->height() != height ||

@@ -9,7 +9,7 @@
 #include "apps/view/view_app.hpp"
 #include "sim/solver.hpp"
 #include "sim/trace/trace_run.hpp"
-#include "vis/render/field_pass.hpp"
+#include "vis/passes/field_pass.hpp"
 #include "vis/render/renderer.hpp"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

@@ -13,7 +13,7 @@
 
 #include "bench/suites/step_timing.hpp"
 #include "bench/suites/suites.hpp"
-#include "gl/gl.hpp"
+#include "gl/draw_state.hpp"
 #include "load/scene_load.hpp"
 #include "sim/fields/frame_fields.hpp"
 #include "sim/solver.hpp"
@@ -86,7 +86,7 @@ void time_variant(vis::HeadlessRenderer& renderer, Solver& solver, const vis::Vi
                   int frames, Series& series) {
   FieldSnapshot snapshot;
   renderer.draw(solver, snapshot.take(solver, renderer.request(view)), view);
-  glFinish();
+  vis::finish_gpu_work();
   std::array<double, vis::kPassCount> sum{};
   double wall = 0.0;
   for (int f = 0; f < frames; ++f) {

@@ -14,7 +14,7 @@
 #include <stdexcept>
 
 #include "bench/suites/suites.hpp"
-#include "gl/gl.hpp"
+#include "gl/draw_state.hpp"
 #include "load/scene_load.hpp"
 #include "sim/fields/frame_fields.hpp"
 #include "sim/scene/validate.hpp"
@@ -135,7 +135,7 @@ Timing time_variant(vis::HeadlessRenderer& renderer, Solver& solver, const vis::
         (void)renderer.render(solver, fields, view);
       } else {
         renderer.draw(solver, fields, view);  // render() without the resolve and readback
-        glFinish();                           // count the GPU's work
+        vis::finish_gpu_work();               // count the GPU's work
       }
       probe();
       if (f == 0) continue;

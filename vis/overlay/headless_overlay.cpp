@@ -3,7 +3,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
-#include "gl/gl.hpp"
+#include "gl/draw_state.hpp"
 
 namespace clothlab::vis {
 namespace {
@@ -53,9 +53,9 @@ void HeadlessOverlay::draw(int width, int height, const std::function<void(ImDra
   ImGui::NewFrame();
   build(ImGui::GetForegroundDrawList());
   ImGui::Render();
-  glDisable(GL_FRAMEBUFFER_SRGB);
+  // The UI's colours are sRGB already: no second encoding.
+  const ScopedCapability srgb_off(GL_FRAMEBUFFER_SRGB, false);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-  glEnable(GL_FRAMEBUFFER_SRGB);
 }
 
 }  // namespace clothlab::vis

@@ -21,7 +21,7 @@ void ClothGeometry::build(const SolverState& solver) {
   triangle_indices_ = static_cast<GLsizei>(layout_.triangles.size());
   line_indices_ = static_cast<GLsizei>(layout_.lines.size());
   dynamic_vbo_ = dynamic_float_buffer(6 * rn);
-  seam_source_ = Buffer();
+  pack_.set_seams(layout_.seam_copies);
   static_vbo_ = static_buffer(layout_.fixed);
   scalar_vbo_ = dynamic_float_buffer(rn);
   tangent_vbo_ = dynamic_float_buffer(4 * rn);
@@ -42,25 +42,23 @@ void ClothGeometry::make_vertex_arrays() {
   const std::size_t rn = layout_.render_vertices();
   cloth_vao_ = make_vertex_array();
   line_vao_ = make_vertex_array();
+  const std::size_t f = sizeof(float);
   for (GLuint vao : {cloth_vao_.get(), line_vao_.get()}) {
-    const auto n_bytes = static_cast<GLintptr>(3 * rn * sizeof(float));
-    glVertexArrayVertexBuffer(vao, 0, dynamic_vbo_.get(), 0, 3 * sizeof(float));
-    glVertexArrayVertexBuffer(vao, 1, dynamic_vbo_.get(), n_bytes, 3 * sizeof(float));
-    glVertexArrayVertexBuffer(vao, 2, static_vbo_.get(), 0, 2 * sizeof(float));
-    glVertexArrayVertexBuffer(vao, 3, static_vbo_.get(),
-                              static_cast<GLintptr>(2 * rn * sizeof(float)), 3 * sizeof(float));
+    vertex_buffer(vao, 0, dynamic_vbo_.get(), 0, 3 * f);
+    vertex_buffer(vao, 1, dynamic_vbo_.get(), 3 * rn * f, 3 * f);
+    vertex_buffer(vao, 2, static_vbo_.get(), 0, 2 * f);
+    vertex_buffer(vao, 3, static_vbo_.get(), 2 * rn * f, 3 * f);
     for (GLuint a = 0; a < 4; ++a) float_attribute(vao, a, a, a == 2 ? 2 : 3);
   }
   const GLuint vao = cloth_vao_.get();
-  glVertexArrayVertexBuffer(vao, 4, scalar_vbo_.get(), 0, sizeof(float));
+  vertex_buffer(vao, 4, scalar_vbo_.get(), 0, f);
   float_attribute(vao, 4, 4, 1);
-  glVertexArrayVertexBuffer(vao, 5, tangent_vbo_.get(), 0, 4 * sizeof(float));
+  vertex_buffer(vao, 5, tangent_vbo_.get(), 0, 4 * f);
   float_attribute(vao, 5, 5, 4);
-  glVertexArrayVertexBuffer(vao, 6, static_vbo_.get(),
-                            static_cast<GLintptr>(5 * rn * sizeof(float)), 2 * sizeof(float));
+  vertex_buffer(vao, 6, static_vbo_.get(), 5 * rn * f, 2 * f);
   float_attribute(vao, 6, 6, 2);
-  glVertexArrayElementBuffer(vao, triangle_ebo_.get());
-  glVertexArrayElementBuffer(line_vao_.get(), line_ebo_.get());
+  element_buffer(vao, triangle_ebo_.get());
+  element_buffer(line_vao_.get(), line_ebo_.get());
 }
 
 void ClothGeometry::update(const FrameFields& fields) {
@@ -71,14 +69,14 @@ void ClothGeometry::update(const FrameFields& fields) {
   update_bounds();
   tangents_stale_ = true;
   if (!fields.spring_strain.empty()) update_strain_top(fields.spring_strain);
-  if (device_) return pack_from_device(*device_);
+  if (device_)
+    return pack_.pack(*device_, layout_.vertices, layout_.render_vertices(), dynamic_vbo_.get());
   const std::size_t rn = layout_.render_vertices();
   std::copy(fields.normals.begin(), fields.normals.end(), staging_.begin() + 3 * rn);
   // The seam copies take their solver vertex's position and normal.
   copy_seams(staging_.data(), 3, 0);
   copy_seams(staging_.data(), 3, 3 * rn);
-  glNamedBufferSubData(dynamic_vbo_.get(), 0,
-                       static_cast<GLsizeiptr>(staging_.size() * sizeof(float)), staging_.data());
+  update_buffer(dynamic_vbo_.get(), staging_);
 }
 
 void ClothGeometry::update_strain_top(const std::vector<float>& spring_strain) {
@@ -115,36 +113,13 @@ void ClothGeometry::update_bounds() {
   hi_ = hi;
 }
 
-void ClothGeometry::pack_from_device(const DeviceCloth& device) {
-  const std::size_t rn = layout_.render_vertices();
-  if (!pack_program_) pack_program_ = build_program({"cloth_pack.comp"});
-  if (!seam_source_) {  // after each build
-    const std::vector<std::int32_t> seams(layout_.seam_copies.begin(), layout_.seam_copies.end());
-    seam_source_ = static_buffer(seams);
-  }
-  const GLuint p = pack_program_.get();
-  glProgramUniform1ui(p, glGetUniformLocation(p, "n"), static_cast<GLuint>(layout_.vertices));
-  glProgramUniform1ui(p, glGetUniformLocation(p, "render_n"), static_cast<GLuint>(rn));
-  glUseProgram(p);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, device.position_buffer());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, device.normal_buffer());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, seam_source_.get());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, dynamic_vbo_.get());
-  glDispatchCompute(static_cast<GLuint>((rn + 63) / 64), 1, 1);
-  glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
-                  GL_BUFFER_UPDATE_BARRIER_BIT);
-  glUseProgram(0);
-}
-
 void ClothGeometry::set_scalars(const std::vector<float>& values) {
   if (values.size() != layout_.vertices)
     throw std::invalid_argument("Renderer::set_scalars: one value per vertex expected");
   // Through the staging copy (sized by build: no allocation per frame), seam copies filled.
   std::copy(values.begin(), values.end(), scalar_staging_.begin());
   copy_seams(scalar_staging_.data(), 1, 0);
-  glNamedBufferSubData(scalar_vbo_.get(), 0,
-                       static_cast<GLsizeiptr>(scalar_staging_.size() * sizeof(float)),
-                       scalar_staging_.data());
+  update_buffer(scalar_vbo_.get(), scalar_staging_);
 }
 
 // The tangent frame of every cloth from the positions and normals of the last update(), only
@@ -167,8 +142,7 @@ void ClothGeometry::update_tangents() {
   }
   // A seam copy has column 0's frame: the ring's dP/du is continuous there, so is the frame.
   copy_seams(tangents_.data(), 4, 0);
-  glNamedBufferSubData(tangent_vbo_.get(), 0,
-                       static_cast<GLsizeiptr>(tangents_.size() * sizeof(float)), tangents_.data());
+  update_buffer(tangent_vbo_.get(), tangents_);
   tangents_stale_ = false;
 }
 

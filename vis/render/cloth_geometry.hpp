@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "gl/objects.hpp"
+#include "vis/passes/cloth_pack_pass.hpp"
 #include "vis/render/cloth_layout.hpp"
 #include "vis/render/view_settings.hpp"
 
@@ -63,7 +64,6 @@ class ClothGeometry {
   void make_vertex_arrays();
   void update_bounds();
   void update_strain_top(const std::vector<float>& spring_strain);
-  void pack_from_device(const DeviceCloth& device);
   void copy_seams(float* values, std::size_t stride, std::size_t offset) const;
 
   ClothLayout layout_;
@@ -82,8 +82,7 @@ class ClothGeometry {
   // The GPU backend's cloth the last update() packed from (the tangents read its normals back
   // only when a mode needs them), else null.
   const DeviceCloth* device_ = nullptr;
-  Program pack_program_;  // cloth_pack.comp, built on the first GPU-backend frame
-  Buffer seam_source_;    // the seam copies for cloth_pack.comp
+  ClothPackPass pack_;  // the GPU backend's buffers into dynamic_vbo_
 };
 
 }  // namespace clothlab::vis

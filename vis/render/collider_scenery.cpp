@@ -3,20 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
-#include "gl/program.hpp"
 #include "sim/solver.hpp"
 #include "vis/meshes/mesh.hpp"
 #include "vis/meshes/obj_mesh.hpp"
 #include "vis/meshes/shapes.hpp"
 #include "vis/passes/shadow_pass.hpp"
 #include "vis/render/floor_collider.hpp"
-#include "vis/render/shading_variant.hpp"
 
 namespace clothlab::vis {
 namespace {
 
-// Explicit uniform locations in shaders/object.vert and object.frag.
-constexpr GLint kModel = 0, kColor = 1;
 // Tessellation: fine enough that the drawn silhouette stays within about 0.1 % of the radius of
 // the surface the cloth rests on (a coarser sphere would show the cloth floating over its
 // flat facets' middles or sinking through their corners).
@@ -77,9 +73,6 @@ glm::mat4 model_matrix(const ColliderPose& pose) {
 
 }  // namespace
 
-ColliderScenery::ColliderScenery()
-    : programs_({"object.vert", "object.frag"}, ShadingVariant{}.defines()) {}
-
 void ColliderScenery::set_colliders(const std::vector<ColliderSpec>& colliders,
                                     const Solver& solver) {
   objects_.clear();
@@ -131,17 +124,9 @@ void ColliderScenery::update(double t) {
 
 void ColliderScenery::draw(const std::string& shading) {
   if (objects_.empty()) return;
-  const GLuint program = programs_.get(shading);
-  glUseProgram(program);
-  glProgramUniform3f(program, kColor, kColliderColor.r, kColliderColor.g, kColliderColor.b);
-  glEnable(GL_CULL_FACE);  // closed meshes; planes have a face for each side
-  for (const Object& o : objects_) {
-    glProgramUniformMatrix4fv(program, kModel, 1, GL_FALSE, &o.model[0][0]);
-    glBindVertexArray(o.mesh.vao.get());
-    glDrawElements(GL_TRIANGLES, o.mesh.indices, GL_UNSIGNED_INT, nullptr);
-  }
-  glDisable(GL_CULL_FACE);
-  glBindVertexArray(0);
+  pass_.begin(shading);
+  for (const Object& o : objects_) pass_.draw(o.mesh, o.model, kColliderColor);
+  pass_.end();
 }
 
 void ColliderScenery::draw_shadow(ShadowPass& pass) const {

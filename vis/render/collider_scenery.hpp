@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "gl/objects.hpp"
-#include "gl/program_variants.hpp"
 #include "sim/contact/collider.hpp"
 #include "sim/scene/collider_spec.hpp"
+#include "vis/passes/object_pass.hpp"
 #include "vis/render/gpu_mesh.hpp"
 
 namespace clothlab {
@@ -28,8 +28,6 @@ inline constexpr glm::vec3 kColliderColor{0.7f, 0.7f, 0.72f};
 
 class ColliderScenery {
  public:
-  ColliderScenery();
-
   // Builds one mesh per collider but the floor plane. Planes get a quad of half size
   // max(3 m, 3 x the cloth's rest diagonal) about their point. Then poses them at solver.time().
   void set_colliders(const std::vector<ColliderSpec>& colliders, const Solver& solver);
@@ -57,7 +55,7 @@ class ColliderScenery {
     glm::mat4 model{1.0f};
   };
 
-  ProgramVariants programs_;
+  ObjectPass pass_;
   std::vector<Object> objects_;
   bool bounded_ = false;
   glm::vec3 lo_{0.0f}, hi_{0.0f};

@@ -1,7 +1,7 @@
 #include "vis/render/diagnostics.hpp"
 
 #include "sim/fields/frame_fields.hpp"
-#include "vis/render/arrow_pass.hpp"
+#include "vis/passes/arrow_pass.hpp"
 #include "vis/render/frame_request.hpp"
 #include "vis/render/renderer.hpp"
 #include "vis/render/scalar_field.hpp"

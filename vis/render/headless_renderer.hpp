@@ -11,8 +11,8 @@
 #include "gl/headless_context.hpp"
 #include "gl/offscreen_target.hpp"
 #include "vis/overlay/legends.hpp"
+#include "vis/passes/field_pass.hpp"
 #include "vis/render/diagnostics.hpp"
-#include "vis/render/field_pass.hpp"
 #include "vis/render/frame_request.hpp"
 #include "vis/render/renderer.hpp"
 

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 
+#include "gl/draw_state.hpp"
 #include "gl/program.hpp"
+#include "gl/uploads.hpp"
 #include "sim/fields/frame_fields.hpp"
 #include "sim/solver.hpp"
 #include "vis/colormap/colormap_texture.hpp"
@@ -29,7 +31,6 @@ struct FrameBlock {
   glm::vec4 shadow;           // x filter, y 1 / size, z light size (uv), w normal offset
   glm::vec4 shadow_range;     // x near, y far, z orthographic, w coloured shadows
 };
-constexpr GLint kDepthViewViewport = 0;  // explicit uniform location in shaders/depth_view.frag
 
 FrameBlock make_frame(const ViewSettings& view, const LightRig& light, int width, int height,
                       bool translucent) {
@@ -54,12 +55,10 @@ FrameBlock make_frame(const ViewSettings& view, const LightRig& light, int width
 }  // namespace
 
 Renderer::Renderer()
-    : depth_view_program_(build_program({"depth_view.vert", "depth_view.frag"})),
-      scenery_(std::make_unique<Scenery>()),
-      gl_renderer_(reinterpret_cast<const char*>(glGetString(GL_RENDERER))),
-      frame_ubo_(make_buffer()),
+    : scenery_(std::make_unique<Scenery>()),
+      gl_renderer_(gl_renderer_name()),
+      frame_ubo_(dynamic_buffer(sizeof(FrameBlock))),
       empty_vao_(make_vertex_array()) {
-  glNamedBufferStorage(frame_ubo_.get(), sizeof(FrameBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
   for (ColorMap map : kAllColorMaps) colormaps_[static_cast<int>(map)] = make_colormap_texture(map);
 }
 
@@ -117,8 +116,7 @@ void Renderer::draw(const ViewSettings& view, int width, int height) {
 }
 
 void Renderer::draw_at(const ViewSettings& view, bool fast, int width, int height) {
-  GLint target = 0;  // the caller's framebuffer: the shadow pass binds its own first
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+  const GLuint target = bound_draw_framebuffer();  // the shadow pass binds its own first
   const bool depth_view = view.mode == DisplayMode::light_depth;
   const bool shadows = view.shadows != ShadowFilter::none || depth_view;
   const glm::vec3 centre = fit_light_to_casters(view);  // the sky's sun lies from here to the light
@@ -138,17 +136,16 @@ void Renderer::draw_at(const ViewSettings& view, bool fast, int width, int heigh
   const bool subsurface = run_diffusion(view, shading, fast);
   if (timer_) timer_->begin(Pass::scene);
   // The main pass draws into what the caller bound (the shadow pass bound its own).
-  glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
-  glViewport(0, 0, width, height);
-  glEnable(GL_FRAMEBUFFER_SRGB);
-  glEnable(GL_DEPTH_TEST);
-  glEnable(GL_MULTISAMPLE);
-  glDisable(GL_CULL_FACE);  // cloth is two-sided
+  bind_target(target, width, height);
+  set_capability(GL_FRAMEBUFFER_SRGB, true);
+  set_capability(GL_DEPTH_TEST, true);
+  set_capability(GL_MULTISAMPLE, true);
+  set_capability(GL_CULL_FACE, false);  // cloth is two-sided
   const glm::vec3 bg = view.background;
   const float clear[4] = {bg.r, bg.g, bg.b, 1.0f};
-  glClearBufferfv(GL_COLOR, 0, clear);
-  glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
-  if (depth_view) return draw_depth_view(width, height);
+  clear_target(clear);
+  if (depth_view)
+    return depth_view_.draw(width, height, colormap_texture(ColorMap::turbo), empty_vao_.get());
 
   // The opaque surfaces before the floor, which covers most of the image: the depth test then
   // skips the floor behind them, and a CPU renderer shades only what it keeps. The translucent
@@ -161,7 +158,7 @@ void Renderer::draw_at(const ViewSettings& view, bool fast, int width, int heigh
   floor_.draw(view, empty_vao_.get(), shading, sky_cube);
   draw_sky(view, view_proj);
   if (blended_cloth) draw_cloth(view, shading, subsurface);
-  glBindVertexArray(0);
+  unbind_vertex_array();
 }
 
 // A cloth without triangles (two vertices and a spring) has no surface to shade: it is drawn as
@@ -201,8 +198,8 @@ glm::mat4 Renderer::upload_frame(const ViewSettings& view, int width, int height
   if (!(view.strain_range > 0.0f)) frame.params.x = springs ? cloth_.strain_top() : kMinStrainRange;
   strain_range_.reset();
   if (springs) strain_range_ = ScalarRange{-frame.params.x, frame.params.x};
-  glNamedBufferSubData(frame_ubo_.get(), 0, sizeof frame, &frame);
-  glBindBufferBase(GL_UNIFORM_BUFFER, 0, frame_ubo_.get());
+  update_buffer(frame_ubo_.get(), &frame, sizeof frame);
+  bind_uniform_buffer(0, frame_ubo_.get());
   return frame.view_proj;
 }
 
@@ -223,18 +220,6 @@ bool Renderer::run_diffusion(const ViewSettings& view, const std::string& shadin
   diffusion_->run(cloth_.cloth_vao(), cloth_.triangle_indices(), cloth_.atlas_per_metre(),
                   fabric_repeat_of(view), shading);
   return true;
-}
-
-// Key 7: the light's depth map over the view.
-void Renderer::draw_depth_view(int width, int height) {
-  glUseProgram(depth_view_program_.get());
-  glProgramUniform2f(depth_view_program_.get(), kDepthViewViewport, float(width), float(height));
-  glBindTextureUnit(1, colormap_texture(ColorMap::turbo));
-  glBindVertexArray(empty_vao_.get());
-  glDisable(GL_DEPTH_TEST);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glEnable(GL_DEPTH_TEST);
-  glBindVertexArray(0);
 }
 
 // The sky's cube map for this frame's sun (baked again only when it moved), or 0 without a sky.

@@ -17,6 +17,7 @@
 #include "sim/model/model.hpp"
 #include "sim/scene/collider_spec.hpp"
 #include "vis/passes/cloth_pass.hpp"
+#include "vis/passes/depth_view_pass.hpp"
 #include "vis/passes/floor_pass.hpp"
 #include "vis/passes/springs_pass.hpp"
 #include "vis/render/cloth_geometry.hpp"
@@ -109,7 +110,6 @@ class Renderer {
   void draw_at(const ViewSettings& view, bool fast, int width, int height);
   void draw_cloth(const ViewSettings& view, const std::string& shading, bool subsurface);
   bool run_diffusion(const ViewSettings& view, const std::string& shading, bool fast);
-  void draw_depth_view(int width, int height);
   void draw_shadow_map(const ViewSettings& view, bool translucent);
   void draw_shadow_casters();
   GLuint prepare_sky(const ViewSettings& view, glm::vec3 centre);
@@ -119,7 +119,7 @@ class Renderer {
   FloorPass floor_;
   ClothPass cloth_pass_;
   SpringsPass springs_;
-  Program depth_view_program_;
+  DepthViewPass depth_view_;
   std::unique_ptr<PassTimer> timer_;          // only while a benchmark times the passes
   std::unique_ptr<ShadowPass> shadow_;        // only while shadows or the depth view are on
   std::unique_ptr<SkyPass> sky_;              // only while the sky is shown

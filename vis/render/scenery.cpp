@@ -4,20 +4,16 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "gl/program.hpp"
 #include "sim/solver.hpp"
 #include "vis/meshes/mesh.hpp"
 #include "vis/meshes/obj_mesh.hpp"
 #include "vis/meshes/shapes.hpp"
 #include "vis/passes/shadow_pass.hpp"
 #include "vis/render/gpu_mesh.hpp"
-#include "vis/render/shading_variant.hpp"
 
 namespace clothlab::vis {
 namespace {
 
-// Explicit uniform locations in shaders/object.vert and object.frag.
-constexpr GLint kModel = 0, kColor = 1;
 const glm::vec3 kPoleColor{0.42f, 0.30f, 0.20f};  // sRGB: oiled wood
 constexpr float kPoleOverhang = 0.06f;            // of the pinned span, beyond each end pin
 constexpr float kCollinear = 0.02f;               // pins this far (of the span) off the line
@@ -38,8 +34,6 @@ glm::mat4 rotate_x_to(glm::vec3 d) {
 }
 
 }  // namespace
-
-Scenery::Scenery() : programs_({"object.vert", "object.frag"}, ShadingVariant{}.defines()) {}
 
 void Scenery::add(const Mesh& mesh, const glm::mat4& model, glm::vec3 color) {
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
@@ -112,17 +106,9 @@ void Scenery::set_scene(const RenderSpec& spec, const SolverState& solver) {
 
 void Scenery::draw(const std::string& shading) {
   if (objects_.empty()) return;
-  const GLuint program = programs_.get(shading);
-  glUseProgram(program);
-  glEnable(GL_CULL_FACE);  // closed meshes
-  for (const Object& o : objects_) {
-    glProgramUniformMatrix4fv(program, kModel, 1, GL_FALSE, &o.model[0][0]);
-    glProgramUniform3f(program, kColor, o.color.r, o.color.g, o.color.b);
-    glBindVertexArray(o.mesh.vao.get());
-    glDrawElements(GL_TRIANGLES, o.mesh.indices, GL_UNSIGNED_INT, nullptr);
-  }
-  glDisable(GL_CULL_FACE);
-  glBindVertexArray(0);
+  pass_.begin(shading);
+  for (const Object& o : objects_) pass_.draw(o.mesh, o.model, o.color);
+  pass_.end();
 }
 
 void Scenery::draw_shadow(ShadowPass& pass) const {

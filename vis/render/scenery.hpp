@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "gl/objects.hpp"
-#include "gl/program_variants.hpp"
 #include "sim/scene/render_spec.hpp"
+#include "vis/passes/object_pass.hpp"
 #include "vis/render/gpu_mesh.hpp"
 
 namespace clothlab {
@@ -23,8 +23,6 @@ struct Mesh;
 
 class Scenery {
  public:
-  Scenery();
-
   // Builds the pole (from the solver's pinned vertices at rest, when at least two of a cloth's
   // pins lie on a line) and the meshes of `spec`.
   void set_scene(const RenderSpec& spec, const SolverState& solver);
@@ -46,7 +44,7 @@ class Scenery {
   };
   void add(const Mesh& mesh, const glm::mat4& model, glm::vec3 color);
 
-  ProgramVariants programs_;
+  ObjectPass pass_;
   std::vector<Object> objects_;
   glm::vec3 lo_{0.0f}, hi_{0.0f};
 };

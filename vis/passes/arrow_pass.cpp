@@ -1,4 +1,4 @@
-#include "vis/render/arrow_pass.hpp"
+#include "vis/passes/arrow_pass.hpp"
 
 #include <cmath>
 #include <cstddef>

@@ -1,4 +1,4 @@
-#include "vis/render/field_pass.hpp"
+#include "vis/passes/field_pass.hpp"
 
 #include <algorithm>
 #include <cmath>
