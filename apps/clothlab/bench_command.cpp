@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "apps/clothlab/commands.hpp"
+#include "bench/suites/run_record.hpp"
 #include "bench/suites/suites.hpp"
 #include "sim/core/passive_openmp.hpp"
 
@@ -22,14 +23,17 @@ std::vector<bench::Table> run_suite(const std::string& name, const bench::SuiteO
   return bench::features_suite(o);
 }
 
-// The first table goes to `path`; a summary table named "x" to <stem>_x.csv beside it.
-void write_tables(const std::filesystem::path& path, const std::vector<bench::Table>& tables) {
+// The first table goes to `path`; a summary table named "x" to <stem>_x.csv beside it. Each
+// file's name and its table's title go into `record`.
+void write_tables(const std::filesystem::path& path, const std::vector<bench::Table>& tables,
+                  bench::RunRecord& record) {
   for (std::size_t t = 0; t < tables.size(); ++t) {
     std::filesystem::path file = path;
     if (t > 0)
       file = path.parent_path() /
              (path.stem().string() + "_" + tables[t].name + path.extension().string());
     bench::write_csv(file.string(), tables[t]);
+    record.tables.push_back({file.filename().string(), tables[t].title, tables[t].note});
     std::cout << "wrote " << file.string() << '\n';
   }
 }
@@ -59,6 +63,8 @@ int run_bench(const BenchArgs& args) {
       // An existing directory takes the suite's file whatever the number of suites.
       if (!args.out.empty() && (suites.size() > 1 || fs::is_directory(args.out)))
         out = fs::path(args.out) / (suite + ".csv");
+      bench::RunRecord record{suite,      bench::utc_now(), bench::machine_description(),
+                              args.quick, args.threads,     bench::load_average()};
       const bench::Stopwatch clock;
       const std::vector<bench::Table> tables = run_suite(suite, options);
       // The summary first (the answer), then the tables it was drawn from.
@@ -67,9 +73,14 @@ int run_bench(const BenchArgs& args) {
       for (const bench::Table& t : tables)
         if (t.name != "summary") bench::print_table(std::cout, t);
       std::cout << '\n';
-      write_tables(out, tables);
-      std::cout << suite << ": " << bench::fixed(clock.seconds(), 1) << " s, load average now "
-                << bench::fixed(bench::load_average(), 2) << "\n";
+      write_tables(out, tables, record);
+      record.seconds = clock.seconds();
+      record.load_after = bench::load_average();
+      // The run's record beside its tables: scripts/results reads it (docs/results.md).
+      fs::path json = out;
+      bench::write_run_record(json.replace_extension(".json").string(), record);
+      std::cout << suite << ": " << bench::fixed(record.seconds, 1) << " s, load average now "
+                << bench::fixed(record.load_after, 2) << "\n";
     }
   } catch (const std::exception& e) {
     std::cerr << "clothlab bench: " << e.what() << '\n';

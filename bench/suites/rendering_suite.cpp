@@ -170,8 +170,8 @@ std::vector<Table> rendering_suite(const SuiteOptions& o) {
         measure_quality(renderer, *solver, base, quality, variants, rounds, frames, o.log);
     const std::string title =
         "Render cost per headless frame, quality " + std::string(to_string(quality)) + ": " +
-        std::string(CLOTHLAB_DEFAULT_SCENE) + " + 3 meshes, " + std::to_string(width) + "x" +
-        std::to_string(height) + " on " + renderer.gl_renderer() +
+        "scenes/default.toml + 3 meshes, " + std::to_string(width) + "x" + std::to_string(height) +
+        " on " + renderer.gl_renderer() +
         "; pass times: wall clock between glFinish at each pass boundary; frame = draw + "
         "resolve + readback, timed separately without the boundaries; median of " +
         std::to_string(rounds) + " rounds of " + std::to_string(frames) + " frames";

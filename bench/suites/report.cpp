@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 
 namespace clothlab::bench {
@@ -89,7 +90,7 @@ void print_table(std::ostream& out, const Table& table) {
   out.flush();
 }
 
-void write_csv(const std::string& path, const Table& table) {
+void write_text_file(const std::string& path, const std::string& text) {
   namespace fs = std::filesystem;
   const fs::path target(path);
   if (target.has_parent_path()) fs::create_directories(target.parent_path());
@@ -97,12 +98,7 @@ void write_csv(const std::string& path, const Table& table) {
   {
     std::ofstream f(temporary);
     if (!f) throw std::runtime_error("cannot write " + temporary.string());
-    auto write_row = [&](const std::vector<std::string>& cells) {
-      for (std::size_t c = 0; c < cells.size(); ++c) f << (c ? "," : "") << csv_field(cells[c]);
-      f << '\n';
-    };
-    write_row(table.columns);
-    for (const auto& row : table.rows) write_row(row);
+    f << text;
     f.flush();
     if (!f) {
       fs::remove(temporary);
@@ -110,6 +106,17 @@ void write_csv(const std::string& path, const Table& table) {
     }
   }
   fs::rename(temporary, target);
+}
+
+void write_csv(const std::string& path, const Table& table) {
+  std::ostringstream text;
+  auto write_row = [&](const std::vector<std::string>& cells) {
+    for (std::size_t c = 0; c < cells.size(); ++c) text << (c ? "," : "") << csv_field(cells[c]);
+    text << '\n';
+  };
+  write_row(table.columns);
+  for (const auto& row : table.rows) write_row(row);
+  write_text_file(path, text.str());
 }
 
 std::string num(double value) {

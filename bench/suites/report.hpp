@@ -30,8 +30,10 @@ std::string for_people(const std::string& cell);
 // "--quick leaves out: <what>" when quick, else empty (Table::note).
 std::string quick_note(bool quick, const std::string& what);
 
-// Writes the table as CSV (one header row of the column names) to `path` through a temporary
-// file and a rename, so the file is complete or absent. Throws std::runtime_error on failure.
+// Writes `text` to `path` through a temporary file and a rename, so the file is complete or
+// absent (its folder made if missing). Throws std::runtime_error on failure.
+void write_text_file(const std::string& path, const std::string& text);
+// Writes the table as CSV (one header row of the column names) through write_text_file().
 void write_csv(const std::string& path, const Table& table);
 
 std::string num(double value);                  // %.9g: the CSV form

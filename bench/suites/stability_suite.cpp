@@ -106,7 +106,7 @@ void add_stress_rows(const Stress& st, int resolution, double duration, Table& s
   for (IntegratorKind kind : kAllIntegrators) {
     // XPBD is a small-steps method: it runs the frame step in its automatic substeps (and, for
     // information, in one substep, which a hurricane can tear apart: see docs/results.md,
-    // "stability").
+    // "Stability").
     const bool xpbd = kind == IntegratorKind::xpbd;
     for (int substeps : xpbd ? std::vector<int>{0, 1} : std::vector<int>{1}) {
       bool caught = false;
