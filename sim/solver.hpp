@@ -87,6 +87,9 @@ class SolverState {
   // The source the last update_force_field() filled (total before any update).
   virtual ForceSource force_field_source() const = 0;
   virtual Energy energy() = 0;
+  // The divergence `e` (this state's energy()) shows, if any: its elastic or total part beyond
+  // the monitor's limit (sim/divergence.hpp). For callers that computed the energy anyway.
+  virtual std::optional<Divergence> energy_divergence(const Energy& e) const = 0;
 
   virtual void copy_positions(float* xyz) const = 0;       // 3 floats per vertex
   virtual void copy_rest_positions(float* xyz) const = 0;  // the built positions

@@ -53,6 +53,12 @@ class SolverT : public Solver {
   Vec3d force(int vertex) const override { return get(force_field_, vertex); }
   ForceSource force_field_source() const override { return force_source_; }
   Energy energy() override;
+  std::optional<Divergence> energy_divergence(const Energy& e) const override {
+    sync_state();
+    Divergence d;
+    if (!monitor_.check_energy(model_, state_, e, steps_, time(), d)) return std::nullopt;
+    return d;
+  }
   void apply_impulse(const Vec3d& center, double radius, const Vec3d& impulse) override;
   void copy_positions(float* xyz) const override {
     sync_state();

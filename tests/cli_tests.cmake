@@ -133,6 +133,29 @@ clothlab_cli_test(trace.diverges 1
   "diverged at step [0-9]+ \\(t = [0-9.e-]+ s\\): vertex \\(cloth 0, i [0-9]+, j [0-9]+\\), .*replay with: clothlab trace .*--set 'solver.dt=0.002'.*a step of 0\\.002 s is above symplectic_euler's stability limit on this scene \\(0\\.000786 s\\); solver\\.dt = \"auto\" takes 0\\.00062 s"
   trace ${CLOTHLAB_DEFAULT_SCENE} --duration 1 --out ${CLOTHLAB_TRACE_OUT}/diverged.csv
   --set solver.dt=0.002)
+# A lattice stretched beyond the scene's energy scale in two steps, before the velocities grow:
+# the summary's energy check catches it at the last step (exit 1, no file), where it once wrote a
+# trace ending at 4.8e11 J.
+clothlab_cli_test(trace.diverges_in_elastic_energy 1
+  "diverged at step 2 \\(t = 0\\.002 s\\): vertex \\(cloth 0, i [0-9]+, j [0-9]+\\), (total|elastic) energy [0-9.e+]+ J \\(elastic [0-9.e+]+ J\\) exceeds 1000 x the scene's energy scale"
+  trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.002 --out ${CLOTHLAB_TRACE_OUT}/stretched.csv
+  --set solver.integrator=explicit_euler --set springs.stiffness=1e9 --set solver.dt=0.001)
+# Values that would break something downstream are refused under the key the user wrote: a gust
+# period too short for the noise (was: a non-finite force at the file's first line), the
+# mannequin's friction (was: the first part's key), vertices too close for float springs (was:
+# an infinite spring stiffness).
+clothlab_cli_test(check.gust_period_denormal 2
+  "--set forces\\.wind\\.gust_period=5e-324: forces\\.wind\\.gust_period: must be >= 1e-06"
+  check ${CLOTHLAB_DEFAULT_SCENE} --set forces.wind.gust_period=5e-324)
+clothlab_cli_test(check.mannequin_friction 2
+  "--set mannequin\\.friction=-1: mannequin\\.friction\\.static: must be >= 0 \\(got -1\\)"
+  check ${PROJECT_SOURCE_DIR}/scenes/dance.toml --set mannequin.friction=-1)
+clothlab_cli_test(check.tube_radius_tiny 2
+  "cloth\\.radius: puts neighbouring vertices [0-9.e-]+ m apart round the first ring; at least 1e-06 m is needed"
+  check ${PROJECT_SOURCE_DIR}/scenes/skirt.toml --set "cloth.radius=[1e-320,0.4]")
+clothlab_cli_test(check.grid_size_tiny 2
+  "cloth\\.size: puts neighbouring vertices [0-9.e-]+ m apart along u"
+  check ${CLOTHLAB_DEFAULT_SCENE} --set "cloth.size=[1e-9,1]")
 # check knows the explicit methods' limits: a fixed step above one is valid input (exit 0) but
 # said, with dt = "auto"'s step; below it nothing is said.
 clothlab_cli_test(check.step_above_the_limit 0
@@ -280,6 +303,16 @@ clothlab_cli_test(render.bad_field 2 "--field: density not in"
 clothlab_cli_test(render.bad_video 1 "ffmpeg (failed to write|stopped accepting frames for) '/nonexistent-dir/x.mp4'"
   render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 32x32 --quiet
   --out ${CLOTHLAB_TRACE_OUT}/render_video --video /nonexistent-dir/x.mp4)
+# A video whose end ffmpeg cannot write is refused (exit 1) and nothing is kept, where ffmpeg
+# itself exits 0 and leaves an MP4 without its index (the moov atom, written last). A file-size
+# limit stands in for a full disk: with SIGXFSZ ignored, writes past it fail as on ENOSPC.
+set(CLOTHLAB_VIDEO_LIMIT_DIR ${CMAKE_CURRENT_BINARY_DIR}/video_limit)
+file(MAKE_DIRECTORY ${CLOTHLAB_VIDEO_LIMIT_DIR})
+add_test(NAME cli.render.video_cut_short
+  COMMAND sh -c "cd '${CLOTHLAB_VIDEO_LIMIT_DIR}' && rm -f v.mp4* && trap '' XFSZ && ulimit -f 20 && '$<TARGET_FILE:clothlab>' render '${CLOTHLAB_DEFAULT_SCENE}' --frames 30 --size 320x240 --video v.mp4 --quiet; echo \"exit status $?\"; echo left: $(ls)")
+set_tests_properties(cli.render.video_cut_short PROPERTIES TIMEOUT 60
+  ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}"
+  PASS_REGULAR_EXPRESSION "ffmpeg wrote an incomplete video for 'v\\.mp4' .*nothing was kept\nexit status 1\nleft:\n")
 # Scientific views headless: colour by a scalar, arrows, force source; bad values name the option.
 clothlab_cli_test(render.views 0 "render: 2 frames of 96x72 .*colour by strain \\[-?[0-9.e+-]+, [0-9.e+-]+\\].* [0-9]+ force arrows"
   render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 96x72 --quiet --color-by strain

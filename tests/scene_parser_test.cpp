@@ -181,7 +181,7 @@ TEST(SceneParser, OutOfRange) {
   expect_error(kMinimal + "[forces]\nwind = { velocity = [1, 0, 0], seed = -1 }\n",
                "forces.wind.seed", 10, ">= 0");
   expect_error(kMinimal + "[forces]\nwind = { velocity = [1, 0, 0], gust_period = 0 }\n",
-               "forces.wind.gust_period", 10, "> 0");
+               "forces.wind.gust_period", 10, ">= 1e-06");
   expect_error(kMinimal + "[forces]\nwind = { gust = 0.5 }\n", "forces.wind.velocity", 10,
                "missing");
   expect_error(kMinimal + "threads = 2000\n", "solver.threads", 9, "between 0");

@@ -30,6 +30,15 @@ AudioClip music_for_video(const AudioClip& clip, double seconds) {
   return part;
 }
 
+// Whether ffprobe (Debian's ffmpeg package) reads `path` as a video. ffmpeg can exit 0 after
+// failing to write an MP4's index (the moov atom at the end: "Error writing trailer ... No space
+// left on device"), leaving a file no player opens.
+bool readable_video(const std::string& path) {
+  const std::string command = "ffprobe -v error -show_entries format=duration -of csv=p=0 " +
+                              shell_quote(path) + " >/dev/null 2>&1";
+  return std::system(command.c_str()) == 0;
+}
+
 }  // namespace
 
 VideoPipe::TempFile::~TempFile() {
@@ -94,6 +103,11 @@ void VideoPipe::finish() {
   // ffmpeg has read the music; the WAV goes now rather than when the pipe is destroyed.
   if (!music_wav_.path.empty()) std::remove(music_wav_.path.c_str());
   music_wav_.path.clear();
+  if (status == 0 && !readable_video(temp_)) {
+    std::remove(temp_.c_str());
+    throw std::runtime_error("ffmpeg wrote an incomplete video for '" + path_ +
+                             "' (no player could open it: is the disk full?); nothing was kept");
+  }
   if (status != 0 || std::rename(temp_.c_str(), path_.c_str()) != 0) {
     std::remove(temp_.c_str());
     throw std::runtime_error("ffmpeg failed to write '" + path_ + "' (exit status " +

@@ -233,7 +233,7 @@ std::vector<Parameter> dynamics() {
                                 .form = "an integer >= 0",
                                 .description = "noise seed: the same seed gives the same gusts"}),
       row<&WindSpec::gust_period>({.name = "gust_period",
-                                   .range = kPositive,
+                                   .range = between(1e-6, kInf),
                                    .unit = "s",
                                    .fallback = "1",
                                    .description = "time scale of the gust noise"}),

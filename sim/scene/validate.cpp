@@ -65,6 +65,10 @@ std::string violated(const Parameter& p, double x) {
 constexpr std::int64_t kMaxVertices = 16'000'000;
 constexpr double kOrthogonalityTolerance = 1e-6;
 constexpr int kMaxMeshValence = 128;
+// Neighbouring vertices of a grid or tube at least this far apart (m). Closer, the springs' rest
+// lengths drown in float round-off: their stiffness k l_edge / l overflows, or the seed rule
+// finds no spring at all, and the message would blame the springs rather than the geometry.
+constexpr double kMinVertexSpacing = 1e-6;
 
 class Validator {
  public:
@@ -81,8 +85,7 @@ class Validator {
     check_render(scene_.render);
     for (const ColliderSpec& c : scene_.colliders) check_collider(c);
     if (scene_.music) ranges(Section::music, &*scene_.music, section_path(Section::music));
-    if (scene_.mannequin)
-      ranges(Section::mannequin, &*scene_.mannequin, section_path(Section::mannequin));
+    if (scene_.mannequin) check_mannequin(*scene_.mannequin);
     if (!loaded_) return;
     for (const ClothSpec& cloth : scene_.cloths) check_pins_follow(cloth);
   }
@@ -160,6 +163,7 @@ class Validator {
           fail(at(k, tube_key), "belongs to shape = \"tube\" (this cloth is a grid)");
     }
     check_resolution(cloth);
+    if (cloth.shape != "mesh") check_spacing(cloth);
     check_axes(cloth);
     if (!unloaded_mesh(cloth)) check_pins(cloth);
     if (cloth.springs)
@@ -176,6 +180,32 @@ class Validator {
       fail(at(cloth.key, key_of<&ClothSpec::resolution>()),
            "a tube needs at least 6 vertices around and 2 rings (got [" + std::to_string(nu) +
                ", " + std::to_string(nv) + "])");
+  }
+
+  // Neighbouring vertices at least kMinVertexSpacing apart: along u and v on a grid; round each
+  // ring (the chord 2 r sin(pi / nu)) and from ring to ring on a tube.
+  void check_spacing(const ClothSpec& cloth) const {
+    const auto [nu, nv] = cloth.resolution;
+    auto require = [&](std::string_view name, double spacing, const std::string& what) {
+      if (!(spacing >= kMinVertexSpacing))
+        fail(at(cloth.key, name), "puts neighbouring vertices " + format_number(spacing) +
+                                      " m apart " + what + "; at least " +
+                                      format_number(kMinVertexSpacing) + " m is needed");
+    };
+    if (cloth.shape == "tube") {
+      const double chord = 2.0 * std::sin(3.14159265358979323846 / std::max(nu, 1));
+      for (int ring = 0; ring < 2; ++ring)
+        require(key_of<&ClothSpec::radius>(), chord * cloth.radius[ring],
+                ring == 0 ? "round the first ring" : "round the last ring");
+      if (nv > 1)
+        require(key_of<&ClothSpec::length>(), cloth.length / (nv - 1), "from ring to ring");
+      return;
+    }
+    const char* const along[2] = {"along u", "along v"};
+    for (int d = 0; d < 2; ++d)
+      if (cloth.resolution[d] > 1)
+        require(key_of<&ClothSpec::size>(), cloth.size[d] / (cloth.resolution[d] - 1),
+                std::string(along[d]) + " (size / (resolution - 1))");
   }
 
   void check_resolution(const ClothSpec& cloth) const {
@@ -328,6 +358,17 @@ class Validator {
       fail(key, "names collider " + std::to_string(c) + ", but the scene has " +
                     std::to_string(scene_.colliders.size()) + " ([[colliders]] count from 0)");
     if (cloth.pins.empty()) fail(key, "the cloth has no pins to move");
+  }
+
+  // The mannequin's friction goes to every part (load/scene_load.cpp): held to the colliders'
+  // friction ranges here, under the key the scene wrote, rather than at the first part.
+  void check_mannequin(const MannequinSpec& m) const {
+    const std::string key = section_path(Section::mannequin);
+    ranges(Section::mannequin, &m, key);
+    ColliderSpec every_part;
+    every_part.static_friction = m.static_friction;
+    every_part.kinetic_friction = m.kinetic_friction;
+    ranges(Section::friction, &every_part, at(key, key_of<&MannequinSpec::static_friction>()));
   }
 
   // The table's ranges, then: plane normals and capsule axes non-zero, a box's rounding inside

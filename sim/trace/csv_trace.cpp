@@ -59,6 +59,8 @@ void TraceWriter::write_step(Solver& solver) {
       vertex_index_.push_back(solver.vertex_index({v.cloth, v.i, v.j}));
   if (spec_.force && !spec_.vertices.empty()) solver.update_force_field();
   const Energy e = spec_.energy ? solver.energy() : Energy{};
+  last_energy_.reset();
+  if (spec_.energy) last_energy_ = e;
   auto row_start = [&](const TraceVertex& v) {
     column_ = 1;  // the next number() is column 1, time
     std::fprintf(file_, "%ld", solver.step_count());

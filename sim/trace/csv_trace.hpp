@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,8 @@ class TraceWriter {
   // ("fx is not finite"); run_trace stops before committing such a file.
   bool finite() const { return bad_column_ < 0; }
   std::string first_non_finite() const;
+  // The energy the last write_step() wrote, when the trace has energy columns.
+  const std::optional<Energy>& last_energy() const { return last_energy_; }
 
  private:
   void number(double value);
@@ -47,6 +50,7 @@ class TraceWriter {
   std::vector<int> vertex_index_;
   int column_ = 0;       // the column number() writes next
   int bad_column_ = -1;  // the first non-finite column, or -1
+  std::optional<Energy> last_energy_;
 };
 
 // A trace read back: column names and rows of numbers.

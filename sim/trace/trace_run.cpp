@@ -24,8 +24,13 @@ long whole_steps(double duration, double dt) {
 
 namespace {
 
-// A row about to hold a non-finite value is a divergence: the trace is not written.
-bool row_is_finite(const TraceWriter& writer, const Solver& solver, TraceRunResult& r) {
+// A row about to hold a non-finite value, or an energy beyond the divergence monitor's limit, is
+// a divergence: the trace is not written.
+bool row_is_sane(const TraceWriter& writer, const Solver& solver, TraceRunResult& r) {
+  if (const std::optional<Energy>& e = writer.last_energy(); e && writer.finite()) {
+    r.divergence = solver.energy_divergence(*e);
+    if (r.divergence) return false;
+  }
   if (writer.finite()) return true;
   Divergence d;
   d.step = solver.step_count();
@@ -53,7 +58,7 @@ TraceRunResult run_trace(Solver& solver, const TraceSpec& spec, bool multi_cloth
   ++r.written_steps;
   Clock::duration stepping{};
   long next_row = std::min<long>(spec.every, total);
-  while (r.steps < total && row_is_finite(writer, solver, r)) {
+  while (r.steps < total && row_is_sane(writer, solver, r)) {
     const long chunk = std::min<long>(stretch, next_row - r.steps);
     const auto t0 = Clock::now();
     const AdvanceResult a = solver.step(chunk);
@@ -75,10 +80,13 @@ TraceRunResult run_trace(Solver& solver, const TraceSpec& spec, bool multi_cloth
     ++r.written_steps;
     next_row = std::min<long>(next_row + spec.every, total);
   }
-  if (!r.divergence && !r.stopped) row_is_finite(writer, solver, r);
+  if (!r.divergence && !r.stopped) row_is_sane(writer, solver, r);
   r.step_seconds = std::chrono::duration<double>(stepping).count();
   r.simulated_time = solver.time();
   r.final_energy = solver.energy();
+  // The summary's energy is checked like a row's: a state stretched beyond the scale is a
+  // divergence even where the velocities have not grown yet.
+  if (!r.divergence && !r.stopped) r.divergence = solver.energy_divergence(r.final_energy);
   if (!r.divergence && !r.stopped) writer.commit();
   return r;
 }
