@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "music/stderr_capture.hpp"
 #include "sim/core/temp_files.hpp"
 
 namespace clothlab {
@@ -23,51 +24,6 @@ using SndfilePtr = std::unique_ptr<SNDFILE, SndfileCloser>;
 [[noreturn]] void fail(const std::string& path, const std::string& reason) {
   throw AudioError("audio file '" + path + "': " + reason);
 }
-
-// The decoders behind libsndfile (libmpg123 for MP3) print warnings on stderr; while a file is
-// read they go to a temporary file instead and come back as one line, which a failure's reason
-// quotes. (Loading runs before any thread starts, so swapping descriptor 2 is safe here.)
-class StderrCapture {
- public:
-  StderrCapture() {
-    std::fflush(stderr);
-    file_ = std::tmpfile();
-    saved_ = file_ ? ::dup(2) : -1;
-    if (saved_ >= 0) ::dup2(::fileno(file_), 2);
-  }
-  ~StderrCapture() {
-    restore();
-    if (file_) std::fclose(file_);  // every read left one open descriptor (the fuzz pass: EMFILE)
-  }
-  StderrCapture(const StderrCapture&) = delete;
-  StderrCapture& operator=(const StderrCapture&) = delete;
-
-  // What was printed, on one line (runs of white space folded to one space), at most 300 chars.
-  std::string text() {
-    restore();
-    std::string out;
-    if (!file_) return out;
-    std::rewind(file_);
-    for (int c; (c = std::fgetc(file_)) != EOF && out.size() < 300;) {
-      const bool space = std::isspace(c) != 0;
-      if (space && (out.empty() || out.back() == ' ')) continue;
-      out.push_back(space ? ' ' : static_cast<char>(c));
-    }
-    while (!out.empty() && out.back() == ' ') out.pop_back();
-    return out;
-  }
-
- private:
-  void restore() {
-    if (saved_ < 0) return;
-    std::fflush(stderr);
-    ::dup2(saved_, 2);
-    ::close(saved_);
-    saved_ = -1;
-  }
-  std::FILE* file_ = nullptr;
-  int saved_ = -1;
-};
 
 // The decoder's reason and what it printed: "reason (decoder: ...)".
 std::string with_decoder_text(const std::string& reason, StderrCapture& capture) {

@@ -150,5 +150,33 @@ TEST(Copies, ScenesThatCannotBeCopiedSayWhy) {
   EXPECT_NE(copies_unsupported_reason(follow).find("pins_follow"), std::string::npos);
 }
 
+
+// Copies past kParallelMinVertices (32 copies of 16x16 = 8192 vertices) hand the thread count to
+// the measured trial: one thread first, then the parallel setting, and the faster is kept; a
+// busy machine's slow parallel step keeps one thread. M is the user's choice and ends the trial;
+// a small cloth never runs one.
+TEST(Copies, ManyCopiesMeasureWhichThreadCountIsFaster) {
+  Scene scene = drop(IntegratorKind::symplectic_euler);
+  scene.solver.threads = 0;  // automatic, as the shipped scenes
+  vis::SimSession session(scene);
+  EXPECT_EQ(session.thread_trial(), nullptr);
+  EXPECT_FALSE(session.parallel());
+  ASSERT_EQ(session.set_copies(32), "");
+  ASSERT_GE(session.solver().vertex_count(), kParallelMinVertices);
+  ASSERT_NE(session.thread_trial(), nullptr);
+  EXPECT_FALSE(session.parallel());  // the trial starts on one thread
+  double now = 0.0;
+  for (int f = 0; f < 100 && session.thread_trial()->trying(); ++f, now += 1.0 / 60.0)
+    session.measured_frame(10, session.parallel() ? 28e-3 : 1.4e-3, now);  // busy: 20x slower
+  EXPECT_FALSE(session.thread_trial()->trying());
+  EXPECT_FALSE(session.parallel());
+  EXPECT_EQ(session.solver().threads(), 1);
+  session.toggle_parallel();  // M
+  EXPECT_EQ(session.thread_trial(), nullptr);
+  EXPECT_TRUE(session.parallel());
+  session.measured_frame(10, 1.0, now + 60.0);  // the user's choice stays
+  EXPECT_TRUE(session.parallel());
+}
+
 }  // namespace
 }  // namespace clothlab

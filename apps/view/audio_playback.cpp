@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "music/stderr_capture.hpp"
+
 namespace clothlab::vis {
 namespace {
 
@@ -38,15 +40,22 @@ std::optional<AudioPlayback> AudioPlayback::open(const AudioClip& clip, std::str
     return std::nullopt;
   }
   AudioPlayback p;  // released by its destructor on every early return
-  p.device_ = alcOpenDevice(nullptr);
-  if (!p.device_) {
-    message = "audio: no output device (OpenAL could not open the default device)";
-    return std::nullopt;
-  }
-  p.context_ = alcCreateContext(p.device_, nullptr);
-  if (!p.context_ || alcMakeContextCurrent(p.context_) != ALC_TRUE) {
-    message = "audio: OpenAL could not create a context on the default device";
-    return std::nullopt;
+  {
+    // The back-ends OpenAL tries print their failures (ALSA: a dozen lines without a sound
+    // card); they come back as one quoted line in the message when no device opens, and are
+    // dropped when one does. Opening happens on the window's thread before playback starts.
+    StderrCapture capture;
+    p.device_ = alcOpenDevice(nullptr);
+    if (p.device_) p.context_ = alcCreateContext(p.device_, nullptr);
+    const bool current = p.context_ && alcMakeContextCurrent(p.context_) == ALC_TRUE;
+    if (!current) {
+      const std::string printed = capture.text();
+      message = p.device_ ? "audio: OpenAL could not create a context on the default device"
+                          : "audio: no output device (OpenAL could not open the default device)";
+      if (!printed.empty())
+        message += " (" + (printed.size() > 160 ? printed.substr(0, 157) + "..." : printed) + ")";
+      return std::nullopt;
+    }
   }
   alGetError();  // clear any stale error before our own calls
   auto al_failed = [&message](const char* call) {

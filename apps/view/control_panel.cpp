@@ -21,7 +21,6 @@ namespace {
 
 const ImVec4 kErrorColour{1.0f, 0.45f, 0.4f, 1.0f};
 const ImVec4 kWarningColour{1.0f, 0.8f, 0.3f, 1.0f};
-constexpr float kPanelWidth = 380.0f;
 
 // Integrator, dt, springs, drag, wind: applied to the running motion once an edit is finished.
 // The editors come from the parameter table; solver.backend moves the motion (load_state) to the
@@ -243,19 +242,33 @@ std::optional<Action> scene_editors(SimSession& session, PanelState& state) {
 
   bool parallel = session.parallel();
   if (ImGui::Checkbox("parallel solver (M)", &parallel)) clicked = Action::toggle_parallel;
+  if (const ThreadTrial* trial = session.thread_trial()) {
+    if (trial->parallel_cost() <= 0.0)
+      ImGui::TextDisabled("  auto: measuring both settings");
+    else
+      ImGui::TextDisabled("  auto, ms/step: 1 thread %.3g, parallel %.3g",
+                          1e3 * trial->serial_cost(), 1e3 * trial->parallel_cost());
+  }
   return clicked;
 }
 
 }  // namespace
 
+float panel_width(float window_width) {
+  return std::clamp(0.3f * window_width, 300.0f, 380.0f);
+}
+
 std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view, PanelState& state,
                                          const FrameStats& stats) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  // Fixed width, height following the content (error lines come and go) up to the window's
-  // height, where the panel scrolls.
+  // Width from the window's, height following the content (error lines come and go) up to the
+  // window's height, where the panel scrolls.
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   const float tallest = std::max(100.0f, viewport->WorkSize.y - 20.0f);
-  ImGui::SetNextWindowSizeConstraints(ImVec2(kPanelWidth, 0.0f), ImVec2(kPanelWidth, tallest));
+  const float width = panel_width(viewport->WorkSize.x);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, tallest));
+  ImGui::SetNextWindowCollapsed(viewport->WorkSize.x < kCollapsedPanelBelow,
+                                ImGuiCond_FirstUseEver);
   std::optional<Action> clicked;
   if (!ImGui::Begin("ClothLab", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     state.panel_right = ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;

@@ -36,6 +36,12 @@ struct PanelState {
 
 // Draws the panel. Applies edits to the session (values that keep the topology at once, a
 // resolution on Reset) and returns the action of a clicked button, dispatched like its key.
+// The panels' width in a window `window_width` points wide: 380 points from 1280 up, narrower
+// below (30 % of the window, at least 300), so a 1024-point screen keeps two thirds for the cloth.
+float panel_width(float window_width);
+// Below this width the control panel starts collapsed (its title bar opens it; H lists the keys).
+inline constexpr float kCollapsedPanelBelow = 1100.0f;
+
 std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view, PanelState& state,
                                          const FrameStats& stats);
 

@@ -5,13 +5,13 @@
 #include <cmath>
 #include <cstdio>
 
+#include "apps/view/control_panel.hpp"
 #include "music/beat_tracker.hpp"
 #include "music/music_track.hpp"
 
 namespace clothlab::vis {
 namespace {
 
-constexpr float kPanelWidth = 380.0f;  // as the control panel
 constexpr float kPlotHeight = 90.0f;
 // One colour per band, low to high: warm for the kick, green for the snare's body, blue for the
 // hats; the same order as AudioBand.
@@ -90,7 +90,8 @@ void draw_music_panel(const MusicSpec& music, double t, const char* status, Musi
   ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 10.0f,
                                  viewport->WorkPos.y + viewport->WorkSize.y - 10.0f),
                           ImGuiCond_Always, ImVec2(1.0f, 1.0f));
-  ImGui::SetNextWindowSizeConstraints(ImVec2(kPanelWidth, 0.0f), ImVec2(kPanelWidth, FLT_MAX));
+  const float width = panel_width(viewport->WorkSize.x);  // as the control panel
+  ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, FLT_MAX));
   if (!ImGui::Begin("Music", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::End();
     return;

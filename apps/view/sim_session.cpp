@@ -33,10 +33,24 @@ void SimSession::rebuilt() {
 }
 
 void SimSession::choose_threads() {
+  trial_active_ = false;
   if (parallel_chosen_ || base_.solver.threads == 1) return;
-  const int threads = solver_->vertex_count() >= kParallelVertices ? base_.solver.threads : 1;
+  if (solver_->vertex_count() < kParallelVertices) return use_threads(1);
+  trial_active_ = true;
+  trial_ = ThreadTrial(base_.solver.threads);
+  use_threads(trial_.threads());
+}
+
+void SimSession::use_threads(int threads) {
+  if (threads == applied_.solver.threads) return;
   applied_.solver.threads = draft_.solver.threads = threads;
   solver_->set_threads(threads);
+}
+
+void SimSession::measured_frame(long steps, double seconds, double now) {
+  if (!trial_active_) return;
+  trial_.record(steps, seconds, now);
+  use_threads(trial_.threads());
 }
 
 std::unique_ptr<Solver> SimSession::build(const Scene& scene) {
@@ -153,6 +167,7 @@ void SimSession::toggle_wind() {
 
 void SimSession::toggle_parallel() {
   parallel_chosen_ = true;
+  trial_active_ = false;
   const int threads = parallel() ? 1 : 0;
   applied_.solver.threads = draft_.solver.threads = threads;
   solver_->set_threads(threads);

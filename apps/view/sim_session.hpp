@@ -13,6 +13,7 @@
 
 #include "sim/core/parallel.hpp"
 #include "sim/realtime/frame_stepper.hpp"
+#include "sim/realtime/thread_trial.hpp"
 #include "sim/scene/scene.hpp"
 #include "sim/solver.hpp"
 #include "sim/trace/csv_trace.hpp"
@@ -64,13 +65,19 @@ class SimSession {
   // Why the running solver is not the backend the scene asks for (empty when it is).
   const std::string& backend_note() const { return backend_note_; }
   void toggle_wind();
-  // M: all cores <-> one thread. Until M is pressed the session chooses: all cores (the scene's
-  // threads setting) from kParallelMinVertices vertices up, one thread below, as the solver's
-  // threads = 0 does (sim/core/parallel.hpp), but also when the scene names a count. Waking the
-  // passively waiting threads costs more than a small cloth's step: at 32x32, 2 threads took
-  // 0.26 ms per symplectic Euler step against 0.04 ms on one, and 18 ms against 1.6 ms per
-  // implicit Euler step.
+  // M: all cores <-> one thread. Until M is pressed the session chooses: one thread below
+  // kParallelMinVertices vertices, as the solver's threads = 0 does (sim/core/parallel.hpp), but
+  // also when the scene names a count (waking the passively waiting threads costs more than a
+  // small cloth's step: at 32x32, 2 threads took 0.26 ms per symplectic Euler step against
+  // 0.04 ms on one, and 18 ms against 1.6 ms per implicit Euler step); from that size up,
+  // whichever of one thread and the scene's threads setting measured faster per step in the
+  // frames the window reports (measured_frame; sim/realtime/thread_trial.hpp).
   void toggle_parallel();
+  // A frame's steps and their wall seconds, ending at wall-clock time `now` (s): the automatic
+  // choice's measurement.
+  void measured_frame(long steps, double seconds, double now);
+  // The automatic choice's trial, while it decides the thread count (null otherwise).
+  const ThreadTrial* thread_trial() const { return trial_active_ ? &trial_ : nullptr; }
   static constexpr std::size_t kParallelVertices = kParallelMinVertices;
   bool parallel() const { return applied_.solver.threads != 1; }
 
@@ -109,7 +116,10 @@ class SimSession {
   FrameAdvance advance_recording(double request, const FrameCap& cap);
   void record_step();
 
+  void use_threads(int threads);
   bool parallel_chosen_ = false;  // M was pressed: keep the user's choice
+  bool trial_active_ = false;     // the measured choice decides (large cloth, no M, no count 1)
+  ThreadTrial trial_;
   SolverFactory factory_;
   int copies_ = 1;
   double spacing_ = 0.0;  // m between copies, from the original's extent

@@ -247,6 +247,9 @@ void ViewApp::simulate(double wall_seconds) {
   sample.requested = running ? request : 0.0;
   sample.limit = r.capped ? r.limit : FrameLimit::none;
   stats_.add(sample);
+  if (running)
+    session_.measured_frame(r.steps, sample.step_seconds,
+                            std::chrono::duration<double>(t0.time_since_epoch()).count());
   // The cost of a step, smoothed over frames (a frame's steps can be few and noisy).
   if (r.steps > 0) {
     const double cost = sample.step_seconds / double(r.steps);

@@ -50,9 +50,9 @@ struct FrameFields {
   }
 };
 
-// Takes the snapshots of one solver. A field not requested is left empty (its memory kept).
-// Allocates only when a field is first asked for (or the
-// vertex count changes): a frame that keeps its request reuses every buffer.
+// Takes the snapshots of one solver. A field not requested is left empty (its memory kept). It
+// allocates only when a field is first asked for or the vertex count changes: a frame that
+// keeps its request reuses every buffer.
 class FieldSnapshot {
  public:
   // Fills fields() from `solver`'s current state. The solver computes what is derived from the
