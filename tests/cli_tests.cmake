@@ -156,6 +156,13 @@ clothlab_cli_test(check.tube_radius_tiny 2
 clothlab_cli_test(check.grid_size_tiny 2
   "cloth\\.size: puts neighbouring vertices [0-9.e-]+ m apart along u"
   check ${CLOTHLAB_DEFAULT_SCENE} --set "cloth.size=[1e-9,1]")
+# The same lattice traced with its energy every step: the row of step 2 is the one refused (the
+# kinetic check alone would stop the run a step later).
+clothlab_cli_test(trace.diverges_in_a_rows_energy 1
+  "diverged at step 2 \\(t = 0\\.002 s\\): .*(total|elastic) energy [0-9.e+]+ J \\(elastic"
+  trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.01 --out ${CLOTHLAB_TRACE_OUT}/stretched_rows.csv
+  --set solver.integrator=explicit_euler --set springs.stiffness=1e9 --set solver.dt=0.001
+  "--set=trace.fields=[\"energy\"]" --set trace.every=1)
 # check knows the explicit methods' limits: a fixed step above one is valid input (exit 0) but
 # said, with dt = "auto"'s step; below it nothing is said.
 clothlab_cli_test(check.step_above_the_limit 0

@@ -24,13 +24,8 @@ long whole_steps(double duration, double dt) {
 
 namespace {
 
-// A row about to hold a non-finite value, or an energy beyond the divergence monitor's limit, is
-// a divergence: the trace is not written.
-bool row_is_sane(const TraceWriter& writer, const Solver& solver, TraceRunResult& r) {
-  if (const std::optional<Energy>& e = writer.last_energy(); e && writer.finite()) {
-    r.divergence = solver.energy_divergence(*e);
-    if (r.divergence) return false;
-  }
+// A row about to hold a non-finite value is a divergence: the trace is not written.
+bool row_is_finite(const TraceWriter& writer, const Solver& solver, TraceRunResult& r) {
   if (writer.finite()) return true;
   Divergence d;
   d.step = solver.step_count();
@@ -38,6 +33,15 @@ bool row_is_sane(const TraceWriter& writer, const Solver& solver, TraceRunResult
   d.quantity = writer.first_non_finite() + " in the trace row";
   r.divergence = d;
   return false;
+}
+
+// The row just written: its energy (when the trace has energy columns) beyond the divergence
+// monitor's limit is a divergence at its step, checked once per row.
+bool row_energy_is_bounded(const TraceWriter& writer, const Solver& solver, TraceRunResult& r) {
+  const std::optional<Energy>& e = writer.last_energy();
+  if (!e || !writer.finite()) return true;  // a non-finite row is row_is_finite's
+  r.divergence = solver.energy_divergence(*e);
+  return !r.divergence;
 }
 
 }  // namespace
@@ -58,7 +62,8 @@ TraceRunResult run_trace(Solver& solver, const TraceSpec& spec, bool multi_cloth
   ++r.written_steps;
   Clock::duration stepping{};
   long next_row = std::min<long>(spec.every, total);
-  while (r.steps < total && row_is_sane(writer, solver, r)) {
+  const bool first_row_bounded = row_energy_is_bounded(writer, solver, r);
+  while (first_row_bounded && r.steps < total && row_is_finite(writer, solver, r)) {
     const long chunk = std::min<long>(stretch, next_row - r.steps);
     const auto t0 = Clock::now();
     const AdvanceResult a = solver.step(chunk);
@@ -78,9 +83,10 @@ TraceRunResult run_trace(Solver& solver, const TraceSpec& spec, bool multi_cloth
     if (r.steps < next_row) continue;
     writer.write_step(solver);
     ++r.written_steps;
+    if (!row_energy_is_bounded(writer, solver, r)) break;
     next_row = std::min<long>(next_row + spec.every, total);
   }
-  if (!r.divergence && !r.stopped) row_is_sane(writer, solver, r);
+  if (!r.divergence && !r.stopped) row_is_finite(writer, solver, r);
   r.step_seconds = std::chrono::duration<double>(stepping).count();
   r.simulated_time = solver.time();
   r.final_energy = solver.energy();
