@@ -150,7 +150,6 @@ TEST(Copies, ScenesThatCannotBeCopiedSayWhy) {
   EXPECT_NE(copies_unsupported_reason(follow).find("pins_follow"), std::string::npos);
 }
 
-
 // Copies past kParallelMinVertices (32 copies of 16x16 = 8192 vertices) hand the thread count to
 // the measured trial: one thread first, then the parallel setting, and the faster is kept; a
 // busy machine's slow parallel step keeps one thread. M is the user's choice and ends the trial;
