@@ -115,6 +115,12 @@ file(MAKE_DIRECTORY ${CLOTHLAB_TRACE_OUT})
 clothlab_cli_test(trace.default 0
   "trace: 0\\.49972 s simulated in 806 steps of 0\\.00062 s \\(auto\\), .* ms/step .*final energy .* J"
   trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.5 --out ${CLOTHLAB_TRACE_OUT}/default.csv)
+# --quiet: nothing at all on success (a script's own output stays clean); errors still print.
+clothlab_cli_test(trace.quiet 0 "<nothing>"
+  trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.05 --out ${CLOTHLAB_TRACE_OUT}/quiet.csv --quiet)
+clothlab_cli_test(trace.quiet_still_says_divergence 1 "simulation diverged at step"
+  trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.1 --out ${CLOTHLAB_TRACE_OUT}/quiet_diverged.csv
+  --quiet --set solver.dt=0.01)
 # Every command waits passively at OpenMP barriers, after a 1000-spin wait, when the user set no
 # policy (issue 23: with OpenMP's spinning default a loaded machine made a trace 66x slower), and
 # the summary says so;
@@ -226,7 +232,7 @@ clothlab_env_test(trace.gpu_without_gl "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexist
   trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.01 --out ${CLOTHLAB_TRACE_OUT}/trace_gpu_no_gl.csv
   --set solver.backend=gpu)
 clothlab_cli_test(render.gpu_backend 0 "steps of [0-9.]+ s on the GPU\\)"
-  render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 160x90 --quiet
+  render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 160x90
   --out ${CLOTHLAB_TRACE_OUT}/render_gpu --set solver.backend=gpu)
 # The GPU backend against the CPU solver (an OpenGL context: EGL on llvmpipe in CI).
 clothlab_cli_test(bench.backends_quick 0 "CPU and GPU backends.*gpu .*32x32.*wrote .*backends\\.csv"
@@ -265,10 +271,10 @@ clothlab_cli_test(trace.bad_set 2 "--set cloth\\.resolution=\\[0,4\\]: cloth\\.r
 # itself with a passive OpenMP wait policy.
 clothlab_cli_test(render.small 0
   "render: 3 frames of 64x48 \\(mode 1, quality (full|fast) \\(auto\\)\\) on .*ms/frame simulation .*ms/frame rendering"
-  render ${CLOTHLAB_DEFAULT_SCENE} --frames 3 --size 64x48 --mode 1 --quiet
+  render ${CLOTHLAB_DEFAULT_SCENE} --frames 3 --size 64x48 --mode 1
   --out ${CLOTHLAB_TRACE_OUT}/render_small)
 clothlab_cli_test(render.quality_set 0 "quality full\\) on "
-  render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 64x48 --quiet --set render.quality=\"full\"
+  render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 64x48 --set render.quality=\"full\"
   --out ${CLOTHLAB_TRACE_OUT}/render_full)
 clothlab_cli_test(render.nothing_to_write 2 "nothing to write: give --out DIR"
   render ${CLOTHLAB_DEFAULT_SCENE} --frames 2)
@@ -294,8 +300,11 @@ clothlab_cli_test(render.probe 0
   "{\"field\": \"velocity\", \"pixel\": \\[80, 60\\], \"value\": \\[[-0-9.e+]+, [-0-9.e+]+, [-0-9.e+]+\\], \"magnitude\": [0-9.e+-]+, \"vertex\": \\[[0-9]+, [0-9]+\\], \"vertex_value\": \\[[-0-9.e+]+, [-0-9.e+]+, [-0-9.e+]+\\]}"
   render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 160x120 --quiet
   --out ${CLOTHLAB_TRACE_OUT}/render_probe --probe 80,60 --field velocity)
+clothlab_cli_test(render.quiet 0 "<nothing>"
+  render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 64x48 --quiet --out ${CLOTHLAB_TRACE_OUT}/render_quiet)
+# With --quiet the probe's JSON is the whole output.
 clothlab_cli_test(render.probe_sky 0
-  "{\"field\": \"force\", \"pixel\": \\[0, 0\\], \"value\": null, \"magnitude\": null, \"vertex\": null, \"vertex_value\": null}"
+  "^{\"field\": \"force\", \"pixel\": \\[0, 0\\], \"value\": null, \"magnitude\": null, \"vertex\": null, \"vertex_value\": null}"
   render ${CLOTHLAB_DEFAULT_SCENE} --frames 1 --size 160x120 --quiet
   --out ${CLOTHLAB_TRACE_OUT}/render_probe_sky --probe 0,0)
 clothlab_cli_test(render.probe_outside 2 "--probe 160,60: must be PX,PY, a pixel inside the 160x120 image"
@@ -307,9 +316,20 @@ clothlab_cli_test(render.probe_not_a_pixel 2 "--probe abc: must be PX,PY"
 clothlab_cli_test(render.bad_field 2 "--field: density not in"
   render ${CLOTHLAB_DEFAULT_SCENE} --out ${CLOTHLAB_TRACE_OUT}/render_bad --probe 1,1
   --field density)
-clothlab_cli_test(render.bad_video 1 "ffmpeg (failed to write|stopped accepting frames for) '/nonexistent-dir/x.mp4'"
+# A file's directory must exist and be writable: refused when the command line is read, as for
+# trace, not after the frames by ffmpeg.
+clothlab_cli_test(render.video_into_missing_directory 2
+  "clothlab render: --video: cannot write '/nonexistent-dir/x\\.mp4': no such directory \\('/nonexistent-dir'\\)"
   render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 32x32 --quiet
   --out ${CLOTHLAB_TRACE_OUT}/render_video --video /nonexistent-dir/x.mp4)
+clothlab_cli_test(render.music_into_missing_directory 2
+  "clothlab render: --music-out: cannot write '/nonexistent-dir/m\\.wav': no such directory"
+  render ${PROJECT_SOURCE_DIR}/scenes/dance.toml --frames 1 --size 32x32 --quiet
+  --out ${CLOTHLAB_TRACE_OUT}/render_music --music-out /nonexistent-dir/m.wav)
+clothlab_cli_test(render.video_name_too_long 2
+  "clothlab render: --video: cannot use '[n]+\\.mp4': File name too long"
+  render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 32x32 --quiet
+  --video nnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnn.mp4)
 # A video whose end ffmpeg cannot write is refused (exit 1) and nothing is kept, where ffmpeg
 # itself exits 0 and leaves an MP4 without its index (the moov atom, written last). A file-size
 # limit stands in for a full disk: with SIGXFSZ ignored, writes past it fail as on ENOSPC.
@@ -320,9 +340,16 @@ add_test(NAME cli.render.video_cut_short
 set_tests_properties(cli.render.video_cut_short PROPERTIES TIMEOUT 60
   ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}"
   PASS_REGULAR_EXPRESSION "ffmpeg wrote an incomplete video for 'v\\.mp4' .*nothing was kept\nexit status 1\nleft:\n")
+# The same on a real full file system for every writer (trace, video, PNG frames, music): a small
+# tmpfs in a private mount namespace, skipped with the reason where none can be mounted.
+add_test(NAME cli.output.full_disk
+  COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/full_disk_test.sh $<TARGET_FILE:clothlab>
+    ${PROJECT_SOURCE_DIR}/scenes ${CMAKE_CURRENT_BINARY_DIR}/full_disk)
+set_tests_properties(cli.output.full_disk PROPERTIES TIMEOUT 120
+  ENVIRONMENT "${CLOTHLAB_GL_TEST_ENVIRONMENT}" SKIP_REGULAR_EXPRESSION "SKIP: ")
 # Scientific views headless: colour by a scalar, arrows, force source; bad values name the option.
 clothlab_cli_test(render.views 0 "render: 2 frames of 96x72 .*colour by strain \\[-?[0-9.e+-]+, [0-9.e+-]+\\].* [0-9]+ force arrows"
-  render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 96x72 --quiet --color-by strain
+  render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 96x72 --color-by strain
   --colormap coolwarm --range symmetric --arrows force,normals --force-source springs
   --arrow-stride 4 --arrow-scale log --out ${CLOTHLAB_TRACE_OUT}/render_views)
 clothlab_cli_test(render.bad_range 2 "--range: must be auto, symmetric or MIN,MAX with MIN < MAX"

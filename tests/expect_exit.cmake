@@ -2,7 +2,7 @@
 #   cmake -DCOMMAND="prog|arg1|arg2" -DEXPECT_RC=2 -DEXPECT_REGEX="solver\\.dt" -P expect_exit.cmake
 # COMMAND separates the program and its arguments with '|' (not ';', which CTest would split
 # and which --set values may need). EXPECT_REGEX (optional; empty = any output) is matched
-# against stdout and stderr together.
+# against stdout and stderr together; EXPECT_REGEX=<nothing> asks for no output at all.
 foreach(var COMMAND EXPECT_RC)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "expect_exit.cmake: -D${var}=... is required")
@@ -22,7 +22,11 @@ if(NOT "${rc}" STREQUAL "${EXPECT_RC}")
   message(FATAL_ERROR "exit status ${rc}, expected ${EXPECT_RC}\n"
     "command: ${command}\nstdout:\n${out}\nstderr:\n${err}")
 endif()
-if(NOT "${EXPECT_REGEX}" STREQUAL "" AND NOT "${output}" MATCHES "${EXPECT_REGEX}")
+if("${EXPECT_REGEX}" STREQUAL "<nothing>")
+  if(NOT "${output}" STREQUAL "")
+    message(FATAL_ERROR "expected no output\ncommand: ${command}\nstdout:\n${out}\nstderr:\n${err}")
+  endif()
+elseif(NOT "${EXPECT_REGEX}" STREQUAL "" AND NOT "${output}" MATCHES "${EXPECT_REGEX}")
   message(FATAL_ERROR "output does not match /${EXPECT_REGEX}/\n"
     "command: ${command}\nstdout:\n${out}\nstderr:\n${err}")
 endif()

@@ -23,7 +23,7 @@ function(clothlab_video_test name scene audio frames regex)
     set(out --out ${CLOTHLAB_VIDEO_OUT}/${name})
   endif()
   clothlab_cli_test(render.video_${name} 0 "${regex}"
-    render ${scene} --frames 30 --fps 30 --size 160x120 --quiet ${out} --video ${video})
+    render ${scene} --frames 30 --fps 30 --size 160x120 ${out} --video ${video})
   add_test(NAME cli.render.video_${name}_streams
     COMMAND ${CMAKE_COMMAND} -DFFPROBE=${FFPROBE} -DFILE=${video} -DDURATION=1 -DFPS=30
       -DAUDIO=${audio} -P ${CMAKE_CURRENT_LIST_DIR}/check_video.cmake)
@@ -43,7 +43,7 @@ clothlab_video_test(silent ${CLOTHLAB_DEFAULT_SCENE} OFF OFF
 # header + 40 * 44100 * 2 bytes), and a scene without music is refused.
 set(CLOTHLAB_MUSIC_WAV ${CLOTHLAB_VIDEO_OUT}/dance_music.wav)
 clothlab_cli_test(render.music_out 0 "render: 1 frames"
-  render ${PROJECT_SOURCE_DIR}/scenes/dance.toml --frames 1 --size 64x48 --quiet
+  render ${PROJECT_SOURCE_DIR}/scenes/dance.toml --frames 1 --size 64x48
   --out ${CLOTHLAB_VIDEO_OUT}/music_out --music-out ${CLOTHLAB_MUSIC_WAV})
 add_test(NAME cli.render.music_out_size
   COMMAND ${CMAKE_COMMAND} -DFILE=${CLOTHLAB_MUSIC_WAV} -DBYTES=3528044

@@ -22,6 +22,7 @@ struct TraceArgs {
   std::vector<std::string> overrides;
   double duration = 0.0;
   std::string out;
+  bool quiet = false;  // only errors and warnings: no summary, no estimate or progress
 };
 
 struct RenderArgs {
@@ -35,7 +36,7 @@ struct RenderArgs {
   std::string out;        // directory for frame_00000.png, ...
   std::string video;      // optional MP4 through ffmpeg
   std::string music_out;  // optional: the scene's music as a WAV file
-  bool quiet = false;     // no progress bar
+  bool quiet = false;     // only errors, warnings and --probe's line: no progress, no summary
   // --probe PX,PY: after the last frame, one JSON line with `field` under that pixel (row 0 at
   // the top); the force field is computed only then.
   std::optional<std::array<int, 2>> probe;

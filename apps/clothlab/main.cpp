@@ -51,6 +51,8 @@ CLI::App* add_trace(CLI::App& app, TraceArgs& trace) {
           },
           "SECONDS"));
   trace_cmd->add_option("--out", trace.out, "CSV file to write")->required()->check(output_file());
+  trace_cmd->add_flag("--quiet", trace.quiet,
+                      "print only errors and warnings (no estimate, progress or summary)");
 
   return trace_cmd;
 }
@@ -207,7 +209,8 @@ CLI::App* add_render(CLI::App& app, RenderCli& cli) {
       ->add_option("--music-out", render.music_out,
                    "also write the scene's [music] (e.g. its generated drum track) as WAV")
       ->check(output_file());
-  render_cmd->add_flag("--quiet", render.quiet, "no progress bar");
+  render_cmd->add_flag("--quiet", render.quiet,
+                       "print only errors, warnings and --probe's line (no progress or summary)");
   render_cmd
       ->add_option(
           "--copies", render.copies,

@@ -12,7 +12,8 @@
 namespace clothlab::app {
 
 // Why `path` cannot be written by renaming a finished file over it (one line), or "" when it
-// can. `directory_ok`: the option also takes a directory (bench --out, render --out).
+// can: a file's directory must exist and be writable. `directory_ok`: the option also takes a
+// directory (bench --out, render --out), made when missing.
 std::string output_path_problem(const std::string& path, bool directory_ok);
 
 // The same as a CLI11 check for a file option (trace --out, render --video, --music-out) or an

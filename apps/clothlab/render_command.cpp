@@ -193,6 +193,7 @@ int render_scene(const RenderArgs& args, Scene& scene) {
   if (t.diverged) return 1;
   if (video) video->finish();
   if (args.probe) print_probe(*solver, renderer, view, args);
+  if (args.quiet) return 0;
   print_summary(args, t, *solver, renderer, view, music);
   print_views(renderer.diagnostics(), view);
   return 0;

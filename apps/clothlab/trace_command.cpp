@@ -1,5 +1,3 @@
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -31,22 +29,6 @@ std::string replay_command(const std::string& scene, const std::vector<std::stri
 
 namespace {
 
-// The CSV is written to a temporary file beside --out and renamed at the end, so the directory
-// must exist and be writable; said before any simulation runs (exit 2), not after it (exit 1).
-bool out_writable(const std::string& out) {
-  const std::filesystem::path dir = std::filesystem::absolute(out).parent_path();
-  std::error_code ec;
-  const char* why = nullptr;
-  if (!std::filesystem::is_directory(dir, ec))
-    why = "no such directory";
-  else if (::access(dir.c_str(), W_OK) != 0)
-    why = "the directory is not writable";
-  if (why)
-    std::fprintf(stderr, "clothlab trace: --out: cannot write '%s': %s ('%s')\n", out.c_str(), why,
-                 dir.c_str());
-  return why == nullptr;
-}
-
 // A trace longer than this (estimated from its first half second of steps) is refused: 24 hours.
 constexpr double kMaxTraceSeconds = 24.0 * 3600.0;
 // From this estimated length on, the run says its size and shows a progress bar.
@@ -72,14 +54,16 @@ std::string duration_words(double seconds) {
 // progress bar with the time left.
 class TraceWatch {
  public:
-  TraceWatch(double dt, long total) : dt_(dt), bar_(total, false, "steps") {}
+  // quiet: the estimate still refuses a run beyond kMaxTraceSeconds, but says nothing else.
+  TraceWatch(double dt, long total, bool quiet)
+      : dt_(dt), quiet_(quiet), bar_(total, false, "steps") {}
 
   bool operator()(long done, long total, double seconds) {
     if (!estimated_ && (seconds >= kProbeSeconds || done == total)) {
       estimated_ = true;
       estimate_ = seconds * double(total) / double(done);
       if (estimate_ > kMaxTraceSeconds) return false;
-      if (estimate_ > kAnnounceSeconds) {
+      if (estimate_ > kAnnounceSeconds && !quiet_) {
         std::fprintf(stderr, "clothlab trace: %ld steps of %g s, about %s (%.3g ms/step)\n", total,
                      dt_, duration_words(estimate_).c_str(), 1e3 * seconds / double(done));
         bar_.enable();
@@ -93,6 +77,7 @@ class TraceWatch {
 
  private:
   double dt_;
+  bool quiet_;
   bool estimated_ = false;
   double estimate_ = 0.0;
   ProgressBar bar_;
@@ -176,7 +161,6 @@ int unfinished(const TraceArgs& args, const Scene& scene, const Solver& solver,
 }  // namespace
 
 int run_trace_command(const TraceArgs& args) {
-  if (!out_writable(args.out)) return kBadInput;
   std::optional<Scene> loaded = load_scene("trace", args.scene, args.overrides);
   if (!loaded) return kBadInput;
   Scene& scene = *loaded;
@@ -186,7 +170,7 @@ int run_trace_command(const TraceArgs& args) {
   const bool doubles = scene.solver.precision == Precision::f64;
   const long total = step_count(args, scene, solver->dt());
   if (total < 0) return kBadInput;
-  TraceWatch watch(solver->dt(), total);
+  TraceWatch watch(solver->dt(), total, args.quiet);
   TraceRunResult r;
   try {
     r = run_trace(*solver, spec, scene.multi_cloth, doubles, total, args.out, std::ref(watch));
@@ -195,7 +179,7 @@ int run_trace_command(const TraceArgs& args) {
     return 1;
   }
   if (r.stopped || r.divergence) return unfinished(args, scene, *solver, r, total, watch);
-  print_summary(args, scene, *solver, r);
+  if (!args.quiet) print_summary(args, scene, *solver, r);
   return 0;
 }
 

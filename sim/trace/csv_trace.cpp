@@ -2,8 +2,10 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -31,7 +33,8 @@ TraceWriter::TraceWriter(const std::string& path, const TraceSpec& spec, bool mu
       multi_cloth_(multi_cloth),
       format_(double_digits ? "%.17g" : "%.9g") {
   file_ = std::fopen(temp_path_.c_str(), "w");
-  if (!file_) throw std::runtime_error("cannot write trace file '" + path + "'");
+  if (!file_)
+    throw std::runtime_error("cannot write trace file '" + path + "': " + std::strerror(errno));
   const auto cols = trace_columns(spec_, multi_cloth_);
   for (std::size_t c = 0; c < cols.size(); ++c) {
     std::fputs(cols[c].c_str(), file_);
@@ -98,12 +101,15 @@ std::string TraceWriter::first_non_finite() const {
 }
 
 void TraceWriter::commit() {
+  errno = 0;
   const bool write_ok = std::fflush(file_) == 0 && !std::ferror(file_);
   const bool close_ok = std::fclose(file_) == 0;
   file_ = nullptr;
   if (!write_ok || !close_ok || std::rename(temp_path_.c_str(), path_.c_str()) != 0) {
+    const int why = errno;  // ENOSPC on a full disk: the reason the user can act on
     std::remove(temp_path_.c_str());
-    throw std::runtime_error("cannot write trace file '" + path_ + "'");
+    throw std::runtime_error("cannot write trace file '" + path_ + "'" +
+                             (why ? std::string(": ") + std::strerror(why) : std::string()));
   }
 }
 

@@ -17,6 +17,7 @@ namespace clothlab::fuzz {
 struct FuzzContext {
   std::string scene_dir;    // a scene's relative paths resolve here (the repo's scenes/)
   std::string scratch_dir;  // OBJ and sound inputs are written here to be read back
+  std::string program;      // the clothlab executable (the output-path target runs it)
 };
 void set_context(const FuzzContext& context);
 const FuzzContext& context();
@@ -30,6 +31,10 @@ int fuzz_scene(const std::uint8_t* data, std::size_t size);
 int fuzz_obj(const std::uint8_t* data, std::size_t size);
 // A sound file: read and analysed as [music], danced to; every sample, beat and pose is finite.
 int fuzz_wav(const std::uint8_t* data, std::size_t size);
+// Bytes choosing a command, an output option and a path among prepared files, links, devices,
+// pipes and sockets (fuzz_output_paths.cpp): `clothlab` exits 0, 1 or 2 in time, and changes
+// nothing but the output it wrote; never under libFuzzer (it starts a process per input).
+int fuzz_output_paths(const std::uint8_t* data, std::size_t size);
 
 // A property that did not hold: prints "fuzz finding: what" and aborts.
 [[noreturn]] void finding(const std::string& what);

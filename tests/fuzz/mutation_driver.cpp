@@ -1,6 +1,6 @@
 // clothlab_fuzz: the deterministic mutation driver over the fuzz targets (fuzz_targets.hpp).
-//   clothlab_fuzz --target scene|obj|wav --seconds S [--seed N] [--scenes DIR] [--scratch DIR]
-//                 SEED_FILE_OR_DIR...
+//   clothlab_fuzz --target scene|obj|wav|outputs --seconds S [--seed N] [--scenes DIR]
+//                 [--scratch DIR] [--program CLOTHLAB] SEED_FILE_OR_DIR...
 // Each round takes a seed, mutates it (mutations.hpp) and runs the target on it; every seed is
 // also run once as it is. The input under test is written to SCRATCH/current.<target> first, so
 // a run that dies (a finding, a sanitizer report, a hang past kHangSeconds) leaves the input
@@ -42,6 +42,7 @@ const Target kTargets[] = {
     {"scene", fuzz_scene, InputKind::text, {".toml"}},
     {"obj", fuzz_obj, InputKind::text, {".obj"}},
     {"wav", fuzz_wav, InputKind::binary, {".wav", ".mp3", ".flac", ".ogg"}},
+    {"outputs", fuzz_output_paths, InputKind::binary, {".outputs"}},
 };
 
 std::string read_file(const fs::path& p) {
@@ -80,7 +81,7 @@ struct Options {
   const Target* target = nullptr;
   double seconds = 10.0;
   std::uint64_t seed = 1;
-  std::string scenes = ".", scratch = ".";
+  std::string scenes = ".", scratch = ".", program = "clothlab";
   std::vector<std::string> corpus;
 };
 
@@ -100,6 +101,8 @@ bool parse(int argc, char** argv, Options& o) {
       o.scenes = argv[++i];
     } else if (a == "--scratch" && has_value) {
       o.scratch = argv[++i];
+    } else if (a == "--program" && has_value) {
+      o.program = argv[++i];
     } else {
       o.corpus.push_back(a);
     }
@@ -113,12 +116,13 @@ int main(int argc, char** argv) {
   Options o;
   if (!parse(argc, argv, o)) {
     std::fprintf(stderr,
-                 "usage: clothlab_fuzz --target scene|obj|wav --seconds S [--seed N] "
-                 "[--scenes DIR] [--scratch DIR] SEED_FILE_OR_DIR...\n");
+                 "usage: clothlab_fuzz --target scene|obj|wav|outputs --seconds S [--seed N] "
+                 "[--scenes DIR] [--scratch DIR] [--program CLOTHLAB] SEED_FILE_OR_DIR...\n");
     return 2;
   }
   fs::create_directories(o.scratch);
-  set_context({fs::absolute(o.scenes).string(), fs::absolute(o.scratch).string()});
+  set_context({fs::absolute(o.scenes).string(), fs::absolute(o.scratch).string(),
+               fs::absolute(o.program).string()});
   const std::vector<std::string> seeds = seeds_of(o.corpus, *o.target);
   if (seeds.empty()) {
     std::fprintf(stderr, "clothlab_fuzz: no %s seeds in the corpus\n", o.target->name);

@@ -4,8 +4,10 @@
 #include <stb/stb_image.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 
 #include "sim/core/temp_files.hpp"
@@ -66,12 +68,15 @@ void write_png(const Image& image, const std::string& path, PngCompression compr
   }
   const std::string tmp = path + ".tmp";
   const TempFileGuard guard(tmp);  // removed on SIGINT / SIGTERM too
+  errno = 0;
   std::FILE* file = std::fopen(tmp.c_str(), "wb");
   bool ok = file && encode_png(file, image, compression);
   if (file) ok = std::fclose(file) == 0 && ok;
   if (!ok) {
+    const int why = errno;     // ENOSPC on a full disk
     std::remove(tmp.c_str());  // a write that failed midway leaves a partial file
-    throw std::runtime_error("write_png: cannot write '" + path + "'");
+    throw std::runtime_error("write_png: cannot write '" + path + "'" +
+                             (why ? std::string(": ") + std::strerror(why) : std::string()));
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     std::remove(tmp.c_str());
