@@ -79,6 +79,30 @@ TEST(FrameStepper, ASolverSlowerThanRealTimeIsCappedAndSaysSo) {
   EXPECT_NEAR(stalled.dropped_seconds, 8.0, 1e-12);
 }
 
+// A new solver's cost is timed on its first steps (probe_step_cost): the cold first step is left
+// out, the probe stops at the frame's solver share or the step count asked, and a solver that
+// fails (a divergence) stops it at once.
+TEST(FrameStepper, ANewSolversCostIsTimedOnItsFirstSteps) {
+  // 5 ms cold, then 0.1 ms a step: 8 steps within a 20 ms share, cost 0.1 ms.
+  int calls = 0;
+  StepCostProbe p =
+      probe_step_cost(0.02, FrameStepper::kCostSteps, [&] { return calls++ == 0 ? 5e-3 : 1e-4; });
+  EXPECT_EQ(p.steps, 8);
+  EXPECT_NEAR(p.cost, 1e-4, 1e-15);
+  EXPECT_NEAR(p.seconds, 5e-3 + 7e-4, 1e-15);
+  // A step slower than the share: that one step, and it is the cost.
+  p = probe_step_cost(0.02, FrameStepper::kCostSteps, [] { return 0.03; });
+  EXPECT_EQ(p.steps, 1);
+  EXPECT_EQ(p.cost, 0.03);
+  // 8 ms a step: the share is spent after three.
+  p = probe_step_cost(0.02, FrameStepper::kCostSteps, [] { return 8e-3; });
+  EXPECT_EQ(p.steps, 3);
+  // Fewer steps fit the frame's real time than kCostSteps; a failed step ends the probe.
+  EXPECT_EQ(probe_step_cost(1.0, 2, [] { return 1e-4; }).steps, 2);
+  calls = 0;
+  EXPECT_EQ(probe_step_cost(1.0, 8, [&] { return calls++ < 3 ? 1e-4 : -1.0; }).steps, 3);
+}
+
 TEST(FrameStepper, PausedAndSlowMotion) {
   const auto owner = make_solver(hanging());
   Solver& solver = *owner;

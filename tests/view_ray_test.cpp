@@ -30,5 +30,31 @@ TEST(ViewRayTest, PointUnderCursorOnTheCameraFacingPlane) {
   }
 }
 
+// The window's lens shift (OrbitCamera::lens_shift) moves the whole image sideways by that much of
+// the half-width, without turning the camera: the target lands at device x = shift, every point
+// moves by the same shift * w / 2 pixels, and Ctrl + drag's ray still finds the point under the
+// cursor.
+TEST(ViewRayTest, LensShiftMovesTheImageAndKeepsPicking) {
+  vis::OrbitCamera camera;
+  camera.target = {0.2f, 1.0f, -0.3f};
+  camera.yaw_deg = 35.0f;
+  const int w = 640, h = 400;
+  const glm::vec3 points[] = {camera.target, {0.5f, 1.2f, 0.1f}, {-1.0f, 0.0f, 0.4f}};
+  glm::vec2 before[3];
+  for (int k = 0; k < 3; ++k) before[k] = testing::screen_position(camera, w, h, points[k]);
+  camera.lens_shift = 0.3f;
+  for (int k = 0; k < 3; ++k) {
+    const glm::vec2 after = testing::screen_position(camera, w, h, points[k]);
+    EXPECT_NEAR(after.x - before[k].x, 0.3f * w / 2, 0.01f);
+    EXPECT_NEAR(after.y, before[k].y, 0.01f);
+  }
+  EXPECT_NEAR(testing::screen_position(camera, w, h, camera.target).x, 0.65f * w, 0.01f);
+  const glm::vec3 anchor = points[1];
+  const glm::vec3 p = vis::point_on_view_plane(camera, w, h, 500.0f, 120.0f, anchor);
+  const glm::vec2 back = testing::screen_position(camera, w, h, p);
+  EXPECT_NEAR(back.x, 500.0f, 0.01f);
+  EXPECT_NEAR(back.y, 120.0f, 0.01f);
+}
+
 }  // namespace
 }  // namespace clothlab

@@ -63,8 +63,13 @@ int run_bench(const BenchArgs& args) {
       // An existing directory takes the suite's file whatever the number of suites.
       if (!args.out.empty() && (suites.size() > 1 || fs::is_directory(args.out)))
         out = fs::path(args.out) / (suite + ".csv");
-      bench::RunRecord record{suite,      bench::utc_now(), bench::machine_description(),
-                              args.quick, args.threads,     bench::load_average()};
+      bench::RunRecord record;
+      record.suite = suite;
+      record.date = bench::utc_now();
+      record.machine = bench::machine_description();
+      record.quick = args.quick;
+      record.threads = args.threads;
+      record.load_before = bench::load_average();
       const bench::Stopwatch clock;
       const std::vector<bench::Table> tables = run_suite(suite, options);
       // The summary first (the answer), then the tables it was drawn from.

@@ -254,6 +254,11 @@ std::optional<Action> scene_editors(SimSession& session, PanelState& state) {
 
 }  // namespace
 
+float framing_shift(const PanelState& state, float window_width) {
+  if (!state.panel_open || window_width <= 0.0f) return 0.0f;
+  return std::clamp(state.panel_right / window_width, 0.0f, 0.5f);
+}
+
 float panel_width(float window_width) {
   return std::clamp(0.3f * window_width, 300.0f, 380.0f);
 }
@@ -270,12 +275,12 @@ std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view
   ImGui::SetNextWindowCollapsed(viewport->WorkSize.x < kCollapsedPanelBelow,
                                 ImGuiCond_FirstUseEver);
   std::optional<Action> clicked;
-  if (!ImGui::Begin("ClothLab", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    state.panel_right = ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
+  state.panel_open = ImGui::Begin("ClothLab", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  state.panel_right = ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
+  if (!state.panel_open) {
     ImGui::End();
     return clicked;
   }
-  state.panel_right = ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
   ImGui::PushItemWidth(-150.0f);  // room for the labels on the right
   scene_picker(session, state);
   ImGui::SameLine();

@@ -32,7 +32,13 @@ struct PanelState {
   std::optional<std::string> open_scene;
   std::string gl_renderer;   // GL_RENDERER, for what render.quality = "auto" chose
   float panel_right = 0.0f;  // the panel's right edge last frame (window pixels)
+  bool panel_open = false;   // not collapsed to its title bar last frame
 };
+
+// The camera's lens shift (normalised device x) that centres the scene in the part of a window
+// `window_width` points wide that the open panel leaves free: the free part's centre is
+// panel_right / 2 points right of the window's, panel_right / width in device units.
+float framing_shift(const PanelState& state, float window_width);
 
 // Draws the panel. Applies edits to the session (values that keep the topology at once, a
 // resolution on Reset) and returns the action of a clicked button, dispatched like its key.

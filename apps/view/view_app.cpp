@@ -210,6 +210,9 @@ void ViewApp::frame() {
 
   int width = 0, height = 0;
   window_.framebuffer_size(width, height);
+  int window_w = 0, window_h = 0;  // points, as the panel's edge (framebuffer: pixels)
+  glfwGetWindowSize(window_.handle(), &window_w, &window_h);
+  view_.camera.lens_shift = framing_shift(panel_, float(window_w));
   if (width > 0 && height > 0) {
     draw(width, height);
   } else {
@@ -236,22 +239,28 @@ void ViewApp::simulate(double wall_seconds) {
   }
   const double before = session_.solver().time();
   const bool running = !session_.paused && !session_.divergence();
-  const FrameCap cap = stepper_.cap(wall_seconds, step_cost_, session_.solver().dt());
-  const double request = music_.frame_advance(session_, wall_seconds, cap.seconds);
+  const double dt = session_.solver().dt();
+  const StepCostProbe probe =
+      running && step_cost_ == 0.0 ? time_first_steps(wall_seconds) : StepCostProbe{};
+  if (probe.steps > 0) step_cost_ = probe.cost;
+  const double probed = double(probe.steps) * dt;  // simulated by the timed steps
+  FrameCap cap = stepper_.cap(wall_seconds, step_cost_, dt);
+  cap.seconds = std::max(0.0, cap.seconds - probed);
+  const double request = music_.frame_advance(session_, wall_seconds - probed, cap.seconds);
   const auto t0 = std::chrono::steady_clock::now();
   const FrameAdvance r = session_.advance(stepper_, request, cap);
   sample.step_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  sample.steps = r.steps;
+      probe.seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  sample.steps = probe.steps + r.steps;
   sample.simulated = session_.solver().time() - before;
-  sample.requested = running ? request : 0.0;
+  sample.requested = running ? request + probed : 0.0;
   sample.limit = r.capped ? r.limit : FrameLimit::none;
   stats_.add(sample);
   if (running)
-    session_.measured_frame(r.steps, sample.step_seconds,
+    session_.measured_frame(sample.steps, sample.step_seconds,
                             std::chrono::duration<double>(t0.time_since_epoch()).count());
   // The cost of a step, smoothed over frames (a frame's steps can be few and noisy).
-  if (r.steps > 0) {
+  if (r.steps > 0 && probe.steps == 0) {
     const double cost = sample.step_seconds / double(r.steps);
     step_cost_ = step_cost_ > 0.0 ? 0.7 * step_cost_ + 0.3 * cost : cost;
   }
@@ -262,6 +271,21 @@ void ViewApp::simulate(double wall_seconds) {
     run_totals_.simulated += sample.simulated;
     ++run_frames_;
   }
+}
+
+// A new solver's first steps of this frame, one at a time and timed (probe_step_cost), within
+// the frame's solver share and the real time it asks for.
+StepCostProbe ViewApp::time_first_steps(double wall_seconds) {
+  const double dt = session_.solver().dt();
+  const long fit = static_cast<long>(std::floor(wall_seconds / dt));
+  return probe_step_cost(
+      stepper_.solver_share() * wall_seconds, std::min(FrameStepper::kCostSteps, fit), [&] {
+        const auto t0 = std::chrono::steady_clock::now();
+        session_.single_step();
+        const double s =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return session_.divergence() ? -1.0 : s;
+      });
 }
 
 void ViewApp::dispatch(Action action) {

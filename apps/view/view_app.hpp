@@ -85,6 +85,7 @@ class ViewApp {
   void install_callbacks();
   void frame();
   void simulate(double wall_seconds);
+  StepCostProbe time_first_steps(double wall_seconds);
   void dispatch(Action action);
   bool dispatch_view(Action action);
   void dispatch_session(Action action);

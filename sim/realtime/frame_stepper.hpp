@@ -40,10 +40,40 @@ struct FrameAdvance {
   std::optional<Divergence> divergence;
 };
 
+// What the timed first steps of a new solver measured (probe_step_cost).
+struct StepCostProbe {
+  long steps = 0;
+  double seconds = 0.0;  // wall time of those steps
+  double cost = 0.0;     // seconds per step: what the frame's cap is then computed from
+};
+
+// A new solver's cost per step is unknown (FrameLimit::unknown). Rather than one step for the
+// whole frame (a frame of real time dropped each time the solver is rebuilt: 9 % of a 30-frame
+// run), the window steps it one step at a time, timed by `step_once` (which takes one step and
+// returns its wall seconds, or a negative number when it could not: a divergence), while the
+// steps stay within `budget_seconds` (the frame's solver share) and `max_steps`; then the rest of
+// the frame is capped by the measured cost. The first step is cold (caches, pages touched for
+// the first time) and left out of the cost when later ones ran.
+template <class StepOnce>
+StepCostProbe probe_step_cost(double budget_seconds, long max_steps, StepOnce&& step_once) {
+  StepCostProbe p;
+  double later = 0.0;
+  while (p.steps < max_steps && p.seconds < budget_seconds) {
+    const double s = step_once();
+    if (s < 0.0) break;
+    ++p.steps;
+    p.seconds += s;
+    if (p.steps > 1) later += s;
+  }
+  p.cost = p.steps > 1 ? later / double(p.steps - 1) : p.seconds;
+  return p;
+}
+
 class FrameStepper {
  public:
   static constexpr double kSolverShare = 0.5;      // of a frame's wall time
   static constexpr double kMaxFrameSeconds = 2.0;  // of wall time one frame makes up for
+  static constexpr long kCostSteps = 8;            // steps a new solver's cost is timed on
 
   explicit FrameStepper(double solver_share = kSolverShare,
                         double max_frame_seconds = kMaxFrameSeconds)

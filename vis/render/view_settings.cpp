@@ -25,7 +25,8 @@ glm::mat4 OrbitCamera::view() const {
 
 glm::mat4 OrbitCamera::projection(float aspect) const {
   const float near = std::max(0.01f, distance * 0.01f);
-  return glm::perspective(glm::radians(fov_deg), aspect, near, near * 10000.0f);
+  const glm::mat4 lens = glm::translate(glm::mat4(1.0f), glm::vec3(lens_shift, 0.0f, 0.0f));
+  return lens * glm::perspective(glm::radians(fov_deg), aspect, near, near * 10000.0f);
 }
 
 glm::mat4 view_projection(const OrbitCamera& camera, int width, int height) {

@@ -39,6 +39,9 @@ struct OrbitCamera {
   float pitch_deg = 15.0f;
   float distance = 5.0f;
   float fov_deg = 40.0f;  // vertical field of view
+  // Moves the image sideways by this much of the half-width (normalised device x; a lens
+  // shift, not a turn): the window centres the scene in the part its panel leaves free.
+  float lens_shift = 0.0f;
 
   glm::vec3 eye() const;
   glm::mat4 view() const;
