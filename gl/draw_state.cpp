@@ -32,6 +32,13 @@ void clear_target(const float rgba[4]) {
   glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
 }
 
+void clear_depth_in(int x, int y, int width, int height, float depth) {
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(x, y, width, height);
+  glClearBufferfi(GL_DEPTH_STENCIL, 0, depth, 0);
+  glDisable(GL_SCISSOR_TEST);
+}
+
 void unbind_vertex_array() {
   glBindVertexArray(0);
 }

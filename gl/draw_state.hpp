@@ -19,6 +19,11 @@ void bind_target(GLuint framebuffer, int width, int height);
 // Clears the bound target's colour attachment 0 to rgba, and its depth to 1 and stencil to 0.
 void clear_target(const float rgba[4]);
 
+// Sets the bound target's depth to `depth` inside the rectangle (pixels, origin bottom-left) and
+// leaves the rest: a depth of 0 there makes the depth test reject every fragment drawn over it
+// before it is shaded.
+void clear_depth_in(int x, int y, int width, int height, float depth);
+
 // Leaves no vertex array bound (the next pass binds its own).
 void unbind_vertex_array();
 

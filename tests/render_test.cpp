@@ -32,14 +32,15 @@ class RenderTest : public ::testing::Test {
     int r, g, b;
   };
   // Renders the solver's cloth with the given settings; returns RGBA rows, top first.
-  std::vector<std::uint8_t> render(Solver& solver, const vis::ViewSettings& view, int w, int h) {
+  std::vector<std::uint8_t> render(Solver& solver, const vis::ViewSettings& view, int w, int h,
+                                   const vis::PixelRect& covered = {}) {
     vis::Renderer renderer;
     renderer.set_cloth(solver);
     FieldSnapshot snapshot;
     renderer.update_cloth(snapshot.take(solver, vis::frame_request(view, renderer)));
     vis::OffscreenTarget target(w, h);
     target.bind();
-    renderer.draw(view, w, h);
+    renderer.draw(view, w, h, covered);
     return target.read_rgba();
   }
   static Pixel at(const std::vector<std::uint8_t>& img, int w, int x, int y) {
@@ -119,6 +120,48 @@ TEST_F(RenderTest, FloorIsBrighterUnderTheLightThanFarFromIt) {
   const auto over_b = render(solver, view, w, h);
   EXPECT_GT(luminance(over_a, w, pa), luminance(over_b, w, pa) + 60);
   EXPECT_GT(luminance(over_b, w, pb), luminance(over_a, w, pb) + 60);
+}
+
+// The window's panel covers part of the frame: nothing is shaded there (the background colour
+// stays), and every pixel outside it is the same as without the panel, in both qualities.
+TEST_F(RenderTest, NothingIsDrawnUnderACoveredRectangle) {
+  const auto solver_owner = testing::solver<float>(flat_sheet());
+  Solver& solver = *solver_owner;
+  for (const RenderQuality quality : {RenderQuality::full, RenderQuality::fast}) {
+    vis::ViewSettings view = vis::default_view(solver);
+    view.quality = quality;
+    view.camera.lens_shift = 0.3f;
+    const int w = 240, h = 160;
+    const vis::PixelRect panel{10, 20, 70, 120};  // bottom-left origin
+    const auto whole = render(solver, view, w, h), covered = render(solver, view, w, h, panel);
+    int inside = 0, outside_differs = 0, drawn_inside_before = 0;
+    const Pixel corner = at(covered, w, panel.x + 1, h - panel.y - 2);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const int gl_y = h - 1 - y;  // rows are top first
+        const bool in = x >= panel.x && x < panel.x + panel.width && gl_y >= panel.y &&
+                        gl_y < panel.y + panel.height;
+        const Pixel a = at(whole, w, x, y), b = at(covered, w, x, y);
+        const bool same = a.r == b.r && a.g == b.g && a.b == b.b;
+        if (in) {
+          ++inside;
+          EXPECT_TRUE(b.r == corner.r && b.g == corner.g && b.b == corner.b) << x << "," << y;
+          drawn_inside_before += !same;
+        } else {
+          outside_differs += !same;
+        }
+      }
+    EXPECT_EQ(inside, 70 * 120);
+    // The clear colour, encoded as GL_FRAMEBUFFER_SRGB writes it.
+    const auto encoded = [](float c) {
+      return 255.0 * (1.055 * std::pow(double(c), 1.0 / 2.4) - 0.055);
+    };
+    EXPECT_NEAR(corner.r, encoded(view.background.r), 1.0);
+    EXPECT_NEAR(corner.g, encoded(view.background.g), 1.0);
+    EXPECT_NEAR(corner.b, encoded(view.background.b), 1.0);
+    EXPECT_EQ(outside_differs, 0);
+    EXPECT_GT(drawn_inside_before, inside / 2);  // the scene was there: floor, sky, cloth
+  }
 }
 
 TEST_F(RenderTest, ClothIsLitByTheSameLight) {

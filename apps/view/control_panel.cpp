@@ -274,9 +274,14 @@ std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view
   ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, tallest));
   ImGui::SetNextWindowCollapsed(viewport->WorkSize.x < kCollapsedPanelBelow,
                                 ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowBgAlpha(1.0f);  // opaque: the scene is not drawn under it
   std::optional<Action> clicked;
   state.panel_open = ImGui::Begin("ClothLab", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   state.panel_right = ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
+  state.panel_x = ImGui::GetWindowPos().x;
+  state.panel_y = ImGui::GetWindowPos().y;
+  state.panel_w = ImGui::GetWindowSize().x;
+  state.panel_h = ImGui::GetWindowSize().y;
   if (!state.panel_open) {
     ImGui::End();
     return clicked;

@@ -435,6 +435,21 @@ void ViewApp::open_scene(const std::string& path) {
   update_title();
 }
 
+// The open control panel's rectangle in framebuffer pixels (GL's bottom-left origin), shrunk to
+// whole pixels it covers: the scene is not shaded there.
+vis::PixelRect ViewApp::covered_by_panel(int width, int height) const {
+  int window_w = 0, window_h = 0;
+  glfwGetWindowSize(window_.handle(), &window_w, &window_h);
+  if (!panel_.panel_open || window_w <= 0 || window_h <= 0) return {};
+  const float sx = float(width) / float(window_w), sy = float(height) / float(window_h);
+  const int x0 = int(std::ceil(panel_.panel_x * sx));
+  const int x1 = int(std::floor((panel_.panel_x + panel_.panel_w) * sx));
+  const int top = int(std::ceil(panel_.panel_y * sy));
+  const int bottom = int(std::floor((panel_.panel_y + panel_.panel_h) * sy));
+  if (x1 <= x0 || bottom <= top) return {};
+  return {x0, height - bottom, x1 - x0, bottom - top};
+}
+
 void ViewApp::draw(int width, int height) {
   Solver& solver = session_.solver();
   if (rendered_generation_ != session_.generation()) {
@@ -455,7 +470,7 @@ void ViewApp::draw(int width, int height) {
     diagnostics_->update(solver, fields, view_, *renderer_);
   }
   bind_scene_target(width, height);
-  renderer_->draw(view_, width, height);
+  renderer_->draw(view_, width, height, covered_by_panel(width, height));
   diagnostics_->draw(view_, *renderer_);
   if (scene_target_) scene_target_->resolve_into(0);
   draw_legends(view_, *diagnostics_, renderer_->strain_range());

@@ -64,8 +64,10 @@ class Renderer {
   // spans, for draws while view.color.field is not none.
   void set_scalars(const std::vector<float>& values, ScalarRange range);
   // Draws the scene into the bound framebuffer of the given size: first the shadow map when
-  // the view needs one (a shadow filter, or key 7), then the view.
-  void draw(const ViewSettings& view, int width, int height);
+  // the view needs one (a shadow filter, or key 7), then the view. Nothing is shaded inside
+  // `covered` (pixels, origin bottom-left; the window's opaque panel): its depth is set to the
+  // near plane first, and it keeps the background colour.
+  void draw(const ViewSettings& view, int width, int height, const PixelRect& covered = {});
   // view.quality for this context's GL renderer: full or fast (render_quality.hpp).
   RenderQuality quality(const ViewSettings& view) const;
   const std::string& gl_renderer() const { return gl_renderer_; }
@@ -107,7 +109,8 @@ class Renderer {
  private:
   glm::vec3 fit_light_to_casters(const ViewSettings& view);
   glm::mat4 upload_frame(const ViewSettings& view, int width, int height, bool translucent);
-  void draw_at(const ViewSettings& view, bool fast, int width, int height);
+  void draw_at(const ViewSettings& view, bool fast, int width, int height,
+               const PixelRect& covered);
   void draw_cloth(const ViewSettings& view, const std::string& shading, bool subsurface);
   bool run_diffusion(const ViewSettings& view, const std::string& shading, bool fast);
   void draw_shadow_map(const ViewSettings& view, bool translucent);

@@ -32,6 +32,11 @@ enum class DisplayMode {
   light_depth = 7
 };
 
+// A rectangle of a framebuffer in pixels, origin bottom-left (GL's); empty by default.
+struct PixelRect {
+  int x = 0, y = 0, width = 0, height = 0;
+};
+
 // A camera orbiting a target point: yaw about +y, pitch above the horizon, distance in metres.
 struct OrbitCamera {
   glm::vec3 target{0.0f, 1.5f, 0.0f};
