@@ -46,6 +46,24 @@ INSTANTIATE_TEST_SUITE_P(AllIntegrators, StepLoop, ::testing::ValuesIn(kAllInteg
                            return std::string(to_string(param_info.param));
                          });
 
+// The implicit methods with the multigrid preconditioner: its hierarchy is refreshed every
+// Newton iteration and cycled every PCG iteration without allocating (a 40 x 40 sheet: three
+// coarse levels and the dense coarsest solve).
+TEST(StepLoop, MultigridImplicitStepsAllocateNothing) {
+  for (IntegratorKind kind : {IntegratorKind::implicit_euler, IntegratorKind::bdf2}) {
+    Scene scene = testing::sheet(40, 1.0, 0.2, 1000.0, kind, 1.0 / 60.0);
+    scene.cloths[0].pins = {{0, 0}, {39, 0}};
+    scene.springs.damping = 0.05;
+    scene.solver.linear_solver = LinearSolver::multigrid;
+    scene.solver.threads = 2;
+    const auto s = testing::solver<float>(scene);
+    ASSERT_TRUE(s->step(2).ok());
+    const long before = g_allocations.load();
+    ASSERT_TRUE(s->step(10).ok());
+    EXPECT_EQ(g_allocations.load() - before, 0) << "allocations in the step loop";
+  }
+}
+
 // xpbd's grid path with tethers and coarse stretch levels (a 64 x 64 sheet gets one level;
 // its own weight stretches it by 0.2 %).
 TEST(StepLoop, XpbdWithTethersAndCoarseLevelsAllocatesNothing) {

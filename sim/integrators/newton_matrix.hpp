@@ -17,6 +17,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -230,6 +231,19 @@ class NewtonMatrix {
   }
   T free(std::size_t i) const {
     return free_[i];
+  }
+
+  // The springs in spring_list order and, after assemble(), each one's block B_s = alpha I +
+  // e e^T as (alpha, ex, ey, ez): what multigrid.hpp sums its coarse operators from.
+  std::size_t spring_count() const {
+    return end_a_.size();
+  }
+  std::array<int, 2> spring_ends(std::size_t s) const {
+    return {end_a_[s], end_b_[s]};
+  }
+  std::array<T, 4> spring_block(std::size_t s) const {
+    const SpringBlock& b = blocks_[s];
+    return {b.alpha, b.ex, b.ey, b.ez};
   }
 
  private:

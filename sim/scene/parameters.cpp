@@ -26,6 +26,10 @@ constexpr std::array<std::pair<Precision, const char*>, 2> kPrecisionNames{
     {{Precision::f32, "float"}, {Precision::f64, "double"}}};
 constexpr std::array<std::pair<StepSolver, const char*>, 2> kStepSolverNames{
     {{StepSolver::newton, "newton"}, {StepSolver::vbd, "vbd"}}};
+constexpr std::array<std::pair<LinearSolver, const char*>, 3> kLinearSolverNames{
+    {{LinearSolver::automatic, "auto"},
+     {LinearSolver::block_jacobi, "block_jacobi"},
+     {LinearSolver::multigrid, "multigrid"}}};
 constexpr std::array<std::pair<Backend, const char*>, 2> kBackendNames{
     {{Backend::cpu, "cpu"}, {Backend::gpu, "gpu"}}};
 
@@ -351,6 +355,14 @@ std::vector<Parameter> solver_iterations() {
            .only_for = "bdf2",
            .widget = W::combo,
            .description = "what solves each bdf2 step: newton (PCG) or vbd (iterations)"}),
+      choice_row<&SolverSpec::linear_solver, kLinearSolverNames, "linear solver">(
+          {.name = "linear_solver",
+           .fallback = "\"auto\"",
+           .only_for = "implicit_euler, bdf2",
+           .widget = W::combo,
+           .description =
+               "PCG's preconditioner: block_jacobi, multigrid (one aggregation "
+               "V-cycle per iteration), or auto (multigrid on grids from 16384 vertices)"}),
       row<&SolverSpec::cg_max_iterations>({.name = "cg_max_iterations",
                                            .range = between(1, 100000),
                                            .fallback = "500",

@@ -112,6 +112,9 @@ enum class Backend { cpu, gpu };
 // What solves the backward-Euler problem of each bdf2 step.
 enum class StepSolver { newton, vbd };
 
+// PCG's preconditioner in the implicit methods' Newton solves (sim/integrators/multigrid.hpp).
+enum class LinearSolver { automatic, block_jacobi, multigrid };
+
 struct SolverSpec {
   IntegratorKind integrator = IntegratorKind::symplectic_euler;
   double dt = 0.001;           // s, fixed step, > 0 (ignored when dt_auto)
@@ -126,7 +129,9 @@ struct SolverSpec {
   int newton_iterations = 0;    // implicit_euler, bdf2: Newton iterations per step at most (0: 8)
   double newton_tolerance = 0.01;  // implicit_euler, bdf2: stop at |delta v| <= this |v1 - v0|
   StepSolver bdf2_solver = StepSolver::newton;  // bdf2: newton (PCG) or vbd iterations
-  int threads = 0;                              // 0 = auto (sim/core/parallel.hpp)
+  LinearSolver linear_solver =
+      LinearSolver::automatic;    // implicit_euler, bdf2: PCG's preconditioner
+  int threads = 0;                // 0 = auto (sim/core/parallel.hpp)
   bool self_collision = false;    // the cloth keeps its layers apart (sim/contact/self_collision)
   double self_thickness = 0.005;  // m: how far apart two layers stay
   Precision precision = Precision::f32;

@@ -1,0 +1,121 @@
+// Multigrid as PCG's preconditioner for the implicit integrators (solver.linear_solver =
+// "multigrid"): one symmetric V(1,1)-cycle per PCG iteration over the finest level, the Newton
+// matrix itself (newton_matrix.hpp: its matrix-free product and block-Jacobi inverse), and the
+// aggregation levels of multigrid_hierarchy.hpp below it. Block-Jacobi PCG's iterations grow with
+// the grid's side (28 / 60 / 126 / 272 from 16^2 to 128^2); the V-cycle's do not (docs/solver.md,
+// "Toward a multigrid implicit solve").
+//
+// Per Newton iteration refresh() sums the first coarse level from the fine springs' blocks (one
+// pass over vertices and springs, no product) and the hierarchy the rest. Per PCG iteration
+// apply(): z = omega P r (P the block-Jacobi inverse), the residual r - A z restricted to level
+// 1 (each aggregate's sum), the coarse cycle, its correction copied back to each aggregate's
+// vertices, and z += omega P (r - A z). Two products with A per cycle; pinned vertices stay 0.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "sim/core/parallel.hpp"
+#include "sim/integrators/multigrid_hierarchy.hpp"
+#include "sim/integrators/newton_matrix.hpp"
+
+namespace clothlab {
+
+template <class T>
+class MultigridPreconditioner {
+ public:
+  MultigridPreconditioner(const Model<T>& m, const NewtonMatrix<T>& matrix) {
+    std::vector<std::array<int, 2>> springs(matrix.spring_count());
+    for (std::size_t s = 0; s < springs.size(); ++s) springs[s] = matrix.spring_ends(s);
+    std::vector<char> pinned(m.n, 0);
+    for (std::size_t i = 0; i < m.n; ++i) pinned[i] = m.inv_mass[i] == T(0);
+    std::vector<LevelGrid> grids;
+    for (const ClothRange& c : m.cloths) grids.push_back({c.offset, c.nu, c.nv, c.mesh});
+    fine_ = coarsen(m.n, springs, pinned, grids);
+    coarse_ = std::make_unique<CoarseHierarchy>(fine_);
+  }
+
+  // Level 1 from the matrix's current spring blocks and diagonal, then the coarser levels.
+  void refresh(const Model<T>& m, const NewtonMatrix<T>& matrix, T h, int threads) {
+    CoarseLevel& first = coarse_->first();
+    coarse_->zero_first();
+    for (std::size_t i = 0; i < m.n; ++i) {
+      const int c = fine_.of[i];
+      if (c < 0) continue;
+      const double d = double(m.mass[i]) + double(h) * double(m.drag);
+      double* out = &first.diag[6 * std::size_t(c)];
+      out[0] += d, out[3] += d, out[5] += d;
+    }
+    for (std::size_t s = 0; s < fine_.edge_target.size(); ++s) {
+      const int t = fine_.edge_target[s];
+      if (t == kInside) continue;
+      const auto [alpha, ex, ey, ez] = matrix.spring_block(s);
+      const double block[6] = {
+          double(alpha) + double(ex) * ex, double(ex) * ey, double(ex) * ez,
+          double(alpha) + double(ey) * ey, double(ey) * ez, double(alpha) + double(ez) * ez};
+      double* out =
+          t >= 0 ? &first.edge_block[6 * std::size_t(t)] : &first.diag[6 * std::size_t(-2 - t)];
+      for (int c = 0; c < 6; ++c) out[c] += block[c];
+    }
+    coarse_->finish_refresh(threads);
+  }
+
+  // z = one V-cycle on r; `scratch` is overwritten.
+  void apply(const Model<T>& m, const NewtonMatrix<T>& matrix, T h, const Vec3Array<T>& r,
+             Vec3Array<T>& z, Vec3Array<T>& scratch, int threads) {
+    const T omega = T(CoarseHierarchy::kOmega);
+    const std::size_t n = m.n;
+    // z = omega P r, then scratch = r - A z.
+    for_each_block(n, threads, [&](std::size_t b, std::size_t e) {
+      matrix.precondition(r, z, b, e);
+      for (int a = 0; a < 3; ++a)
+        for (std::size_t i = b; i < e; ++i) z.axis(a)[i] *= omega;
+    });
+    residual(m, matrix, h, r, z, scratch, threads);
+    CoarseLevel& first = coarse_->first();
+    for_each_block(first.n, threads, [&](std::size_t b, std::size_t e) {
+      for (std::size_t c = b; c < e; ++c) {
+        double sum[3] = {0.0, 0.0, 0.0};
+        for (int k = fine_.child_start[c]; k < fine_.child_start[c + 1]; ++k) {
+          const auto v = std::size_t(fine_.child[std::size_t(k)]);
+          for (int a = 0; a < 3; ++a) sum[a] += double(scratch.axis(a)[v]);
+        }
+        for (int a = 0; a < 3; ++a) first.b[3 * c + std::size_t(a)] = sum[a];
+      }
+    });
+    coarse_->solve(threads);
+    for_each_block(n, threads, [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i) {
+        const int c = fine_.of[i];
+        if (c < 0) continue;
+        for (int a = 0; a < 3; ++a) z.axis(a)[i] += T(first.x[3 * std::size_t(c) + std::size_t(a)]);
+      }
+    });
+    // z += omega P (r - A z).
+    residual(m, matrix, h, r, z, scratch, threads);
+    for_each_block(n, threads, [&](std::size_t b, std::size_t e) {
+      matrix.precondition(scratch, scratch, b, e);
+      for (int a = 0; a < 3; ++a)
+        for (std::size_t i = b; i < e; ++i) z.axis(a)[i] += omega * scratch.axis(a)[i];
+    });
+  }
+
+  std::size_t levels() const { return 1 + coarse_->levels(); }
+
+ private:
+  // out = r - A z (0 on pinned vertices).
+  static void residual(const Model<T>& m, const NewtonMatrix<T>& matrix, T h, const Vec3Array<T>& r,
+                       const Vec3Array<T>& z, Vec3Array<T>& out, int threads) {
+    for_each_block_indexed(m.n, threads, [&](std::size_t blk, std::size_t b, std::size_t e) {
+      matrix.apply_block(m, h, z, out, blk, b, e);
+      for (int a = 0; a < 3; ++a)
+        for (std::size_t i = b; i < e; ++i)
+          out.axis(a)[i] = (r.axis(a)[i] - out.axis(a)[i]) * matrix.free(i);
+    });
+  }
+
+  CoarseMap fine_;
+  std::unique_ptr<CoarseHierarchy> coarse_;
+};
+
+}  // namespace clothlab

@@ -1,0 +1,99 @@
+// The coarse levels of the multigrid preconditioner for the implicit integrators' Newton systems
+// (multigrid.hpp). Every level's operator has the form of the finest one (newton_matrix.hpp):
+//   (A u)_I = D_I u_I + sum over edges e = (I, J) of B_e (u_I - u_J),
+// with 3x3 symmetric blocks D_I (mass, drag, and springs to pinned vertices) and B_e (springs).
+// Coarsening is by aggregation: 2 x 2 vertices of a grid or tube cloth (a mesh cloth's vertices
+// greedily with their neighbours) become one coarse vertex, and prolongation P copies a coarse
+// vertex's value to its aggregate (piecewise constant). The Galerkin operator P^T A P is then of
+// the same form and is summed without a product: a spring inside one aggregate drops out, a
+// spring between two aggregates adds its block to their coarse edge, a spring to a pinned vertex
+// adds its block to the diagonal (Vanek, Mandel & Brezina 1996, "Algebraic multigrid by smoothed
+// aggregation", Computing 56, with the smoothing of P left out: the measured prototype needed
+// 1.1-1.6x the cycles of bilinear prolongation for a tenth of the Galerkin work, docs/solver.md).
+// Coarse levels are in double; the topology is built once per scene, the values refreshed per
+// Newton iteration without allocation; the coarsest level is factorised (Eigen's LDLT).
+#pragma once
+
+#include <Eigen/Dense>
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace clothlab {
+
+// One coarse level: its operator, vectors and the map to the next coarser level.
+struct CoarseLevel {
+  std::size_t n = 0;
+  std::vector<std::array<int, 2>> edges;             // (I, J), I < J
+  std::vector<double> edge_block;                    // 6 per edge: xx xy xz yy yz zz
+  std::vector<double> diag;                          // 6 per vertex: D_I
+  std::vector<double> inv;                           // 6 per vertex: (D_I + sum of its B_e)^-1
+  std::vector<char> live;                            // has a free fine vertex below it
+  std::vector<int> adj_start, adj_vertex, adj_edge;  // CSR: the edges at each vertex
+  std::vector<double> x, b, r;                       // 3 per vertex
+  // Into the next coarser level (empty at the coarsest): each vertex's aggregate, each edge's
+  // target (fine_edge_target's encoding) and each coarse vertex's children (CSR).
+  std::vector<int> to_coarse, edge_target, child_start, child;
+};
+
+// A cloth's vertices at one level, for aggregation: a grid of nu x nv from `offset`, or `nu`
+// vertices of a mesh.
+struct LevelGrid {
+  int offset = 0, nu = 0, nv = 0;
+  bool mesh = false;
+};
+
+// Where a fine edge's block goes in the next level: an edge index (>= 0), nowhere (kInside: both
+// ends in one aggregate or both left out), or the diagonal of coarse vertex I (-2 - I: one end
+// left out, a pinned vertex).
+inline constexpr int kInside = -1;
+inline int diagonal_target(int coarse_vertex) {
+  return -2 - coarse_vertex;
+}
+
+// The aggregation of one level and the topology of the next.
+struct CoarseMap {
+  std::vector<int> of;  // per vertex: its aggregate; -1 for a left-out vertex
+  std::size_t count = 0;
+  std::vector<LevelGrid> grids;           // the next level's cloths
+  std::vector<std::array<int, 2>> edges;  // the next level's edges
+  std::vector<int> edge_target;           // per edge of this level
+  std::vector<int> child_start, child;    // per aggregate: its vertices (not the left-out ones)
+};
+
+CoarseMap coarsen(std::size_t n, const std::vector<std::array<int, 2>>& edges,
+                  const std::vector<char>& left_out, const std::vector<LevelGrid>& grids);
+
+class CoarseHierarchy {
+ public:
+  static constexpr std::size_t kCoarsest = 64;  // vertices solved directly
+  static constexpr double kOmega = 0.6;         // damped block Jacobi (measured in the prototype)
+
+  // From the finest level's coarse map (coarsen() of the springs and pinned vertices).
+  explicit CoarseHierarchy(const CoarseMap& fine);
+
+  // Level 1, whose diag and edge_block the caller fills from the fine operator (in zeroed
+  // arrays: first() zeroes them) before finish_refresh().
+  CoarseLevel& first() { return levels_.front(); }
+  void zero_first();
+  // The coarser levels' operators, every level's inverse diagonal and the coarsest factors.
+  void finish_refresh(int threads);
+  // first().x = one V(1,1)-cycle on first().b.
+  void solve(int threads) { cycle(0, threads); }
+  std::size_t levels() const { return levels_.size(); }
+
+ private:
+  void cycle(std::size_t l, int threads);
+  void factorise_coarsest();
+
+  std::vector<CoarseLevel> levels_;
+  Eigen::MatrixXd dense_;
+  Eigen::LDLT<Eigen::MatrixXd> ldlt_;
+  Eigen::VectorXd rhs_;
+};
+
+// y = A x on a level (3 per vertex), and r = b - A x.
+void apply_level(const CoarseLevel& level, const std::vector<double>& x, std::vector<double>& y,
+                 int threads);
+
+}  // namespace clothlab
