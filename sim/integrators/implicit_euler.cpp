@@ -75,8 +75,8 @@ int newton_iterations(const SolverSpec& spec) {
 
 // solver.linear_solver = "auto" takes multigrid from this many vertices, on grid and tube
 // cloths (a mesh cloth keeps block Jacobi unless asked). bdf2 at 1/60 s on 2 threads, ms a step
-// block Jacobi / multigrid: 5.3 / 5.2 at 32^2, 30.2 / 33.7 at 64^2, 149 / 143 at 128^2, 812 /
-// 461 at 256^2 (docs/solver.md, "Multigrid preconditioner").
+// block Jacobi / multigrid: 5.0 / 4.5 at 32^2, 28.2 / 28.4 at 64^2, 133 / 123 at 128^2, 478 /
+// 327 at 256^2 (docs/solver.md, "Multigrid preconditioner").
 constexpr std::size_t kMultigridFrom = 16384;
 
 template <class T>
@@ -200,11 +200,7 @@ class ImplicitEuler final : public Integrator<T> {
   // z = one multigrid V-cycle on r (q_ as scratch: A p is not needed again this iteration);
   // returns r.z.
   double multigrid_z(const Model<T>& m, T h, int threads) {
-    multigrid_->apply(m, matrix_, h, r_, z_, q_, threads);
-    for_each_block_indexed(n_, threads, [&](std::size_t blk, std::size_t b, std::size_t e) {
-      partials_[kSums * blk] = dot(r_, z_, b, e);
-    });
-    return sum_partials()[0];
+    return multigrid_->apply(m, matrix_, h, r_, z_, q_, threads);
   }
 
   // |delta|_M / |v - v0|_M after a Newton iteration (delta in dv_): how much the last

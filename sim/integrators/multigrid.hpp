@@ -12,7 +12,9 @@
 // vertices, and z += omega P (r - A z). Two products with A per cycle; pinned vertices stay 0.
 #pragma once
 
+#include <algorithm>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "sim/core/parallel.hpp"
@@ -33,6 +35,7 @@ class MultigridPreconditioner {
     for (const ClothRange& c : m.cloths) grids.push_back({c.offset, c.nu, c.nv, c.mesh});
     fine_ = coarsen(m.n, springs, pinned, grids);
     coarse_ = std::make_unique<CoarseHierarchy>(fine_);
+    partials_.assign(block_count(m.n), 0.0);
   }
 
   // Level 1 from the matrix's current spring blocks and diagonal, then the coarser levels.
@@ -60,62 +63,105 @@ class MultigridPreconditioner {
     coarse_->finish_refresh(threads);
   }
 
-  // z = one V-cycle on r; `scratch` is overwritten.
-  void apply(const Model<T>& m, const NewtonMatrix<T>& matrix, T h, const Vec3Array<T>& r,
-             Vec3Array<T>& z, Vec3Array<T>& scratch, int threads) {
+  // z = one V-cycle on r; returns r.z (`scratch` is overwritten). The finest level's loops run
+  // in two parallel regions (before and after the coarse cycle; barriers between the loops):
+  // a region per loop cost more than the cycle's work below 128^2 (each wakes the sleeping
+  // threads).
+  double apply(const Model<T>& m, const NewtonMatrix<T>& matrix, T h, const Vec3Array<T>& r,
+               Vec3Array<T>& z, Vec3Array<T>& scratch, int threads) {
     const T omega = T(CoarseHierarchy::kOmega);
     const std::size_t n = m.n;
-    // z = omega P r, then scratch = r - A z.
-    for_each_block(n, threads, [&](std::size_t b, std::size_t e) {
-      matrix.precondition(r, z, b, e);
-      for (int a = 0; a < 3; ++a)
-        for (std::size_t i = b; i < e; ++i) z.axis(a)[i] *= omega;
-    });
-    residual(m, matrix, h, r, z, scratch, threads);
     CoarseLevel& first = coarse_->first();
-    for_each_block(first.n, threads, [&](std::size_t b, std::size_t e) {
-      for (std::size_t c = b; c < e; ++c) {
-        double sum[3] = {0.0, 0.0, 0.0};
-        for (int k = fine_.child_start[c]; k < fine_.child_start[c + 1]; ++k) {
-          const auto v = std::size_t(fine_.child[std::size_t(k)]);
-          for (int a = 0; a < 3; ++a) sum[a] += double(scratch.axis(a)[v]);
+    const long blocks = long(block_count(n)), coarse_blocks = long(block_count(first.n));
+    auto range = [](long k, std::size_t size) {
+      const std::size_t b = std::size_t(k) * kBlockSize;
+      return std::pair<std::size_t, std::size_t>{b, std::min(size, b + kBlockSize)};
+    };
+    run_team(blocks > 1 ? threads : 1, [&] {
+#pragma omp for schedule(static)
+      for (long k = 0; k < blocks; ++k) {  // z = omega P r
+        const auto [b, e] = range(k, n);
+        matrix.precondition(r, z, b, e);
+        for (int a = 0; a < 3; ++a)
+          for (std::size_t i = b; i < e; ++i) z.axis(a)[i] *= omega;
+      }
+#pragma omp for schedule(static)
+      for (long k = 0; k < blocks; ++k) {  // scratch = r - A z
+        const auto [b, e] = range(k, n);
+        residual(m, matrix, h, r, z, scratch, std::size_t(k), b, e);
+      }
+#pragma omp for schedule(static)
+      for (long k = 0; k < coarse_blocks; ++k) {  // level 1's right side: each aggregate's sum
+        const auto [b, e] = range(k, first.n);
+        restrict_to(first, scratch, b, e);
+      }
+    });
+    coarse_->solve(threads);  // regions of its own only on levels large enough to gain by them
+    run_team(blocks > 1 ? threads : 1, [&] {
+#pragma omp for schedule(static)
+      for (long k = 0; k < blocks; ++k) {  // z += P e (each vertex takes its aggregate's value)
+        const auto [b, e] = range(k, n);
+        for (std::size_t i = b; i < e; ++i) {
+          const int c = fine_.of[i];
+          if (c < 0) continue;
+          for (int a = 0; a < 3; ++a)
+            z.axis(a)[i] += T(first.x[3 * std::size_t(c) + std::size_t(a)]);
         }
-        for (int a = 0; a < 3; ++a) first.b[3 * c + std::size_t(a)] = sum[a];
+      }
+#pragma omp for schedule(static)
+      for (long k = 0; k < blocks; ++k) {
+        const auto [b, e] = range(k, n);
+        residual(m, matrix, h, r, z, scratch, std::size_t(k), b, e);
+      }
+#pragma omp for schedule(static)
+      for (long k = 0; k < blocks; ++k) {  // z += omega P (r - A z); r.z per block
+        const auto [b, e] = range(k, n);
+        matrix.precondition(scratch, scratch, b, e);
+        double dot = 0.0;
+        for (int a = 0; a < 3; ++a)
+          for (std::size_t i = b; i < e; ++i) {
+            z.axis(a)[i] += omega * scratch.axis(a)[i];
+            dot += double(r.axis(a)[i]) * double(z.axis(a)[i]);
+          }
+        partials_[std::size_t(k)] = dot;
       }
     });
-    coarse_->solve(threads);
-    for_each_block(n, threads, [&](std::size_t b, std::size_t e) {
-      for (std::size_t i = b; i < e; ++i) {
-        const int c = fine_.of[i];
-        if (c < 0) continue;
-        for (int a = 0; a < 3; ++a) z.axis(a)[i] += T(first.x[3 * std::size_t(c) + std::size_t(a)]);
-      }
-    });
-    // z += omega P (r - A z).
-    residual(m, matrix, h, r, z, scratch, threads);
-    for_each_block(n, threads, [&](std::size_t b, std::size_t e) {
-      matrix.precondition(scratch, scratch, b, e);
-      for (int a = 0; a < 3; ++a)
-        for (std::size_t i = b; i < e; ++i) z.axis(a)[i] += omega * scratch.axis(a)[i];
-    });
+    double rz = 0.0;
+    for (long k = 0; k < blocks; ++k) rz += partials_[std::size_t(k)];  // in block order
+    return rz;
   }
 
-  std::size_t levels() const { return 1 + coarse_->levels(); }
+  std::size_t levels() const {
+    return 1 + coarse_->levels();
+  }
 
  private:
-  // out = r - A z (0 on pinned vertices).
+  // out = r - A z on vertex block blk = [b, e) (0 on pinned vertices).
   static void residual(const Model<T>& m, const NewtonMatrix<T>& matrix, T h, const Vec3Array<T>& r,
-                       const Vec3Array<T>& z, Vec3Array<T>& out, int threads) {
-    for_each_block_indexed(m.n, threads, [&](std::size_t blk, std::size_t b, std::size_t e) {
-      matrix.apply_block(m, h, z, out, blk, b, e);
-      for (int a = 0; a < 3; ++a)
-        for (std::size_t i = b; i < e; ++i)
-          out.axis(a)[i] = (r.axis(a)[i] - out.axis(a)[i]) * matrix.free(i);
-    });
+                       const Vec3Array<T>& z, Vec3Array<T>& out, std::size_t blk, std::size_t b,
+                       std::size_t e) {
+    matrix.apply_block(m, h, z, out, blk, b, e);
+    for (int a = 0; a < 3; ++a)
+      for (std::size_t i = b; i < e; ++i)
+        out.axis(a)[i] = (r.axis(a)[i] - out.axis(a)[i]) * matrix.free(i);
+  }
+
+  // Level 1's right side on its vertices [b, e): each aggregate's sum of `fine`.
+  void restrict_to(CoarseLevel& first, const Vec3Array<T>& fine, std::size_t b,
+                   std::size_t e) const {
+    for (std::size_t c = b; c < e; ++c) {
+      double sum[3] = {0.0, 0.0, 0.0};
+      for (int k = fine_.child_start[c]; k < fine_.child_start[c + 1]; ++k) {
+        const auto v = std::size_t(fine_.child[std::size_t(k)]);
+        for (int a = 0; a < 3; ++a) sum[a] += double(fine.axis(a)[v]);
+      }
+      for (int a = 0; a < 3; ++a) first.b[3 * c + std::size_t(a)] = sum[a];
+    }
   }
 
   CoarseMap fine_;
   std::unique_ptr<CoarseHierarchy> coarse_;
+  std::vector<double> partials_;  // r.z per vertex block
 };
 
 }  // namespace clothlab

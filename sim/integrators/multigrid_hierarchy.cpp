@@ -17,6 +17,15 @@ int level_threads(const CoarseLevel& level, int threads) {
   return level.n >= kParallelLevel ? threads : 1;
 }
 
+// fn(begin, end) over the blocks of [0, n): on one thread a plain loop, which may run inside
+// another parallel region's `omp single` (for_each_block's orphaned `omp for` would bind to that
+// region's team there and wait at its barrier for threads that never come).
+template <class Fn>
+void for_blocks(std::size_t n, int threads, Fn&& fn) {
+  if (threads > 1) return for_each_block(n, threads, fn);
+  for (std::size_t b = 0; b < n; b += kBlockSize) fn(b, std::min(n, b + kBlockSize));
+}
+
 // out = M v for a symmetric 3x3 block stored xx xy xz yy yz zz.
 inline void multiply(const double* m, const double* v, double* out) {
   out[0] = m[0] * v[0] + m[1] * v[1] + m[2] * v[2];
@@ -190,7 +199,7 @@ void CoarseHierarchy::finish_refresh(int threads) {
         double* d = &level.diag[6 * v];
         d[0] = d[3] = d[5] = 1.0, d[1] = d[2] = d[4] = 0.0;
       }
-    for_each_block(level.n, level_threads(level, threads), [&](std::size_t b, std::size_t e) {
+    for_blocks(level.n, level_threads(level, threads), [&](std::size_t b, std::size_t e) {
       for (std::size_t v = b; v < e; ++v) {
         double block[6];
         std::copy_n(&level.diag[6 * v], 6, block);
@@ -242,7 +251,7 @@ void CoarseHierarchy::factorise_coarsest() {
 
 void apply_level(const CoarseLevel& level, const std::vector<double>& x, std::vector<double>& y,
                  int threads) {
-  for_each_block(level.n, level_threads(level, threads), [&](std::size_t b, std::size_t e) {
+  for_blocks(level.n, level_threads(level, threads), [&](std::size_t b, std::size_t e) {
     for (std::size_t v = b; v < e; ++v) {
       double* out = &y[3 * v];
       multiply(&level.diag[6 * v], &x[3 * v], out);
@@ -286,7 +295,7 @@ void CoarseHierarchy::cycle(std::size_t l, int threads) {
   CoarseLevel& next = levels_[l + 1];
   auto smooth = [&](bool from_zero) {  // x += omega D^-1 (b - A x)
     if (!from_zero) apply_level(level, level.x, level.r, t);
-    for_each_block(level.n, t, [&](std::size_t b, std::size_t e) {
+    for_blocks(level.n, t, [&](std::size_t b, std::size_t e) {
       for (std::size_t v = b; v < e; ++v) {
         double d[3], dx[3];
         for (int a = 0; a < 3; ++a)
@@ -301,7 +310,7 @@ void CoarseHierarchy::cycle(std::size_t l, int threads) {
   };
   smooth(true);
   apply_level(level, level.x, level.r, t);
-  for_each_block(next.n, level_threads(next, threads), [&](std::size_t b, std::size_t e) {
+  for_blocks(next.n, level_threads(next, threads), [&](std::size_t b, std::size_t e) {
     for (std::size_t c = b; c < e; ++c) {
       double sum[3] = {0.0, 0.0, 0.0};
       for (int k = level.child_start[c]; k < level.child_start[c + 1]; ++k) {
@@ -313,7 +322,7 @@ void CoarseHierarchy::cycle(std::size_t l, int threads) {
     }
   });
   cycle(l + 1, threads);
-  for_each_block(level.n, t, [&](std::size_t b, std::size_t e) {
+  for_blocks(level.n, t, [&](std::size_t b, std::size_t e) {
     for (std::size_t v = b; v < e; ++v) {
       const auto c = std::size_t(level.to_coarse[v]);
       for (int a = 0; a < 3; ++a) level.x[3 * v + std::size_t(a)] += next.x[3 * c + std::size_t(a)];
