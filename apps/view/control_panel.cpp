@@ -256,7 +256,7 @@ std::optional<Action> scene_editors(SimSession& session, PanelState& state) {
 
 float framing_shift(const PanelState& state, float window_width) {
   if (!state.panel_open || window_width <= 0.0f) return 0.0f;
-  return std::clamp(state.panel_right / window_width, 0.0f, 0.5f);
+  return std::clamp(state.panel_right() / window_width, 0.0f, 0.5f);
 }
 
 float panel_width(float window_width) {
@@ -277,7 +277,6 @@ std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view
   ImGui::SetNextWindowBgAlpha(1.0f);  // opaque: the scene is not drawn under it
   std::optional<Action> clicked;
   state.panel_open = ImGui::Begin("ClothLab", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-  state.panel_right = ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
   state.panel_x = ImGui::GetWindowPos().x;
   state.panel_y = ImGui::GetWindowPos().y;
   state.panel_w = ImGui::GetWindowSize().x;

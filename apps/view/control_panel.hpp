@@ -30,12 +30,12 @@ struct PanelState {
   // user chose this frame, for the app to open.
   std::vector<std::string> scene_files;
   std::optional<std::string> open_scene;
-  std::string gl_renderer;   // GL_RENDERER, for what render.quality = "auto" chose
-  float panel_right = 0.0f;  // the panel's right edge last frame (window pixels)
-  bool panel_open = false;   // not collapsed to its title bar last frame
-  // The open panel's rectangle last frame (window points, origin top-left): the scene is not
-  // shaded under it.
+  std::string gl_renderer;  // GL_RENDERER, for what render.quality = "auto" chose
+  bool panel_open = false;  // not collapsed to its title bar last frame
+  // The panel's rectangle last frame (window points, origin top-left): the scene is not shaded
+  // under it while it is open.
   float panel_x = 0.0f, panel_y = 0.0f, panel_w = 0.0f, panel_h = 0.0f;
+  float panel_right() const { return panel_x + panel_w; }
 };
 
 // The camera's lens shift (normalised device x) that centres the scene in the part of a window

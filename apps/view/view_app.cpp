@@ -210,9 +210,6 @@ void ViewApp::frame() {
 
   int width = 0, height = 0;
   window_.framebuffer_size(width, height);
-  int window_w = 0, window_h = 0;  // points, as the panel's edge (framebuffer: pixels)
-  glfwGetWindowSize(window_.handle(), &window_w, &window_h);
-  view_.camera.lens_shift = framing_shift(panel_, float(window_w));
   if (width > 0 && height > 0) {
     draw(width, height);
   } else {
@@ -437,9 +434,7 @@ void ViewApp::open_scene(const std::string& path) {
 
 // The open control panel's rectangle in framebuffer pixels (GL's bottom-left origin), shrunk to
 // whole pixels it covers: the scene is not shaded there.
-vis::PixelRect ViewApp::covered_by_panel(int width, int height) const {
-  int window_w = 0, window_h = 0;
-  glfwGetWindowSize(window_.handle(), &window_w, &window_h);
+vis::PixelRect ViewApp::covered_by_panel(int width, int height, int window_w, int window_h) const {
   if (!panel_.panel_open || window_w <= 0 || window_h <= 0) return {};
   const float sx = float(width) / float(window_w), sy = float(height) / float(window_h);
   const int x0 = int(std::ceil(panel_.panel_x * sx));
@@ -452,6 +447,9 @@ vis::PixelRect ViewApp::covered_by_panel(int width, int height) const {
 
 void ViewApp::draw(int width, int height) {
   Solver& solver = session_.solver();
+  int window_w = 0, window_h = 0;  // points, as the panel's rectangle (framebuffer: pixels)
+  glfwGetWindowSize(window_.handle(), &window_w, &window_h);
+  view_.camera.lens_shift = framing_shift(panel_, float(window_w));
   if (rendered_generation_ != session_.generation()) {
     renderer_->set_cloth(solver);  // a reset may have changed the vertex count
     renderer_->set_scene(session_.scene().render, solver, session_.scene().colliders);
@@ -470,14 +468,12 @@ void ViewApp::draw(int width, int height) {
     diagnostics_->update(solver, fields, view_, *renderer_);
   }
   bind_scene_target(width, height);
-  renderer_->draw(view_, width, height, covered_by_panel(width, height));
+  renderer_->draw(view_, width, height, covered_by_panel(width, height, window_w, window_h));
   diagnostics_->draw(view_, *renderer_);
   if (scene_target_) scene_target_->resolve_into(0);
   draw_legends(view_, *diagnostics_, renderer_->strain_range());
   if (grab_.pending() && session_.divergence()) grab_.forget();  // nothing sane to pull
   if (grab_.pending()) {
-    int window_w = 0, window_h = 0;
-    glfwGetWindowSize(window_.handle(), &window_w, &window_h);
     grab_.pick(solver, snapshot_.fields(), *renderer_, field_pass_, view_, width, height, window_w,
                window_h);
     if (!panel_.probe) field_pass_.reset();

@@ -86,7 +86,7 @@ class ViewApp {
   void frame();
   void simulate(double wall_seconds);
   StepCostProbe time_first_steps(double wall_seconds);
-  vis::PixelRect covered_by_panel(int width, int height) const;
+  vis::PixelRect covered_by_panel(int width, int height, int window_w, int window_h) const;
   void dispatch(Action action);
   bool dispatch_view(Action action);
   void dispatch_session(Action action);

@@ -68,7 +68,7 @@ void ViewApp::probe_under_cursor(int width, int height) {
   if (session_.divergence()) {
     probe_title_ = std::string(name) + ": simulation diverged";
     draw_probe_overlay(probe_title_, static_cast<float>(x), static_cast<float>(y),
-                       panel_.panel_right);
+                       panel_.panel_right());
     return;
   }
   if (!field_pass_ || field_pass_->width() != width || field_pass_->height() != height)
@@ -80,13 +80,13 @@ void ViewApp::probe_under_cursor(int width, int height) {
   if (vertex < 0) {
     probe_title_ = std::string(name) + ": no cloth under the cursor";
     draw_probe_overlay(probe_title_ + " (click the cloth to pin)", static_cast<float>(x),
-                       static_cast<float>(y), panel_.panel_right);
+                       static_cast<float>(y), panel_.panel_right());
     return;
   }
   const ProbeReadout readout = probe_readout(field, solver, s, vertex, pinned_vertex_ >= 0, px, py);
   probe_title_ = readout.title;
   draw_probe_overlay(readout.text, static_cast<float>(x), static_cast<float>(y),
-                     panel_.panel_right);
+                     panel_.panel_right());
 }
 
 // With a probe on, a click on the cloth pins the probe to the vertex nearest the clicked point

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "sim/core/parallel.hpp"
+#include "sim/core/symmetric3.hpp"
 
 namespace clothlab {
 namespace {
@@ -33,15 +34,11 @@ inline void multiply(const double* m, const double* v, double* out) {
   out[2] = m[2] * v[0] + m[4] * v[1] + m[5] * v[2];
 }
 
-// The inverse of a symmetric positive definite 3x3 block (adjugate over determinant).
+// The inverse of a symmetric positive definite 3x3 block; 0 for a singular one.
 void invert(const double* m, double* out) {
-  const double xx = m[0], xy = m[1], xz = m[2], yy = m[3], yz = m[4], zz = m[5];
-  const double cxx = yy * zz - yz * yz, cxy = xz * yz - xy * zz, cxz = xy * yz - xz * yy;
-  const double cyy = xx * zz - xz * xz, cyz = xy * xz - xx * yz, czz = xx * yy - xy * xy;
-  const double det = xx * cxx + xy * cxy + xz * cxz;
+  const double det = symmetric3_adjugate(m, out);
   const double s = det > 0.0 ? 1.0 / det : 0.0;
-  out[0] = cxx * s, out[1] = cxy * s, out[2] = cxz * s;
-  out[3] = cyy * s, out[4] = cyz * s, out[5] = czz * s;
+  for (int c = 0; c < 6; ++c) out[c] *= s;
 }
 
 // A mesh cloth's vertices [offset, offset + count) greedily: a vertex whose neighbours are all

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "sim/core/parallel.hpp"
+#include "sim/core/symmetric3.hpp"
 #include "sim/integrators/integrator.hpp"
 
 namespace clothlab {
@@ -126,15 +127,11 @@ class NewtonMatrix {
     // Inverse of the symmetric positive definite diagonal block (adjugate over determinant, in
     // double: in float the h^2 k terms can dwarf the mass).
     for (std::size_t i = b; i < e; ++i) {
-      const double xx = pc[i], xy = pc[n + i], xz = pc[2 * n + i];
-      const double yy = pc[3 * n + i], yz = pc[4 * n + i], zz = pc[5 * n + i];
-      const double cxx = yy * zz - yz * yz, cxy = xz * yz - xy * zz, cxz = xy * yz - xz * yy;
-      const double cyy = xx * zz - xz * xz, cyz = xy * xz - xx * yz, czz = xx * yy - xy * xy;
-      const double det = xx * cxx + xy * cxy + xz * cxz;
+      double block[6], adj[6];
+      for (std::size_t c = 0; c < 6; ++c) block[c] = pc[c * n + i];
+      const double det = symmetric3_adjugate(block, adj);
       const double scale = free_[i] != T(0) ? 1.0 / det : 0.0;
-      pc[i] = static_cast<T>(cxx * scale), pc[n + i] = static_cast<T>(cxy * scale);
-      pc[2 * n + i] = static_cast<T>(cxz * scale), pc[3 * n + i] = static_cast<T>(cyy * scale);
-      pc[4 * n + i] = static_cast<T>(cyz * scale), pc[5 * n + i] = static_cast<T>(czz * scale);
+      for (std::size_t c = 0; c < 6; ++c) pc[c * n + i] = static_cast<T>(adj[c] * scale);
       bx[i] *= free_[i], by[i] *= free_[i], bz[i] *= free_[i];
     }
   }
