@@ -6,6 +6,7 @@
 //
 //   build/release/bench/realtime_accuracy_bench [res=256] [threads=2] [csv=realtime_accuracy.csv]
 //                                               [reference=out/bench/rk4_<res>.bin]
+//                                               [only=the settings whose label starts so]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -30,6 +31,8 @@ struct Setting {
   IntegratorKind kind;
   int substeps = 0, iterations = 0;  // 0: automatic / the method's default
   bool tethers = true, coarse = true;
+  int newton = 0;  // implicit methods: solver.newton_iterations (0: default)
+  LinearSolver linear = LinearSolver::automatic;
 };
 
 Scene sheet(int res, const Setting& s, int threads) {
@@ -40,6 +43,8 @@ Scene sheet(int res, const Setting& s, int threads) {
   scene.solver.iterations = s.iterations;
   scene.solver.tethers = s.tethers;
   scene.solver.coarse_stretch = s.coarse;
+  scene.solver.newton_iterations = s.newton;
+  scene.solver.linear_solver = s.linear;
   scene.solver.threads = threads;
   scene.solver.precision = Precision::f32;
   return scene;
@@ -131,7 +136,18 @@ int main(int argc, char** argv) {
       {"xpbd x20 neither", K::xpbd, 20, 0, false, false},
       {"xpbd x40 neither", K::xpbd, 40, 0, false, false},
       {"vbd", K::vbd},
+      {"bdf2", K::bdf2},
+      {"bdf2 newton 2", K::bdf2, 0, 0, true, true, 2},
+      {"bdf2 newton 3", K::bdf2, 0, 0, true, true, 3},
+      {"bdf2 newton 4", K::bdf2, 0, 0, true, true, 4},
+      {"bdf2 block jacobi", K::bdf2, 0, 0, true, true, 0, LinearSolver::block_jacobi},
+      {"implicit_euler", K::implicit_euler},
+      {"implicit_euler newton 2", K::implicit_euler, 0, 0, true, true, 2},
+      {"implicit_euler newton 3", K::implicit_euler, 0, 0, true, true, 3},
+      {"implicit_euler block jacobi", K::implicit_euler, 0, 0, true, true, 0,
+       LinearSolver::block_jacobi},
   };
+  const std::string only = argc > 5 ? argv[5] : "";
   std::printf("%d^2 sheet, k0 = 1e3, dt = 1/60 s, float, %d threads: RMS at %.1f s from RK4\n", res,
               threads, kHorizon);
   std::printf("%-22s %-9s %-12s %s\n", "setting", "substeps", "rms (mm)", "ms per frame");
@@ -140,17 +156,23 @@ int main(int argc, char** argv) {
   if (!csv) return 1;
   std::fprintf(csv, "setting,substeps,resolution,threads,rms_m,seconds_per_frame\n");
   for (const Setting& s : settings) {
+    if (s.label.find(only) != 0) continue;
     auto solver = make_solver(sheet(res, s, threads));
     const double frame = median_frame(*solver, kFrames);
     const double e = rms(positions(*solver), ref);
-    std::printf("%-22s %-9d %-12.1f %.2f\n", s.label.c_str(), solver->substeps(), 1e3 * e,
+    std::printf("%-22s %-9d %-12.1f %.2f", s.label.c_str(), solver->substeps(), 1e3 * e,
                 1e3 * frame);
+    const SolveTotals& t = solver->solve_totals();
+    if (t.solves > 0)  // the implicit methods: Newton iterations a frame, PCG iterations each
+      std::printf("  (%.1f solves a frame, %.1f iterations a solve)",
+                  double(t.solves) / double(t.substeps), double(t.iterations) / double(t.solves));
+    std::printf("\n");
     std::fprintf(csv, "%s,%d,%d,%d,%.6g,%.6g\n", s.label.c_str(), solver->substeps(), res, threads,
                  e, frame);
   }
   std::fclose(csv);
   std::rename(tmp.c_str(), csv_path.c_str());
   for (const Setting& s : {Setting{"xpbd auto", K::xpbd}, Setting{"vbd", K::vbd}})
-    largest_real_time(s, threads);
+    if (only.empty()) largest_real_time(s, threads);
   return 0;
 }

@@ -248,6 +248,7 @@ template <class T>
 void SolverT<T>::record(const SolveStats& s) {
   ++totals_.substeps;
   totals_.iterations += s.iterations;
+  totals_.solves += s.solves;
   totals_.max_iterations = std::max(totals_.max_iterations, s.iterations);
   totals_.max_residual = std::max(totals_.max_residual, s.residual);
   if (!s.converged) ++totals_.unconverged;

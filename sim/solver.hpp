@@ -22,6 +22,7 @@ enum class SpringKernel;  // sim/model/model.hpp
 struct SolveTotals {
   long substeps = 0;        // integrator steps taken
   long iterations = 0;      // summed over those steps
+  long solves = 0;          // linear solves (Newton iterations), summed over those steps
   int max_iterations = 0;   // in one step
   double max_residual = 0;  // relative, largest after any step
   long unconverged = 0;     // steps that stopped at the iteration cap

@@ -129,11 +129,13 @@ void print_summary(const TraceArgs& args, const Scene& scene, const Solver& solv
       r.final_energy.total(), r.final_energy.kinetic, r.final_energy.elastic,
       r.final_energy.gravity, args.out.c_str(), r.written_steps);
   const SolveTotals& t = solver.solve_totals();
-  if (t.iterations > 0)
-    std::printf(
-        "solver: %.3g iterations per substep (max %d), largest relative residual %.3g, %ld "
-        "substeps stopped at the iteration cap\n",
-        double(t.iterations) / double(t.substeps), t.max_iterations, t.max_residual, t.unconverged);
+  if (t.iterations > 0) {
+    std::printf("solver: %.3g iterations per substep (max %d)",
+                double(t.iterations) / double(t.substeps), t.max_iterations);
+    if (t.solves > 0) std::printf(" in %.3g linear solves", double(t.solves) / double(t.substeps));
+    std::printf(", largest relative residual %.3g, %ld substeps stopped at the iteration cap\n",
+                t.max_residual, t.unconverged);
+  }
 }
 
 // The exit status of a run that did not finish: refused as too long (2, with the estimate) or

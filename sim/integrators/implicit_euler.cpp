@@ -26,8 +26,10 @@
 // newton_matrix.hpp.
 //
 // Solve: preconditioned conjugate gradients, block-Jacobi preconditioner (the inverse of each
-// vertex's 3x3 diagonal block of A) or, with solver.linear_solver (auto on large grids), one
-// aggregation multigrid V-cycle per iteration (multigrid.hpp). Pinned vertices (inv_mass 0) are
+// vertex's 3x3 diagonal block of A) or, with solver.linear_solver (auto: once block Jacobi's
+// solves grow long on a grid), one aggregation multigrid K-cycle per iteration (multigrid.hpp),
+// with flexible CG's beta = -z.q / p.q (Notay 2000, "Flexible conjugate gradients", SIAM J. Sci.
+// Comput. 22(4)), since the K-cycle is not a fixed linear map. Pinned vertices (inv_mass 0) are
 // filtered as in Baraff-Witkin: their dv, residual and search direction stay exactly 0. PCG starts
 // from the previous step's dv (on the falling 32x32 sheet 36 instead of 45 iterations per step at
 // dt = 1e-3, 131 instead of 137 at 1/60) unless invalidate() said the state changed, and stops
@@ -74,19 +76,22 @@ int newton_iterations(const SolverSpec& spec) {
   return spec.newton_iterations > 0 ? spec.newton_iterations : kDefaultNewton;
 }
 
-// solver.linear_solver = "auto" takes multigrid from this many vertices, on grid and tube
-// cloths (a mesh cloth keeps block Jacobi unless asked). bdf2 at 1/60 s on 2 threads, ms a step
-// block Jacobi / multigrid: 5.0 / 4.5 at 32^2, 28.2 / 28.4 at 64^2, 133 / 123 at 128^2, 478 /
-// 327 at 256^2 (docs/solver.md, "Multigrid preconditioner").
-constexpr std::size_t kMultigridFrom = 16384;
+// solver.linear_solver = "auto" starts with block Jacobi and takes multigrid, on grid and tube
+// cloths, for the rest of the run once a block-Jacobi solve needs more than this many iterations
+// (a large or stiff sheet): a K-cycle costs 5-14 block-Jacobi iterations (docs/solver.md,
+// "Multigrid preconditioner", has the measurements behind the number).
+constexpr int kMultigridAfter = 150;
+
+// Whether the solver keeps a multigrid hierarchy: when asked for, or for "auto" on grid and tube
+// cloths of at least kMultigridFrom vertices (below, block Jacobi's solves stay short).
+constexpr std::size_t kMultigridFrom = 256;
 
 template <class T>
-bool use_multigrid(const Model<T>& m, const SolverSpec& spec) {
+bool multigrid_possible(const Model<T>& m, const SolverSpec& spec) {
   if (spec.linear_solver != LinearSolver::automatic)
     return spec.linear_solver == LinearSolver::multigrid;
-  const bool grids =
-      std::none_of(m.cloths.begin(), m.cloths.end(), [](const ClothRange& c) { return c.mesh; });
-  return grids && m.n >= kMultigridFrom;
+  return m.n >= kMultigridFrom &&
+         std::none_of(m.cloths.begin(), m.cloths.end(), [](const ClothRange& c) { return c.mesh; });
 }
 
 double pcg_tolerance(const SolverSpec& spec) {
@@ -109,8 +114,11 @@ class ImplicitEuler final : public Integrator<T> {
     if (newton_ > 1)
       for (Vec3Array<T>* v : {&first_dv_, &x0_, &v0_}) v->resize(n_);
     partials_.assign(kSums * block_count(n_), 0.0);
-    if (use_multigrid(m, spec))
+    if (multigrid_possible(m, spec)) {
       multigrid_ = std::make_unique<MultigridPreconditioner<T>>(m, matrix_);
+      scratch_.resize(n_);
+      use_multigrid_ = spec.linear_solver == LinearSolver::multigrid;
+    }
   }
 
   void step(const System<T>& sys, State<T>& s, double t, T dt) override {
@@ -128,6 +136,8 @@ class ImplicitEuler final : public Integrator<T> {
       matrix_.assemble(s, h, sys.threads);
       const SolveStats st = solve(sys.model, s.vel, h, first, sys.threads);
       total.iterations += st.iterations;
+      ++total.solves;
+      if (multigrid_ && st.iterations > kMultigridAfter) use_multigrid_ = true;
       total.residual = std::max(total.residual, st.residual);
       total.converged = total.converged && st.converged;
       update(s, h, first, sys.threads);
@@ -156,9 +166,9 @@ class ImplicitEuler final : public Integrator<T> {
     });
     const auto [bb, rz_start, rr_start] = sum_partials();
     double rz = rz_start, rr = rr_start;
-    if (multigrid_) {  // the coarse operators of this iteration's matrix, then z = V(r), p = z
+    if (use_multigrid_) {  // the coarse operators of this iteration's matrix, z = K(r), p = z
       multigrid_->refresh(m, matrix_, h, threads);
-      rz = multigrid_z(m, h, threads);
+      rz = multigrid_->apply(m, matrix_, h, r_, z_, scratch_, nullptr, threads).rz;
       for (int a = 0; a < 3; ++a) p_.axis(a) = z_.axis(a);
     }
 
@@ -184,8 +194,12 @@ class ImplicitEuler final : public Integrator<T> {
       ++it;
       converged = std::sqrt(rr) <= target;
       if (converged) break;
-      if (multigrid_) rz = multigrid_z(m, h, threads);
-      const T beta = static_cast<T>(rz / rz_old);
+      T beta = static_cast<T>(rz / rz_old);
+      if (use_multigrid_) {  // flexible CG: the K-cycle is not a fixed linear map
+        const auto dots = multigrid_->apply(m, matrix_, h, r_, z_, scratch_, &q_, threads);
+        rz = dots.rz;
+        beta = static_cast<T>(-dots.qz / pq);
+      }
       for_each_block(n_, threads, [&](std::size_t b, std::size_t e) {
         for (int a = 0; a < 3; ++a) {
           T* __restrict p = p_.axis(a).data();
@@ -196,12 +210,6 @@ class ImplicitEuler final : public Integrator<T> {
       });
     }
     return {it, b_norm > 0.0 ? std::sqrt(rr) / b_norm : 0.0, converged};
-  }
-
-  // z = one multigrid V-cycle on r (q_ as scratch: A p is not needed again this iteration);
-  // returns r.z.
-  double multigrid_z(const Model<T>& m, T h, int threads) {
-    return multigrid_->apply(m, matrix_, h, r_, z_, q_, threads);
   }
 
   // |delta|_M / |v - v0|_M after a Newton iteration (delta in dv_): how much the last
@@ -249,7 +257,7 @@ class ImplicitEuler final : public Integrator<T> {
 
   // For vertices [b, e): the right side b (first: h (f0 + h K v0); later: h F - M (v - v0)),
   // the matrix's slots and preconditioner there, r = b - A dv (warm) or r = b, dv = 0 (cold),
-  // z = P r and p = z. Partial sums: |b|^2, r.z and r.r.
+  // and with block Jacobi z = P r and p = z. Partial sums: |b|^2, r.z (block Jacobi) and r.r.
   void setup_block(const Model<T>& m, const Vec3Array<T>& vel, T h, bool warm, bool first,
                    std::size_t blk, std::size_t b, std::size_t e) {
     T* __restrict bx = r_.x.data();
@@ -279,15 +287,18 @@ class ImplicitEuler final : public Integrator<T> {
     } else {
       for (int a = 0; a < 3; ++a) std::fill(dv_.axis(a).begin() + b, dv_.axis(a).begin() + e, T(0));
     }
-    matrix_.precondition(r_, z_, b, e);
-    for (int a = 0; a < 3; ++a)
-      std::copy(z_.axis(a).begin() + b, z_.axis(a).begin() + e, p_.axis(a).begin() + b);
     partials_[kSums * blk] = bb;
-    partials_[kSums * blk + 1] = dot(r_, z_, b, e);
+    if (!use_multigrid_) {  // the multigrid's cycle sets z and p after this pass
+      matrix_.precondition(r_, z_, b, e);
+      for (int a = 0; a < 3; ++a)
+        std::copy(z_.axis(a).begin() + b, z_.axis(a).begin() + e, p_.axis(a).begin() + b);
+      partials_[kSums * blk + 1] = dot(r_, z_, b, e);
+    }
     partials_[kSums * blk + 2] = warm ? dot(r_, r_, b, e) : bb;
   }
 
-  // dv += alpha p, r -= alpha q, z = P r on [b, e); partial sums r.r and r.z.
+  // dv += alpha p, r -= alpha q and with block Jacobi z = P r on [b, e); partial sums r.r and
+  // (block Jacobi) r.z.
   void update_residual(T alpha, std::size_t blk, std::size_t b, std::size_t e) {
     for (int a = 0; a < 3; ++a) {
       T* __restrict dv = dv_.axis(a).data();
@@ -300,8 +311,9 @@ class ImplicitEuler final : public Integrator<T> {
         r[i] -= alpha * q[i];
       }
     }
-    matrix_.precondition(r_, z_, b, e);
     partials_[kSums * blk] = dot(r_, r_, b, e);
+    if (use_multigrid_) return;  // its cycle follows
+    matrix_.precondition(r_, z_, b, e);
     partials_[kSums * blk + 1] = dot(r_, z_, b, e);
   }
 
@@ -331,11 +343,13 @@ class ImplicitEuler final : public Integrator<T> {
   int newton_;               // Newton iterations per step, at most
   double newton_tolerance_;  // stop once |delta|_M <= this |v - v0|_M
   NewtonMatrix<T> matrix_;
-  std::unique_ptr<MultigridPreconditioner<T>> multigrid_;  // solver.linear_solver
+  std::unique_ptr<MultigridPreconditioner<T>> multigrid_;  // grid cloths (solver.linear_solver)
+  bool use_multigrid_ = false;                             // multigrid_ is PCG's preconditioner now
 
   Vec3Array<T> f0_;
   Vec3Array<T> dv_, r_, z_, p_, q_;
   Vec3Array<T> first_dv_, x0_, v0_;  // newton_ > 1: the first dv (warm start), x0 and v0
+  Vec3Array<T> scratch_;             // multigrid: its cycle's residuals
   std::vector<double> partials_;     // kSums per vertex block
   bool warm_ = false;
   SolveStats stats_;

@@ -52,6 +52,7 @@ struct SolveStats {
   int iterations = 0;
   double residual = 0.0;  // relative: |r| / |b| for PCG, 0 where not measured
   bool converged = true;  // false when PCG stopped at its iteration cap
+  int solves = 0;         // linear solves (the implicit methods' Newton iterations)
 };
 
 template <class T>

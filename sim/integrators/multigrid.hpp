@@ -35,7 +35,7 @@ class MultigridPreconditioner {
     for (const ClothRange& c : m.cloths) grids.push_back({c.offset, c.nu, c.nv, c.mesh});
     fine_ = coarsen(m.n, springs, pinned, grids);
     coarse_ = std::make_unique<CoarseHierarchy>(fine_);
-    partials_.assign(block_count(m.n), 0.0);
+    partials_.assign(2 * block_count(m.n), 0.0);
   }
 
   // Level 1 from the matrix's current spring blocks and diagonal, then the coarser levels.
@@ -63,12 +63,16 @@ class MultigridPreconditioner {
     coarse_->finish_refresh(threads);
   }
 
-  // z = one V-cycle on r; returns r.z (`scratch` is overwritten). The finest level's loops run
-  // in two parallel regions (before and after the coarse cycle; barriers between the loops):
-  // a region per loop cost more than the cycle's work below 128^2 (each wakes the sleeping
-  // threads).
-  double apply(const Model<T>& m, const NewtonMatrix<T>& matrix, T h, const Vec3Array<T>& r,
-               Vec3Array<T>& z, Vec3Array<T>& scratch, int threads) {
+  struct Dots {
+    double rz = 0.0, qz = 0.0;
+  };
+
+  // z = one cycle on r; returns r.z and, with q, q.z (`scratch` is overwritten). The whole cycle,
+  // every level's loops, runs in one parallel region with barriers between the loops: a region
+  // per loop cost more than the cycle's work below 128^2 (each wakes the sleeping threads), and
+  // coarse levels on one thread left the other idle.
+  Dots apply(const Model<T>& m, const NewtonMatrix<T>& matrix, T h, const Vec3Array<T>& r,
+             Vec3Array<T>& z, Vec3Array<T>& scratch, const Vec3Array<T>* q, int threads) {
     const T omega = T(CoarseHierarchy::kOmega);
     const std::size_t n = m.n;
     CoarseLevel& first = coarse_->first();
@@ -95,17 +99,16 @@ class MultigridPreconditioner {
         const auto [b, e] = range(k, first.n);
         restrict_to(first, scratch, b, e);
       }
-    });
-    coarse_->solve(threads);  // regions of its own only on levels large enough to gain by them
-    run_team(blocks > 1 ? threads : 1, [&] {
+      coarse_->solve();  // every thread: its loops are shared in this region
 #pragma omp for schedule(static)
       for (long k = 0; k < blocks; ++k) {  // z += P e (each vertex takes its aggregate's value)
         const auto [b, e] = range(k, n);
-        for (std::size_t i = b; i < e; ++i) {
-          const int c = fine_.of[i];
-          if (c < 0) continue;
-          for (int a = 0; a < 3; ++a)
-            z.axis(a)[i] += T(first.x[3 * std::size_t(c) + std::size_t(a)]);
+        for (int a = 0; a < 3; ++a) {
+          const double* x = first.x.data() + std::size_t(a) * first.n;
+          for (std::size_t i = b; i < e; ++i) {
+            const int c = fine_.of[i];
+            if (c >= 0) z.axis(a)[i] += T(x[c]);
+          }
         }
       }
 #pragma omp for schedule(static)
@@ -117,18 +120,23 @@ class MultigridPreconditioner {
       for (long k = 0; k < blocks; ++k) {  // z += omega P (r - A z); r.z per block
         const auto [b, e] = range(k, n);
         matrix.precondition(scratch, scratch, b, e);
-        double dot = 0.0;
+        double rz = 0.0, qz = 0.0;
         for (int a = 0; a < 3; ++a)
           for (std::size_t i = b; i < e; ++i) {
             z.axis(a)[i] += omega * scratch.axis(a)[i];
-            dot += double(r.axis(a)[i]) * double(z.axis(a)[i]);
+            rz += double(r.axis(a)[i]) * double(z.axis(a)[i]);
+            if (q) qz += double(q->axis(a)[i]) * double(z.axis(a)[i]);
           }
-        partials_[std::size_t(k)] = dot;
+        partials_[2 * std::size_t(k)] = rz;
+        partials_[2 * std::size_t(k) + 1] = qz;
       }
     });
-    double rz = 0.0;
-    for (long k = 0; k < blocks; ++k) rz += partials_[std::size_t(k)];  // in block order
-    return rz;
+    Dots dots;
+    for (long k = 0; k < blocks; ++k) {  // in block order
+      dots.rz += partials_[2 * std::size_t(k)];
+      dots.qz += partials_[2 * std::size_t(k) + 1];
+    }
+    return dots;
   }
 
   std::size_t levels() const {
@@ -149,19 +157,18 @@ class MultigridPreconditioner {
   // Level 1's right side on its vertices [b, e): each aggregate's sum of `fine`.
   void restrict_to(CoarseLevel& first, const Vec3Array<T>& fine, std::size_t b,
                    std::size_t e) const {
-    for (std::size_t c = b; c < e; ++c) {
-      double sum[3] = {0.0, 0.0, 0.0};
-      for (int k = fine_.child_start[c]; k < fine_.child_start[c + 1]; ++k) {
-        const auto v = std::size_t(fine_.child[std::size_t(k)]);
-        for (int a = 0; a < 3; ++a) sum[a] += double(fine.axis(a)[v]);
+    for (int a = 0; a < 3; ++a)
+      for (std::size_t c = b; c < e; ++c) {
+        double sum = 0.0;
+        for (int k = fine_.child_start[c]; k < fine_.child_start[c + 1]; ++k)
+          sum += double(fine.axis(a)[std::size_t(fine_.child[std::size_t(k)])]);
+        first.b[std::size_t(a) * first.n + c] = sum;
       }
-      for (int a = 0; a < 3; ++a) first.b[3 * c + std::size_t(a)] = sum[a];
-    }
   }
 
   CoarseMap fine_;
   std::unique_ptr<CoarseHierarchy> coarse_;
-  std::vector<double> partials_;  // r.z per vertex block
+  std::vector<double> partials_;  // r.z and q.z per vertex block
 };
 
 }  // namespace clothlab

@@ -10,12 +10,16 @@ namespace {
 
 // Levels below this many vertices run on one thread: a parallel region costs more than them.
 constexpr std::size_t kParallelLevel = 8192;
+// A level whose edges span at most this many index offsets stores its rows by offset.
+constexpr std::size_t kMaxShifts = 16;
 // A coarsest level above this many vertices (no coarsening found) is smoothed, not factorised.
 constexpr std::size_t kMaxDense = 1500;
 constexpr int kCoarsestSweeps = 30;
 
 int level_threads(const CoarseLevel& level, int threads) {
-  return level.n >= kParallelLevel ? threads : 1;
+  static const std::size_t par =
+      std::getenv("CL_PAR") ? std::size_t(std::atoi(std::getenv("CL_PAR"))) : kParallelLevel;
+  return level.n >= par ? threads : 1;
 }
 
 // fn(begin, end) over the blocks of [0, n): on one thread a plain loop, which may run inside
@@ -27,11 +31,16 @@ void for_blocks(std::size_t n, int threads, Fn&& fn) {
   for (std::size_t b = 0; b < n; b += kBlockSize) fn(b, std::min(n, b + kBlockSize));
 }
 
-// out = M v for a symmetric 3x3 block stored xx xy xz yy yz zz.
-inline void multiply(const double* m, const double* v, double* out) {
-  out[0] = m[0] * v[0] + m[1] * v[1] + m[2] * v[2];
-  out[1] = m[1] * v[0] + m[3] * v[1] + m[4] * v[2];
-  out[2] = m[2] * v[0] + m[4] * v[1] + m[5] * v[2];
+// fn(begin, end) over the blocks of [0, n) as an orphaned `omp for`: shared among the threads of
+// the enclosing parallel region (every thread must call it), plain loop outside one.
+template <class Fn>
+void team_for(std::size_t n, Fn&& fn) {
+  const long blocks = long(block_count(n));
+#pragma omp for schedule(static)
+  for (long k = 0; k < blocks; ++k) {
+    const std::size_t b = std::size_t(k) * kBlockSize;
+    fn(b, std::min(n, b + kBlockSize));
+  }
 }
 
 // The inverse of a symmetric positive definite 3x3 block; 0 for a singular one.
@@ -83,8 +92,11 @@ void allocate(CoarseLevel& level) {
   const std::size_t n = level.n;
   level.edge_block.assign(6 * level.edges.size(), 0.0);
   level.diag.assign(6 * n, 0.0);
+  level.diag_by_axis.assign(6 * n, 0.0);
   level.inv.assign(6 * n, 0.0);
-  for (auto* v : {&level.x, &level.b, &level.r}) v->assign(3 * n, 0.0);
+  for (auto* v : {&level.x, &level.b, &level.r, &level.kb, &level.kc, &level.kv})
+    v->assign(3 * n, 0.0);
+  level.partials.assign(3 * block_count(n), 0.0);
   level.adj_start.assign(n + 1, 0);
   for (const auto& [i, j] : level.edges) ++level.adj_start[i + 1], ++level.adj_start[j + 1];
   for (std::size_t k = 0; k < n; ++k) level.adj_start[k + 1] += level.adj_start[k];
@@ -96,6 +108,38 @@ void allocate(CoarseLevel& level) {
     level.adj_vertex[std::size_t(fill[i])] = j, level.adj_edge[std::size_t(fill[i]++)] = int(e);
     level.adj_vertex[std::size_t(fill[j])] = i, level.adj_edge[std::size_t(fill[j]++)] = int(e);
   }
+  // Slots by index offset when the offsets are few (a grid's levels), else by position in the row.
+  std::vector<long> shifts;
+  for (std::size_t v = 0; v < n; ++v)
+    for (auto k = std::size_t(level.adj_start[v]); k < std::size_t(level.adj_start[v + 1]); ++k)
+      shifts.push_back(long(level.adj_vertex[k]) - long(v));
+  std::sort(shifts.begin(), shifts.end());
+  shifts.erase(std::unique(shifts.begin(), shifts.end()), shifts.end());
+  level.adj_slot.assign(level.adj_vertex.size(), 0);
+  level.shift.clear();
+  level.row_vertex.clear();
+  if (shifts.size() <= kMaxShifts) {
+    level.shift = shifts;
+    level.slots = shifts.size();
+    for (std::size_t v = 0; v < n; ++v)
+      for (auto k = std::size_t(level.adj_start[v]); k < std::size_t(level.adj_start[v + 1]); ++k)
+        level.adj_slot[k] = int(
+            std::lower_bound(shifts.begin(), shifts.end(), long(level.adj_vertex[k]) - long(v)) -
+            shifts.begin());
+  } else {
+    level.slots = 0;
+    for (std::size_t v = 0; v < n; ++v)
+      level.slots = std::max(level.slots, std::size_t(level.adj_start[v + 1] - level.adj_start[v]));
+    level.row_vertex.assign(level.slots * n, 0);
+    for (std::size_t v = 0; v < n; ++v)
+      for (std::size_t k = 0; k < level.slots; ++k) {
+        const auto at = std::size_t(level.adj_start[v]) + k;
+        const bool real = at < std::size_t(level.adj_start[v + 1]);
+        level.row_vertex[k * n + v] = real ? level.adj_vertex[at] : int(v);
+        if (real) level.adj_slot[at] = int(k);
+      }
+  }
+  level.row_block.assign(6 * level.slots * n, 0.0);
 }
 
 }  // namespace
@@ -196,15 +240,22 @@ void CoarseHierarchy::finish_refresh(int threads) {
         double* d = &level.diag[6 * v];
         d[0] = d[3] = d[5] = 1.0, d[1] = d[2] = d[4] = 0.0;
       }
-    for_blocks(level.n, level_threads(level, threads), [&](std::size_t b, std::size_t e) {
+    const std::size_t n = level.n;
+    for_blocks(n, level_threads(level, threads), [&](std::size_t b, std::size_t e) {
       for (std::size_t v = b; v < e; ++v) {
-        double block[6];
+        double block[6], inverse[6];
         std::copy_n(&level.diag[6 * v], 6, block);
-        for (int k = level.adj_start[v]; k < level.adj_start[v + 1]; ++k)
-          for (int c = 0; c < 6; ++c)
-            block[c] +=
-                level.edge_block[6 * std::size_t(level.adj_edge[std::size_t(k)]) + std::size_t(c)];
-        invert(block, &level.inv[6 * v]);
+        for (auto c = std::size_t(0); c < 6; ++c) level.diag_by_axis[c * n + v] = block[c];
+        const auto first = std::size_t(level.adj_start[v]);
+        for (auto k = first; k < std::size_t(level.adj_start[v + 1]); ++k) {
+          const double* edge = &level.edge_block[6 * std::size_t(level.adj_edge[k])];
+          for (std::size_t c = 0; c < 6; ++c) {
+            level.row_block[(std::size_t(level.adj_slot[k]) * 6 + c) * n + v] = edge[c];
+            block[c] += edge[c];
+          }
+        }
+        invert(block, inverse);
+        for (std::size_t c = 0; c < 6; ++c) level.inv[c * n + v] = inverse[c];
       }
     });
     if (l + 1 == levels_.size()) break;
@@ -246,86 +297,180 @@ void CoarseHierarchy::factorise_coarsest() {
   ldlt_.compute(dense_);
 }
 
-void apply_level(const CoarseLevel& level, const std::vector<double>& x, std::vector<double>& y,
-                 int threads) {
-  for_blocks(level.n, level_threads(level, threads), [&](std::size_t b, std::size_t e) {
-    for (std::size_t v = b; v < e; ++v) {
-      double* out = &y[3 * v];
-      multiply(&level.diag[6 * v], &x[3 * v], out);
-      for (int k = level.adj_start[v]; k < level.adj_start[v + 1]; ++k) {
-        const auto w = std::size_t(level.adj_vertex[std::size_t(k)]);
-        const double d[3] = {x[3 * v] - x[3 * w], x[3 * v + 1] - x[3 * w + 1],
-                             x[3 * v + 2] - x[3 * w + 2]};
-        double add[3];
-        multiply(&level.edge_block[6 * std::size_t(level.adj_edge[std::size_t(k)])], d, add);
-        out[0] += add[0], out[1] += add[1], out[2] += add[2];
+void apply_level(const CoarseLevel& level, const std::vector<double>& x, std::vector<double>& y) {
+  const std::size_t n = level.n;
+  const double *x0 = x.data(), *x1 = x0 + n, *x2 = x1 + n;
+  double *y0 = y.data(), *y1 = y0 + n, *y2 = y1 + n;
+  team_for(n, [&](std::size_t b, std::size_t e) {
+    const double* d = level.diag_by_axis.data();
+#pragma omp simd
+    for (std::size_t i = b; i < e; ++i) {
+      y0[i] = d[i] * x0[i] + d[n + i] * x1[i] + d[2 * n + i] * x2[i];
+      y1[i] = d[n + i] * x0[i] + d[3 * n + i] * x1[i] + d[4 * n + i] * x2[i];
+      y2[i] = d[2 * n + i] * x0[i] + d[4 * n + i] * x1[i] + d[5 * n + i] * x2[i];
+    }
+    for (std::size_t k = 0; k < level.slots; ++k) {  // y += B (x_i - x_w), one slot at a time
+      const double* __restrict m = level.row_block.data() + 6 * k * n;
+      if (!level.shift.empty()) {  // w = i + shift, for the i that have a w in the level
+        const long s = level.shift[k];
+        const auto lo = std::size_t(std::max(long(b), -s)),
+                   hi = std::size_t(std::min(long(e), long(n) - s));
+#pragma omp simd
+        for (std::size_t i = lo; i < hi; ++i) {
+          const auto o = std::size_t(long(i) + s);
+          const double a0 = x0[i] - x0[o], a1 = x1[i] - x1[o], a2 = x2[i] - x2[o];
+          y0[i] += m[i] * a0 + m[n + i] * a1 + m[2 * n + i] * a2;
+          y1[i] += m[n + i] * a0 + m[3 * n + i] * a1 + m[4 * n + i] * a2;
+          y2[i] += m[2 * n + i] * a0 + m[4 * n + i] * a1 + m[5 * n + i] * a2;
+        }
+        continue;
+      }
+      const int* __restrict w = level.row_vertex.data() + k * n;
+#pragma omp simd
+      for (std::size_t i = b; i < e; ++i) {
+        const auto o = std::size_t(w[i]);
+        const double a0 = x0[i] - x0[o], a1 = x1[i] - x1[o], a2 = x2[i] - x2[o];
+        y0[i] += m[i] * a0 + m[n + i] * a1 + m[2 * n + i] * a2;
+        y1[i] += m[n + i] * a0 + m[3 * n + i] * a1 + m[4 * n + i] * a2;
+        y2[i] += m[2 * n + i] * a0 + m[4 * n + i] * a1 + m[5 * n + i] * a2;
       }
     }
   });
 }
 
-// One V(1,1)-cycle on level l: x from b (a pre-smoothing from zero, the coarse correction, a
-// post-smoothing; the same damped block Jacobi both ways, so the cycle is symmetric and PCG may
-// use it).
-void CoarseHierarchy::cycle(std::size_t l, int threads) {
-  CoarseLevel& level = levels_[l];
-  const int t = level_threads(level, threads);
-  if (l + 1 == levels_.size()) {
-    if (dense_.rows() > 0) {
-      rhs_ = Eigen::Map<const Eigen::VectorXd>(level.b.data(), Eigen::Index(level.b.size()));
-      Eigen::Map<Eigen::VectorXd>(level.x.data(), Eigen::Index(level.x.size())) = ldlt_.solve(rhs_);
-      return;
-    }
-    std::fill(level.x.begin(), level.x.end(), 0.0);
-    for (int s = 0; s < kCoarsestSweeps; ++s) {
-      apply_level(level, level.x, level.r, t);
-      for (std::size_t v = 0; v < level.n; ++v) {
-        double d[3] = {level.b[3 * v] - level.r[3 * v], level.b[3 * v + 1] - level.r[3 * v + 1],
-                       level.b[3 * v + 2] - level.r[3 * v + 2]},
-               dx[3];
-        multiply(&level.inv[6 * v], d, dx);
-        for (int a = 0; a < 3; ++a) level.x[3 * v + std::size_t(a)] += kOmega * dx[a];
-      }
+namespace {
+
+// x = (from_zero ? 0 : x) + omega D^-1 (b - (from_zero ? 0 : r)) on vertices [b, e) (by axis).
+void jacobi(CoarseLevel& level, bool from_zero, double omega, std::size_t b, std::size_t e) {
+  const std::size_t n = level.n;
+  const double* p = level.inv.data();
+  double *x0 = level.x.data(), *x1 = x0 + n, *x2 = x1 + n;
+  const double *b0 = level.b.data(), *b1 = b0 + n, *b2 = b1 + n;
+  const double *r0 = level.r.data(), *r1 = r0 + n, *r2 = r1 + n;
+  const double keep = from_zero ? 0.0 : 1.0;
+#pragma omp simd
+  for (std::size_t i = b; i < e; ++i) {
+    const double d0 = b0[i] - keep * r0[i], d1 = b1[i] - keep * r1[i], d2 = b2[i] - keep * r2[i];
+    x0[i] = keep * x0[i] + omega * (p[i] * d0 + p[n + i] * d1 + p[2 * n + i] * d2);
+    x1[i] = keep * x1[i] + omega * (p[n + i] * d0 + p[3 * n + i] * d1 + p[4 * n + i] * d2);
+    x2[i] = keep * x2[i] + omega * (p[2 * n + i] * d0 + p[4 * n + i] * d1 + p[5 * n + i] * d2);
+  }
+}
+
+// Each block's share of up to three dot products over a level's vectors, then their sums in block
+// order, the same on every thread (a barrier before the partials are written again).
+template <std::size_t K, class Fn>
+std::array<double, K> team_dots(CoarseLevel& level, Fn&& fn) {
+  team_for(level.n, [&](std::size_t b, std::size_t e) {
+    std::array<double, K> sum{};
+    for (std::size_t a = 0; a < 3; ++a)
+      for (std::size_t i = a * level.n + b; i < a * level.n + e; ++i) fn(i, sum);
+    std::copy(sum.begin(), sum.end(), &level.partials[K * (b / kBlockSize)]);
+  });
+  std::array<double, K> total{};
+  for (std::size_t k = 0; k < block_count(level.n); ++k)
+    for (std::size_t c = 0; c < K; ++c) total[c] += level.partials[K * k + c];
+#pragma omp barrier
+  return total;
+}
+
+// fn(i) for every entry i of a level's vectors (3 n), in the team's blocks.
+template <class Fn>
+void team_each(const CoarseLevel& level, Fn&& fn) {
+  team_for(level.n, [&](std::size_t b, std::size_t e) {
+    for (std::size_t a = 0; a < 3; ++a)
+      for (std::size_t i = a * level.n + b; i < a * level.n + e; ++i) fn(i);
+  });
+}
+
+}  // namespace
+
+// level.x from level.b by at most two steps of flexible CG preconditioned by cycle(l) (Notay &
+// Vassilevski 2008, "Recursive Krylov-based multigrid cycles", Numer. Linear Algebra Appl. 15,
+// Algorithm 2.1): c1 = B b, x = (c1.b / c1.A c1) c1; if that leaves more than kKrylovThreshold of
+// |b|, c2 = B r~ and x is the A-orthogonal combination of c1 and c2 minimising the error's energy.
+// Every thread of the team takes the same branches: the dots are summed in block order by each.
+void CoarseHierarchy::krylov(std::size_t l) {
+  CoarseLevel& L = levels_[l];
+  if (l + 1 == levels_.size()) return cycle(l);  // the direct solve
+  team_each(L, [&](std::size_t i) { L.kb[i] = L.b[i]; });
+  cycle(l);
+  apply_level(L, L.x, L.kv);
+  const auto [rho1, alpha1] = team_dots<2>(L, [&](std::size_t i, std::array<double, 2>& d) {
+    L.kc[i] = L.x[i];
+    d[0] += L.x[i] * L.kv[i], d[1] += L.x[i] * L.kb[i];
+  });
+  if (!(rho1 > 0.0)) return team_each(L, [&](std::size_t i) { L.x[i] = 0.0; });
+  const double a1 = alpha1 / rho1;
+  const auto [bb, rr] = team_dots<2>(L, [&](std::size_t i, std::array<double, 2>& d) {
+    L.b[i] = L.kb[i] - a1 * L.kv[i];
+    d[0] += L.kb[i] * L.kb[i], d[1] += L.b[i] * L.b[i];
+  });
+  if (rr <= kKrylovThreshold * kKrylovThreshold * bb)
+    return team_each(L, [&](std::size_t i) { L.x[i] = a1 * L.kc[i]; });
+  cycle(l);  // x = c2 = B r~; then A c2 in r
+  apply_level(L, L.x, L.r);
+  const auto [gamma, beta, alpha2] = team_dots<3>(L, [&](std::size_t i, std::array<double, 3>& d) {
+    d[0] += L.x[i] * L.kv[i], d[1] += L.x[i] * L.r[i], d[2] += L.x[i] * L.b[i];
+  });
+  const double rho2 = beta - gamma * gamma / rho1;
+  if (!(rho2 > 0.0)) return team_each(L, [&](std::size_t i) { L.x[i] = a1 * L.kc[i]; });
+  const double w1 = a1 - gamma * alpha2 / (rho1 * rho2), w2 = alpha2 / rho2;
+  team_each(L, [&](std::size_t i) { L.x[i] = w1 * L.kc[i] + w2 * L.x[i]; });
+}
+
+// The coarsest level: x from b by the dense factors (interleaved x y z per vertex there; one
+// thread, the others wait at the single's barrier), or by damped block-Jacobi sweeps where no
+// coarsening was found and the level is too large for them.
+void CoarseHierarchy::solve_coarsest() {
+  CoarseLevel& level = levels_.back();
+  const std::size_t n = level.n;
+  if (dense_.rows() > 0) {
+#pragma omp single
+    {
+      for (std::size_t v = 0; v < n; ++v)
+        for (std::size_t a = 0; a < 3; ++a) rhs_(Eigen::Index(3 * v + a)) = level.b[a * n + v];
+      rhs_ = ldlt_.solve(rhs_);
+      for (std::size_t v = 0; v < n; ++v)
+        for (std::size_t a = 0; a < 3; ++a) level.x[a * n + v] = rhs_(Eigen::Index(3 * v + a));
     }
     return;
   }
+  team_for(n, [&](std::size_t b, std::size_t e) { jacobi(level, true, kOmega, b, e); });
+  for (int s = 1; s < kCoarsestSweeps; ++s) {
+    apply_level(level, level.x, level.r);
+    team_for(n, [&](std::size_t b, std::size_t e) { jacobi(level, false, kOmega, b, e); });
+  }
+}
+
+// One V(1,1)-cycle on level l: x from b (a pre-smoothing from zero, the coarse correction, a
+// post-smoothing; the same damped block Jacobi both ways, so the cycle is symmetric).
+void CoarseHierarchy::cycle(std::size_t l) {
+  if (l + 1 == levels_.size()) return solve_coarsest();
+  CoarseLevel& level = levels_[l];
   CoarseLevel& next = levels_[l + 1];
-  auto smooth = [&](bool from_zero) {  // x += omega D^-1 (b - A x)
-    if (!from_zero) apply_level(level, level.x, level.r, t);
-    for_blocks(level.n, t, [&](std::size_t b, std::size_t e) {
-      for (std::size_t v = b; v < e; ++v) {
-        double d[3], dx[3];
-        for (int a = 0; a < 3; ++a)
-          d[a] =
-              level.b[3 * v + std::size_t(a)] - (from_zero ? 0.0 : level.r[3 * v + std::size_t(a)]);
-        multiply(&level.inv[6 * v], d, dx);
-        for (int a = 0; a < 3; ++a)
-          level.x[3 * v + std::size_t(a)] =
-              (from_zero ? 0.0 : level.x[3 * v + std::size_t(a)]) + kOmega * dx[a];
+  const std::size_t n = level.n, nn = next.n;
+  team_for(n, [&](std::size_t b, std::size_t e) { jacobi(level, true, kOmega, b, e); });
+  apply_level(level, level.x, level.r);
+  team_for(nn, [&](std::size_t b, std::size_t e) {
+    for (std::size_t a = 0; a < 3; ++a)  // the residual restricted: each aggregate's sum
+      for (std::size_t c = b; c < e; ++c) {
+        double sum = 0.0;
+        for (int k = level.child_start[c]; k < level.child_start[c + 1]; ++k) {
+          const std::size_t v = a * n + std::size_t(level.child[std::size_t(k)]);
+          sum += level.b[v] - level.r[v];
+        }
+        next.b[a * nn + c] = sum;
       }
-    });
-  };
-  smooth(true);
-  apply_level(level, level.x, level.r, t);
-  for_blocks(next.n, level_threads(next, threads), [&](std::size_t b, std::size_t e) {
-    for (std::size_t c = b; c < e; ++c) {
-      double sum[3] = {0.0, 0.0, 0.0};
-      for (int k = level.child_start[c]; k < level.child_start[c + 1]; ++k) {
-        const auto v = std::size_t(level.child[std::size_t(k)]);
-        for (int a = 0; a < 3; ++a)
-          sum[a] += level.b[3 * v + std::size_t(a)] - level.r[3 * v + std::size_t(a)];
-      }
-      for (int a = 0; a < 3; ++a) next.b[3 * c + std::size_t(a)] = sum[a];
-    }
   });
-  cycle(l + 1, threads);
-  for_blocks(level.n, t, [&](std::size_t b, std::size_t e) {
-    for (std::size_t v = b; v < e; ++v) {
-      const auto c = std::size_t(level.to_coarse[v]);
-      for (int a = 0; a < 3; ++a) level.x[3 * v + std::size_t(a)] += next.x[3 * c + std::size_t(a)];
-    }
+  krylov(l + 1);
+  team_for(n, [&](std::size_t b, std::size_t e) {
+    for (std::size_t a = 0; a < 3; ++a)
+      for (std::size_t v = b; v < e; ++v)
+        level.x[a * n + v] += next.x[a * nn + std::size_t(level.to_coarse[v])];
   });
-  smooth(false);
+  apply_level(level, level.x, level.r);
+  team_for(n, [&](std::size_t b, std::size_t e) { jacobi(level, false, kOmega, b, e); });
 }
 
 }  // namespace clothlab

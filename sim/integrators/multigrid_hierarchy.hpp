@@ -21,16 +21,29 @@
 
 namespace clothlab {
 
-// One coarse level: its operator, vectors and the map to the next coarser level.
+// One coarse level: its operator, vectors and the map to the next coarser level. Vectors are
+// stored by axis (x of every vertex, then y, then z: v[a * n + i]); the operator's edge blocks are
+// also kept in `slots` padded rows, slot-major (row_block[(k * 6 + c) * n + i] is component c of
+// vertex i's edge in slot k, zero where it has none), so the product runs as one vectorised loop
+// per slot. On a grid's levels every edge joins vertices a few fixed index offsets apart, and
+// slot k holds the edges to vertex i + shift[k] (read as a contiguous run, as the fine matrix
+// does); elsewhere (a mesh's levels, many offsets) slot k is a vertex's k-th edge and
+// row_vertex[k * n + i] its other end (a gather; padding points at i itself).
 struct CoarseLevel {
-  std::size_t n = 0;
+  std::size_t n = 0, slots = 0;
   std::vector<std::array<int, 2>> edges;             // (I, J), I < J
   std::vector<double> edge_block;                    // 6 per edge: xx xy xz yy yz zz
   std::vector<double> diag;                          // 6 per vertex: D_I
-  std::vector<double> inv;                           // 6 per vertex: (D_I + sum of its B_e)^-1
   std::vector<char> live;                            // has a free fine vertex below it
   std::vector<int> adj_start, adj_vertex, adj_edge;  // CSR: the edges at each vertex
-  std::vector<double> x, b, r;                       // 3 per vertex
+  std::vector<long> shift;                           // per slot, where the offsets are few
+  std::vector<int> row_vertex;                       // slots x n, where they are not
+  std::vector<int> adj_slot;                         // per CSR entry: its slot
+  std::vector<double> row_block, diag_by_axis;       // 6 x slots x n; 6 x n (D_I)
+  std::vector<double> inv;                           // 6 x n: (D_I + sum of its B_e)^-1
+  std::vector<double> x, b, r;                       // 3 x n
+  std::vector<double> kb, kc, kv;  // the K-cycle's right side, first direction and its product
+  std::vector<double> partials;    // dot products, up to 3 per vertex block
   // Into the next coarser level (empty at the coarsest): each vertex's aggregate, each edge's
   // target (fine_edge_target's encoding) and each coarse vertex's children (CSR).
   std::vector<int> to_coarse, edge_target, child_start, child;
@@ -68,6 +81,9 @@ class CoarseHierarchy {
  public:
   static constexpr std::size_t kCoarsest = 64;  // vertices solved directly
   static constexpr double kOmega = 0.6;         // damped block Jacobi (measured in the prototype)
+  // The K-cycle's second step is taken when the first left more than this of the residual
+  // (Notay & Vassilevski 2008, t = 0.25).
+  static constexpr double kKrylovThreshold = 0.25;
 
   // From the finest level's coarse map (coarsen() of the springs and pinned vertices).
   explicit CoarseHierarchy(const CoarseMap& fine);
@@ -78,12 +94,17 @@ class CoarseHierarchy {
   void zero_first();
   // The coarser levels' operators, every level's inverse diagonal and the coarsest factors.
   void finish_refresh(int threads);
-  // first().x = one V(1,1)-cycle on first().b.
-  void solve(int threads) { cycle(0, threads); }
+  // first().x from first().b: the K-cycle (Krylov-accelerated: up to two flexible CG steps per
+  // level, each preconditioned by a cycle whose coarse solve is again a K-cycle). Every thread
+  // of the enclosing parallel region calls it (its loops are orphaned `omp for`s), or one
+  // thread outside any.
+  void solve() { krylov(0); }
   std::size_t levels() const { return levels_.size(); }
 
  private:
-  void cycle(std::size_t l, int threads);
+  void cycle(std::size_t l);
+  void krylov(std::size_t l);
+  void solve_coarsest();
   void factorise_coarsest();
 
   std::vector<CoarseLevel> levels_;
@@ -92,8 +113,7 @@ class CoarseHierarchy {
   Eigen::VectorXd rhs_;
 };
 
-// y = A x on a level (3 per vertex), and r = b - A x.
-void apply_level(const CoarseLevel& level, const std::vector<double>& x, std::vector<double>& y,
-                 int threads);
+// y = A x on a level (vectors by axis), shared among the enclosing parallel region's threads.
+void apply_level(const CoarseLevel& level, const std::vector<double>& x, std::vector<double>& y);
 
 }  // namespace clothlab
