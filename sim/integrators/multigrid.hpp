@@ -1,14 +1,15 @@
 // Multigrid as PCG's preconditioner for the implicit integrators (solver.linear_solver =
-// "multigrid"): one symmetric V(1,1)-cycle per PCG iteration over the finest level, the Newton
-// matrix itself (newton_matrix.hpp: its matrix-free product and block-Jacobi inverse), and the
-// aggregation levels of multigrid_hierarchy.hpp below it. Block-Jacobi PCG's iterations grow with
-// the grid's side (28 / 60 / 126 / 272 from 16^2 to 128^2); the V-cycle's do not (docs/solver.md,
-// "Toward a multigrid implicit solve").
+// "multigrid", or "auto" once block Jacobi's solves grow long): one cycle per PCG iteration over
+// the finest level, the Newton matrix itself (newton_matrix.hpp: its matrix-free product and
+// block-Jacobi inverse), with the aggregation levels of multigrid_hierarchy.hpp below it solved
+// by their K-cycle. Block-Jacobi PCG's iterations grow with the grid's side (214 / 444 / 939 /
+// 1826 on the falling sheet from 16^2 to 128^2); these grow about 1.1x per doubling (40 / 46 /
+// 56 / 62; docs/solver.md, "Multigrid preconditioner").
 //
 // Per Newton iteration refresh() sums the first coarse level from the fine springs' blocks (one
 // pass over vertices and springs, no product) and the hierarchy the rest. Per PCG iteration
 // apply(): z = omega P r (P the block-Jacobi inverse), the residual r - A z restricted to level
-// 1 (each aggregate's sum), the coarse cycle, its correction copied back to each aggregate's
+// 1 (each aggregate's sum), the coarse K-cycle, its correction copied back to each aggregate's
 // vertices, and z += omega P (r - A z). Two products with A per cycle; pinned vertices stay 0.
 #pragma once
 

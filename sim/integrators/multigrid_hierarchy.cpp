@@ -443,8 +443,8 @@ void CoarseHierarchy::solve_coarsest() {
   }
 }
 
-// One V(1,1)-cycle on level l: x from b (a pre-smoothing from zero, the coarse correction, a
-// post-smoothing; the same damped block Jacobi both ways, so the cycle is symmetric).
+// One cycle on level l: x from b (a pre-smoothing from zero, the coarse correction by the next
+// level's K-cycle, a post-smoothing; the same damped block Jacobi both ways).
 void CoarseHierarchy::cycle(std::size_t l) {
   if (l + 1 == levels_.size()) return solve_coarsest();
   CoarseLevel& level = levels_[l];
