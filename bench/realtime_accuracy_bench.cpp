@@ -6,7 +6,8 @@
 //
 //   build/release/bench/realtime_accuracy_bench [res=256] [threads=2] [csv=realtime_accuracy.csv]
 //                                               [reference=out/bench/rk4_<res>.bin]
-//                                               [only=the settings whose label starts so]
+//                                               [only=the settings whose label starts so;
+//                                                ending in $, the one so labelled]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -159,7 +160,8 @@ int main(int argc, char** argv) {
   if (!csv) return 1;
   std::fprintf(csv, "setting,substeps,resolution,threads,rms_m,seconds_per_frame\n");
   for (const Setting& s : settings) {
-    if (s.label.find(only) != 0) continue;
+    const bool exact = !only.empty() && only.back() == '$';
+    if (exact ? s.label != only.substr(0, only.size() - 1) : s.label.find(only) != 0) continue;
     auto solver = make_solver(sheet(res, s, threads));
     const double frame = median_frame(*solver, kFrames);
     const double e = rms(positions(*solver), ref);

@@ -105,7 +105,7 @@ class MultigridPreconditioner {
       for (long k = 0; k < blocks; ++k) {  // z += P e (each vertex takes its aggregate's value)
         const auto [b, e] = range(k, n);
         for (int a = 0; a < 3; ++a) {
-          const double* x = first.x.data() + std::size_t(a) * first.n;
+          const CoarseReal* x = first.x.data() + std::size_t(a) * first.n;
           for (std::size_t i = b; i < e; ++i) {
             const int c = fine_.of[i];
             if (c >= 0) z.axis(a)[i] += T(x[c]);
@@ -163,7 +163,7 @@ class MultigridPreconditioner {
         double sum = 0.0;
         for (int k = fine_.child_start[c]; k < fine_.child_start[c + 1]; ++k)
           sum += double(fine.axis(a)[std::size_t(fine_.child[std::size_t(k)])]);
-        first.b[std::size_t(a) * first.n + c] = sum;
+        first.b[std::size_t(a) * first.n + c] = CoarseReal(sum);
       }
   }
 

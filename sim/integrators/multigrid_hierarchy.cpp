@@ -92,10 +92,10 @@ void allocate(CoarseLevel& level) {
   const std::size_t n = level.n;
   level.edge_block.assign(6 * level.edges.size(), 0.0);
   level.diag.assign(6 * n, 0.0);
-  level.diag_by_axis.assign(6 * n, 0.0);
-  level.inv.assign(6 * n, 0.0);
+  level.diag_by_axis.assign(6 * n, 0.0f);
+  level.inv.assign(6 * n, 0.0f);
   for (auto* v : {&level.x, &level.b, &level.r, &level.kb, &level.kc, &level.kv})
-    v->assign(3 * n, 0.0);
+    v->assign(3 * n, 0.0f);
   level.partials.assign(3 * block_count(n), 0.0);
   level.adj_start.assign(n + 1, 0);
   for (const auto& [i, j] : level.edges) ++level.adj_start[i + 1], ++level.adj_start[j + 1];
@@ -139,7 +139,7 @@ void allocate(CoarseLevel& level) {
         if (real) level.adj_slot[at] = int(k);
       }
   }
-  level.row_block.assign(6 * level.slots * n, 0.0);
+  level.row_block.assign(6 * level.slots * n, 0.0f);
 }
 
 }  // namespace
@@ -245,17 +245,18 @@ void CoarseHierarchy::finish_refresh(int threads) {
       for (std::size_t v = b; v < e; ++v) {
         double block[6], inverse[6];
         std::copy_n(&level.diag[6 * v], 6, block);
-        for (auto c = std::size_t(0); c < 6; ++c) level.diag_by_axis[c * n + v] = block[c];
+        for (auto c = std::size_t(0); c < 6; ++c)
+          level.diag_by_axis[c * n + v] = CoarseReal(block[c]);
         const auto first = std::size_t(level.adj_start[v]);
         for (auto k = first; k < std::size_t(level.adj_start[v + 1]); ++k) {
           const double* edge = &level.edge_block[6 * std::size_t(level.adj_edge[k])];
           for (std::size_t c = 0; c < 6; ++c) {
-            level.row_block[(std::size_t(level.adj_slot[k]) * 6 + c) * n + v] = edge[c];
+            level.row_block[(std::size_t(level.adj_slot[k]) * 6 + c) * n + v] = CoarseReal(edge[c]);
             block[c] += edge[c];
           }
         }
         invert(block, inverse);
-        for (std::size_t c = 0; c < 6; ++c) level.inv[c * n + v] = inverse[c];
+        for (std::size_t c = 0; c < 6; ++c) level.inv[c * n + v] = CoarseReal(inverse[c]);
       }
     });
     if (l + 1 == levels_.size()) break;
@@ -297,12 +298,13 @@ void CoarseHierarchy::factorise_coarsest() {
   ldlt_.compute(dense_);
 }
 
-void apply_level(const CoarseLevel& level, const std::vector<double>& x, std::vector<double>& y) {
+void apply_level(const CoarseLevel& level, const std::vector<CoarseReal>& x,
+                 std::vector<CoarseReal>& y) {
   const std::size_t n = level.n;
-  const double *x0 = x.data(), *x1 = x0 + n, *x2 = x1 + n;
-  double *y0 = y.data(), *y1 = y0 + n, *y2 = y1 + n;
+  const CoarseReal *x0 = x.data(), *x1 = x0 + n, *x2 = x1 + n;
+  CoarseReal *y0 = y.data(), *y1 = y0 + n, *y2 = y1 + n;
   team_for(n, [&](std::size_t b, std::size_t e) {
-    const double* d = level.diag_by_axis.data();
+    const CoarseReal* d = level.diag_by_axis.data();
 #pragma omp simd
     for (std::size_t i = b; i < e; ++i) {
       y0[i] = d[i] * x0[i] + d[n + i] * x1[i] + d[2 * n + i] * x2[i];
@@ -310,7 +312,7 @@ void apply_level(const CoarseLevel& level, const std::vector<double>& x, std::ve
       y2[i] = d[2 * n + i] * x0[i] + d[4 * n + i] * x1[i] + d[5 * n + i] * x2[i];
     }
     for (std::size_t k = 0; k < level.slots; ++k) {  // y += B (x_i - x_w), one slot at a time
-      const double* __restrict m = level.row_block.data() + 6 * k * n;
+      const CoarseReal* __restrict m = level.row_block.data() + 6 * k * n;
       if (!level.shift.empty()) {  // w = i + shift, for the i that have a w in the level
         const long s = level.shift[k];
         const auto lo = std::size_t(std::max(long(b), -s)),
@@ -318,7 +320,7 @@ void apply_level(const CoarseLevel& level, const std::vector<double>& x, std::ve
 #pragma omp simd
         for (std::size_t i = lo; i < hi; ++i) {
           const auto o = std::size_t(long(i) + s);
-          const double a0 = x0[i] - x0[o], a1 = x1[i] - x1[o], a2 = x2[i] - x2[o];
+          const CoarseReal a0 = x0[i] - x0[o], a1 = x1[i] - x1[o], a2 = x2[i] - x2[o];
           y0[i] += m[i] * a0 + m[n + i] * a1 + m[2 * n + i] * a2;
           y1[i] += m[n + i] * a0 + m[3 * n + i] * a1 + m[4 * n + i] * a2;
           y2[i] += m[2 * n + i] * a0 + m[4 * n + i] * a1 + m[5 * n + i] * a2;
@@ -329,7 +331,7 @@ void apply_level(const CoarseLevel& level, const std::vector<double>& x, std::ve
 #pragma omp simd
       for (std::size_t i = b; i < e; ++i) {
         const auto o = std::size_t(w[i]);
-        const double a0 = x0[i] - x0[o], a1 = x1[i] - x1[o], a2 = x2[i] - x2[o];
+        const CoarseReal a0 = x0[i] - x0[o], a1 = x1[i] - x1[o], a2 = x2[i] - x2[o];
         y0[i] += m[i] * a0 + m[n + i] * a1 + m[2 * n + i] * a2;
         y1[i] += m[n + i] * a0 + m[3 * n + i] * a1 + m[4 * n + i] * a2;
         y2[i] += m[2 * n + i] * a0 + m[4 * n + i] * a1 + m[5 * n + i] * a2;
@@ -341,16 +343,17 @@ void apply_level(const CoarseLevel& level, const std::vector<double>& x, std::ve
 namespace {
 
 // x = (from_zero ? 0 : x) + omega D^-1 (b - (from_zero ? 0 : r)) on vertices [b, e) (by axis).
-void jacobi(CoarseLevel& level, bool from_zero, double omega, std::size_t b, std::size_t e) {
+void jacobi(CoarseLevel& level, bool from_zero, CoarseReal omega, std::size_t b, std::size_t e) {
   const std::size_t n = level.n;
-  const double* p = level.inv.data();
-  double *x0 = level.x.data(), *x1 = x0 + n, *x2 = x1 + n;
-  const double *b0 = level.b.data(), *b1 = b0 + n, *b2 = b1 + n;
-  const double *r0 = level.r.data(), *r1 = r0 + n, *r2 = r1 + n;
-  const double keep = from_zero ? 0.0 : 1.0;
+  const CoarseReal* p = level.inv.data();
+  CoarseReal *x0 = level.x.data(), *x1 = x0 + n, *x2 = x1 + n;
+  const CoarseReal *b0 = level.b.data(), *b1 = b0 + n, *b2 = b1 + n;
+  const CoarseReal *r0 = level.r.data(), *r1 = r0 + n, *r2 = r1 + n;
+  const CoarseReal keep = from_zero ? 0.0f : 1.0f;
 #pragma omp simd
   for (std::size_t i = b; i < e; ++i) {
-    const double d0 = b0[i] - keep * r0[i], d1 = b1[i] - keep * r1[i], d2 = b2[i] - keep * r2[i];
+    const CoarseReal d0 = b0[i] - keep * r0[i], d1 = b1[i] - keep * r1[i],
+                     d2 = b2[i] - keep * r2[i];
     x0[i] = keep * x0[i] + omega * (p[i] * d0 + p[n + i] * d1 + p[2 * n + i] * d2);
     x1[i] = keep * x1[i] + omega * (p[n + i] * d0 + p[3 * n + i] * d1 + p[4 * n + i] * d2);
     x2[i] = keep * x2[i] + omega * (p[2 * n + i] * d0 + p[4 * n + i] * d1 + p[5 * n + i] * d2);
@@ -398,25 +401,26 @@ void CoarseHierarchy::krylov(std::size_t l) {
   apply_level(L, L.x, L.kv);
   const auto [rho1, alpha1] = team_dots<2>(L, [&](std::size_t i, std::array<double, 2>& d) {
     L.kc[i] = L.x[i];
-    d[0] += L.x[i] * L.kv[i], d[1] += L.x[i] * L.kb[i];
+    d[0] += double(L.x[i]) * L.kv[i], d[1] += double(L.x[i]) * L.kb[i];
   });
-  if (!(rho1 > 0.0)) return team_each(L, [&](std::size_t i) { L.x[i] = 0.0; });
+  if (!(rho1 > 0.0)) return team_each(L, [&](std::size_t i) { L.x[i] = 0.0f; });
   const double a1 = alpha1 / rho1;
   const auto [bb, rr] = team_dots<2>(L, [&](std::size_t i, std::array<double, 2>& d) {
-    L.b[i] = L.kb[i] - a1 * L.kv[i];
-    d[0] += L.kb[i] * L.kb[i], d[1] += L.b[i] * L.b[i];
+    L.b[i] = CoarseReal(L.kb[i] - a1 * L.kv[i]);
+    d[0] += double(L.kb[i]) * L.kb[i], d[1] += double(L.b[i]) * L.b[i];
   });
   if (rr <= kKrylovThreshold * kKrylovThreshold * bb)
-    return team_each(L, [&](std::size_t i) { L.x[i] = a1 * L.kc[i]; });
+    return team_each(L, [&](std::size_t i) { L.x[i] = CoarseReal(a1 * L.kc[i]); });
   cycle(l);  // x = c2 = B r~; then A c2 in r
   apply_level(L, L.x, L.r);
   const auto [gamma, beta, alpha2] = team_dots<3>(L, [&](std::size_t i, std::array<double, 3>& d) {
-    d[0] += L.x[i] * L.kv[i], d[1] += L.x[i] * L.r[i], d[2] += L.x[i] * L.b[i];
+    d[0] += double(L.x[i]) * L.kv[i], d[1] += double(L.x[i]) * L.r[i],
+        d[2] += double(L.x[i]) * L.b[i];
   });
   const double rho2 = beta - gamma * gamma / rho1;
-  if (!(rho2 > 0.0)) return team_each(L, [&](std::size_t i) { L.x[i] = a1 * L.kc[i]; });
+  if (!(rho2 > 0.0)) return team_each(L, [&](std::size_t i) { L.x[i] = CoarseReal(a1 * L.kc[i]); });
   const double w1 = a1 - gamma * alpha2 / (rho1 * rho2), w2 = alpha2 / rho2;
-  team_each(L, [&](std::size_t i) { L.x[i] = w1 * L.kc[i] + w2 * L.x[i]; });
+  team_each(L, [&](std::size_t i) { L.x[i] = CoarseReal(w1 * L.kc[i] + w2 * L.x[i]); });
 }
 
 // The coarsest level: x from b by the dense factors (interleaved x y z per vertex there; one
@@ -432,14 +436,16 @@ void CoarseHierarchy::solve_coarsest() {
         for (std::size_t a = 0; a < 3; ++a) rhs_(Eigen::Index(3 * v + a)) = level.b[a * n + v];
       rhs_ = ldlt_.solve(rhs_);
       for (std::size_t v = 0; v < n; ++v)
-        for (std::size_t a = 0; a < 3; ++a) level.x[a * n + v] = rhs_(Eigen::Index(3 * v + a));
+        for (std::size_t a = 0; a < 3; ++a)
+          level.x[a * n + v] = CoarseReal(rhs_(Eigen::Index(3 * v + a)));
     }
     return;
   }
-  team_for(n, [&](std::size_t b, std::size_t e) { jacobi(level, true, kOmega, b, e); });
+  team_for(n, [&](std::size_t b, std::size_t e) { jacobi(level, true, CoarseReal(kOmega), b, e); });
   for (int s = 1; s < kCoarsestSweeps; ++s) {
     apply_level(level, level.x, level.r);
-    team_for(n, [&](std::size_t b, std::size_t e) { jacobi(level, false, kOmega, b, e); });
+    team_for(n,
+             [&](std::size_t b, std::size_t e) { jacobi(level, false, CoarseReal(kOmega), b, e); });
   }
 }
 
@@ -450,7 +456,7 @@ void CoarseHierarchy::cycle(std::size_t l) {
   CoarseLevel& level = levels_[l];
   CoarseLevel& next = levels_[l + 1];
   const std::size_t n = level.n, nn = next.n;
-  team_for(n, [&](std::size_t b, std::size_t e) { jacobi(level, true, kOmega, b, e); });
+  team_for(n, [&](std::size_t b, std::size_t e) { jacobi(level, true, CoarseReal(kOmega), b, e); });
   apply_level(level, level.x, level.r);
   team_for(nn, [&](std::size_t b, std::size_t e) {
     for (std::size_t a = 0; a < 3; ++a)  // the residual restricted: each aggregate's sum
@@ -458,9 +464,9 @@ void CoarseHierarchy::cycle(std::size_t l) {
         double sum = 0.0;
         for (int k = level.child_start[c]; k < level.child_start[c + 1]; ++k) {
           const std::size_t v = a * n + std::size_t(level.child[std::size_t(k)]);
-          sum += level.b[v] - level.r[v];
+          sum += double(level.b[v]) - double(level.r[v]);
         }
-        next.b[a * nn + c] = sum;
+        next.b[a * nn + c] = CoarseReal(sum);
       }
   });
   krylov(l + 1);
@@ -470,7 +476,8 @@ void CoarseHierarchy::cycle(std::size_t l) {
         level.x[a * n + v] += next.x[a * nn + std::size_t(level.to_coarse[v])];
   });
   apply_level(level, level.x, level.r);
-  team_for(n, [&](std::size_t b, std::size_t e) { jacobi(level, false, kOmega, b, e); });
+  team_for(n,
+           [&](std::size_t b, std::size_t e) { jacobi(level, false, CoarseReal(kOmega), b, e); });
 }
 
 }  // namespace clothlab

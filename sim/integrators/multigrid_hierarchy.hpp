@@ -10,8 +10,9 @@
 // adds its block to the diagonal (Vanek, Mandel & Brezina 1996, "Algebraic multigrid by smoothed
 // aggregation", Computing 56, with the smoothing of P left out: the measured prototype needed
 // 1.1-1.6x the cycles of bilinear prolongation for a tenth of the Galerkin work, docs/solver.md).
-// Coarse levels are in double; the topology is built once per scene, the values refreshed per
-// Newton iteration without allocation; the coarsest level is factorised (Eigen's LDLT).
+// Coarse operators are summed in double and applied in float; the topology is built once per scene,
+// the values refreshed per Newton iteration without allocation; the coarsest level is factorised
+// (Eigen's LDLT).
 #pragma once
 
 #include <Eigen/Dense>
@@ -29,6 +30,11 @@ namespace clothlab {
 // slot k holds the edges to vertex i + shift[k] (read as a contiguous run, as the fine matrix
 // does); elsewhere (a mesh's levels, many offsets) slot k is a vertex's k-th edge and
 // row_vertex[k * n + i] its other end (a gather; padding points at i itself).
+// The cycle's working precision on the coarse levels: a preconditioner needs no more (PCG and
+// the Newton residual run in the scene's precision), and float halves the products' memory
+// traffic and doubles their vector width. The Galerkin sums and the coarsest factors are double.
+using CoarseReal = float;
+
 struct CoarseLevel {
   std::size_t n = 0, slots = 0;
   std::vector<std::array<int, 2>> edges;             // (I, J), I < J
@@ -39,11 +45,11 @@ struct CoarseLevel {
   std::vector<long> shift;                           // per slot, where the offsets are few
   std::vector<int> row_vertex;                       // slots x n, where they are not
   std::vector<int> adj_slot;                         // per CSR entry: its slot
-  std::vector<double> row_block, diag_by_axis;       // 6 x slots x n; 6 x n (D_I)
-  std::vector<double> inv;                           // 6 x n: (D_I + sum of its B_e)^-1
-  std::vector<double> x, b, r;                       // 3 x n
-  std::vector<double> kb, kc, kv;  // the K-cycle's right side, first direction and its product
-  std::vector<double> partials;    // dot products, up to 3 per vertex block
+  std::vector<CoarseReal> row_block, diag_by_axis;   // 6 x slots x n; 6 x n (D_I)
+  std::vector<CoarseReal> inv;                       // 6 x n: (D_I + sum of its B_e)^-1
+  std::vector<CoarseReal> x, b, r;                   // 3 x n
+  std::vector<CoarseReal> kb, kc, kv;  // the K-cycle's right side, first direction, its product
+  std::vector<double> partials;        // dot products, up to 3 per vertex block
   // Into the next coarser level (empty at the coarsest): each vertex's aggregate, each edge's
   // target (fine_edge_target's encoding) and each coarse vertex's children (CSR).
   std::vector<int> to_coarse, edge_target, child_start, child;
@@ -114,6 +120,7 @@ class CoarseHierarchy {
 };
 
 // y = A x on a level (vectors by axis), shared among the enclosing parallel region's threads.
-void apply_level(const CoarseLevel& level, const std::vector<double>& x, std::vector<double>& y);
+void apply_level(const CoarseLevel& level, const std::vector<CoarseReal>& x,
+                 std::vector<CoarseReal>& y);
 
 }  // namespace clothlab

@@ -362,8 +362,8 @@ std::vector<Parameter> solver_iterations() {
            .widget = W::combo,
            .description =
                "PCG's preconditioner: block_jacobi, multigrid (one aggregation "
-               "K-cycle per iteration), or auto (block Jacobi; multigrid on grids once a "
-               "solve needs more than 150 iterations)"}),
+               "K-cycle per iteration), or auto (multigrid on grids from 65536 vertices, or "
+               "once a block-Jacobi solve needs more than 150 iterations)"}),
       row<&SolverSpec::cg_max_iterations>({.name = "cg_max_iterations",
                                            .range = between(1, 100000),
                                            .fallback = "500",
