@@ -198,11 +198,13 @@ class ImplicitEuler final : public Integrator<T> {
       ++it;
       converged = std::sqrt(rr) <= target;
       if (converged) break;
-      T beta = static_cast<T>(rz / rz_old);
+      T beta;
       if (use_multigrid_) {  // flexible CG: the K-cycle is not a fixed linear map
         const auto dots = multigrid_->apply(m, matrix_, h, r_, z_, scratch_, &q_, threads);
         rz = dots.rz;
         beta = static_cast<T>(-dots.qz / pq);
+      } else {
+        beta = static_cast<T>(rz / rz_old);
       }
       for_each_block(n_, threads, [&](std::size_t b, std::size_t e) {
         for (int a = 0; a < 3; ++a) {

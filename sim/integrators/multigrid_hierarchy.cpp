@@ -8,7 +8,7 @@
 namespace clothlab {
 namespace {
 
-// Levels below this many vertices run on one thread: a parallel region costs more than them.
+// Levels below this many vertices are refreshed on one thread: a parallel region costs more.
 constexpr std::size_t kParallelLevel = 8192;
 // A level whose edges span at most this many index offsets stores its rows by offset.
 constexpr std::size_t kMaxShifts = 16;
@@ -17,9 +17,7 @@ constexpr std::size_t kMaxDense = 1500;
 constexpr int kCoarsestSweeps = 30;
 
 int level_threads(const CoarseLevel& level, int threads) {
-  static const std::size_t par =
-      std::getenv("CL_PAR") ? std::size_t(std::atoi(std::getenv("CL_PAR"))) : kParallelLevel;
-  return level.n >= par ? threads : 1;
+  return level.n >= kParallelLevel ? threads : 1;
 }
 
 // fn(begin, end) over the blocks of [0, n): on one thread a plain loop, which may run inside
