@@ -219,8 +219,10 @@ CoarseHierarchy::CoarseHierarchy(const CoarseMap& fine) {
   for (CoarseLevel& level : levels_) allocate(level);
   const std::size_t n = levels_.back().n;
   if (n <= kMaxDense) {
-    dense_.setZero(Eigen::Index(3 * n), Eigen::Index(3 * n));
-    ldlt_ = Eigen::LDLT<Eigen::MatrixXd>(Eigen::Index(3 * n));
+    // One factorisation now sizes the factors' buffers (later ones reuse them, without
+    // allocation) and sets their state: a moved-in LDLT(size) leaves its info uninitialised.
+    dense_.setIdentity(Eigen::Index(3 * n), Eigen::Index(3 * n));
+    ldlt_.compute(dense_);
     rhs_.setZero(Eigen::Index(3 * n));
   }
 }
