@@ -42,7 +42,8 @@ double largest_difference(Solver& a, Solver& b) {
   return d;
 }
 
-// The shipped round cloth (a mesh: greedy aggregation, rows read by gather) falling at 1/60 s.
+// The shipped round cloth (a mesh: greedy aggregation; levels whose edges span many index
+// offsets read their rows by gather) falling at 1/60 s.
 Scene round_cloth(double tolerance) {
   Scene s = falling_sheet(2, LinearSolver::multigrid, tolerance);
   ClothSpec& c = s.cloths[0];
