@@ -148,8 +148,7 @@ int main(int argc, char** argv) {
       {"implicit_euler newton 3", K::implicit_euler, 0, 0, true, true, 3},
       {"implicit_euler block jacobi", K::implicit_euler, 0, 0, true, true, 0,
        LinearSolver::block_jacobi},
-      {"implicit_euler multigrid", K::implicit_euler, 0, 0, true, true, 0,
-       LinearSolver::multigrid},
+      {"implicit_euler multigrid", K::implicit_euler, 0, 0, true, true, 0, LinearSolver::multigrid},
   };
   const std::string only = argc > 5 ? argv[5] : "";
   std::printf("%d^2 sheet, k0 = 1e3, dt = 1/60 s, float, %d threads: RMS at %.1f s from RK4\n", res,

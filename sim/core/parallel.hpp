@@ -36,6 +36,19 @@ void run_team(int threads, Body&& body) {
   body();
 }
 
+// Calls fn(block, begin, end) for each block of [0, n) as an orphaned `omp for`: inside a
+// parallel region every thread of its team must call it and the blocks are shared among them
+// (a barrier at the end); outside one it runs the whole loop. For several loops in one region.
+template <class Fn>
+void team_blocks(std::size_t n, Fn&& fn) {
+  const long blocks = static_cast<long>(block_count(n));
+#pragma omp for schedule(static)
+  for (long b = 0; b < blocks; ++b) {
+    const std::size_t begin = static_cast<std::size_t>(b) * kBlockSize;
+    fn(static_cast<std::size_t>(b), begin, std::min(n, begin + kBlockSize));
+  }
+}
+
 // Calls fn(begin, end) for each block of [0, n); blocks run in parallel on `threads` threads.
 template <class Fn>
 void for_each_block(std::size_t n, int threads, Fn&& fn) {

@@ -13,9 +13,7 @@
 // vertices, and z += omega P (r - A z). Two products with A per cycle; pinned vertices stay 0.
 #pragma once
 
-#include <algorithm>
 #include <memory>
-#include <utility>
 #include <vector>
 
 #include "sim/core/parallel.hpp"
@@ -77,50 +75,34 @@ class MultigridPreconditioner {
     const T omega = T(CoarseHierarchy::kOmega);
     const std::size_t n = m.n;
     CoarseLevel& first = coarse_->first();
-    const long blocks = long(block_count(n)), coarse_blocks = long(block_count(first.n));
-    auto range = [](long k, std::size_t size) {
-      const std::size_t b = std::size_t(k) * kBlockSize;
-      return std::pair<std::size_t, std::size_t>{b, std::min(size, b + kBlockSize)};
-    };
+    const long blocks = long(block_count(n));
     run_team(blocks > 1 ? threads : 1, [&] {
-#pragma omp for schedule(static)
-      for (long k = 0; k < blocks; ++k) {  // z = omega P r
-        const auto [b, e] = range(k, n);
+      team_blocks(n, [&](std::size_t, std::size_t b, std::size_t e) {  // z = omega P r
         matrix.precondition(r, z, b, e);
         for (int a = 0; a < 3; ++a)
           for (std::size_t i = b; i < e; ++i) z.axis(a)[i] *= omega;
-      }
-#pragma omp for schedule(static)
-      for (long k = 0; k < blocks; ++k) {  // scratch = r - A z
-        const auto [b, e] = range(k, n);
-        residual(m, matrix, h, r, z, scratch, std::size_t(k), b, e);
-      }
-#pragma omp for schedule(static)
-      for (long k = 0; k < coarse_blocks; ++k) {  // level 1's right side: each aggregate's sum
-        const auto [b, e] = range(k, first.n);
-        restrict_to(first, scratch, b, e);
-      }
+      });
+      team_blocks(n, [&](std::size_t k, std::size_t b, std::size_t e) {  // scratch = r - A z
+        residual(m, matrix, h, r, z, scratch, k, b, e);
+      });
+      team_blocks(first.n, [&](std::size_t, std::size_t b, std::size_t e) {
+        restrict_to(first, scratch, b, e);  // level 1's right side: each aggregate's sum
+      });
       coarse_->solve();  // every thread: its loops are shared in this region
-#pragma omp for schedule(static)
-      for (long k = 0; k < blocks; ++k) {  // z += P e (each vertex takes its aggregate's value)
-        const auto [b, e] = range(k, n);
-        for (int a = 0; a < 3; ++a) {
+      team_blocks(n, [&](std::size_t, std::size_t b, std::size_t e) {
+        for (int a = 0; a < 3; ++a) {  // z += P e (each vertex takes its aggregate's value)
           const CoarseReal* x = first.x.data() + std::size_t(a) * first.n;
           for (std::size_t i = b; i < e; ++i) {
             const int c = fine_.of[i];
             if (c >= 0) z.axis(a)[i] += T(x[c]);
           }
         }
-      }
-#pragma omp for schedule(static)
-      for (long k = 0; k < blocks; ++k) {
-        const auto [b, e] = range(k, n);
-        residual(m, matrix, h, r, z, scratch, std::size_t(k), b, e);
-      }
-#pragma omp for schedule(static)
-      for (long k = 0; k < blocks; ++k) {  // z += omega P (r - A z); r.z per block
-        const auto [b, e] = range(k, n);
-        matrix.precondition(scratch, scratch, b, e);
+      });
+      team_blocks(n, [&](std::size_t k, std::size_t b, std::size_t e) {
+        residual(m, matrix, h, r, z, scratch, k, b, e);
+      });
+      team_blocks(n, [&](std::size_t k, std::size_t b, std::size_t e) {
+        matrix.precondition(scratch, scratch, b, e);  // z += omega P (r - A z); r.z per block
         double rz = 0.0, qz = 0.0;
         for (int a = 0; a < 3; ++a)
           for (std::size_t i = b; i < e; ++i) {
@@ -128,9 +110,9 @@ class MultigridPreconditioner {
             rz += double(r.axis(a)[i]) * double(z.axis(a)[i]);
             if (q) qz += double(q->axis(a)[i]) * double(z.axis(a)[i]);
           }
-        partials_[2 * std::size_t(k)] = rz;
-        partials_[2 * std::size_t(k) + 1] = qz;
-      }
+        partials_[2 * k] = rz;
+        partials_[2 * k + 1] = qz;
+      });
     });
     Dots dots;
     for (long k = 0; k < blocks; ++k) {  // in block order
@@ -140,9 +122,7 @@ class MultigridPreconditioner {
     return dots;
   }
 
-  std::size_t levels() const {
-    return 1 + coarse_->levels();
-  }
+  std::size_t levels() const { return 1 + coarse_->levels(); }
 
  private:
   // out = r - A z on vertex block blk = [b, e) (0 on pinned vertices).

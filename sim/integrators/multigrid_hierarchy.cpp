@@ -20,25 +20,10 @@ int level_threads(const CoarseLevel& level, int threads) {
   return level.n >= kParallelLevel ? threads : 1;
 }
 
-// fn(begin, end) over the blocks of [0, n): on one thread a plain loop, which may run inside
-// another parallel region's `omp single` (for_each_block's orphaned `omp for` would bind to that
-// region's team there and wait at its barrier for threads that never come).
-template <class Fn>
-void for_blocks(std::size_t n, int threads, Fn&& fn) {
-  if (threads > 1) return for_each_block(n, threads, fn);
-  for (std::size_t b = 0; b < n; b += kBlockSize) fn(b, std::min(n, b + kBlockSize));
-}
-
-// fn(begin, end) over the blocks of [0, n) as an orphaned `omp for`: shared among the threads of
-// the enclosing parallel region (every thread must call it), plain loop outside one.
+// fn(begin, end) over the blocks of [0, n), shared among the enclosing region's threads.
 template <class Fn>
 void team_for(std::size_t n, Fn&& fn) {
-  const long blocks = long(block_count(n));
-#pragma omp for schedule(static)
-  for (long k = 0; k < blocks; ++k) {
-    const std::size_t b = std::size_t(k) * kBlockSize;
-    fn(b, std::min(n, b + kBlockSize));
-  }
+  team_blocks(n, [&](std::size_t, std::size_t b, std::size_t e) { fn(b, e); });
 }
 
 // The inverse of a symmetric positive definite 3x3 block; 0 for a singular one.
@@ -241,7 +226,7 @@ void CoarseHierarchy::finish_refresh(int threads) {
         d[0] = d[3] = d[5] = 1.0, d[1] = d[2] = d[4] = 0.0;
       }
     const std::size_t n = level.n;
-    for_blocks(n, level_threads(level, threads), [&](std::size_t b, std::size_t e) {
+    for_each_block(n, level_threads(level, threads), [&](std::size_t b, std::size_t e) {
       for (std::size_t v = b; v < e; ++v) {
         double block[6], inverse[6];
         std::copy_n(&level.diag[6 * v], 6, block);
