@@ -34,6 +34,8 @@ struct Setting {
   bool tethers = true, coarse = true;
   int newton = 0;  // implicit methods: solver.newton_iterations (0: default)
   LinearSolver linear = LinearSolver::automatic;
+  double newton_tolerance = 0.0;  // implicit methods: solver.newton_tolerance (0: default)
+  double cg_tolerance = 0.0;      // implicit methods: solver.cg_tolerance (0: automatic)
 };
 
 Scene sheet(int res, const Setting& s, int threads) {
@@ -46,6 +48,8 @@ Scene sheet(int res, const Setting& s, int threads) {
   scene.solver.coarse_stretch = s.coarse;
   scene.solver.newton_iterations = s.newton;
   scene.solver.linear_solver = s.linear;
+  if (s.newton_tolerance > 0.0) scene.solver.newton_tolerance = s.newton_tolerance;
+  scene.solver.cg_tolerance = s.cg_tolerance;
   scene.solver.threads = threads;
   scene.solver.precision = Precision::f32;
   return scene;
@@ -141,11 +145,16 @@ int main(int argc, char** argv) {
       {"bdf2 newton 2", K::bdf2, 0, 0, true, true, 2},
       {"bdf2 newton 3", K::bdf2, 0, 0, true, true, 3},
       {"bdf2 newton 4", K::bdf2, 0, 0, true, true, 4},
+      {"bdf2 tol 0.1", K::bdf2, 0, 0, true, true, 0, LinearSolver::automatic, 0.1},
+      {"bdf2 tol 0.3", K::bdf2, 0, 0, true, true, 0, LinearSolver::automatic, 0.3},
+      {"bdf2 cg 0.1", K::bdf2, 0, 0, true, true, 0, LinearSolver::automatic, 0, 0.1},
       {"bdf2 block jacobi", K::bdf2, 0, 0, true, true, 0, LinearSolver::block_jacobi},
       {"bdf2 multigrid", K::bdf2, 0, 0, true, true, 0, LinearSolver::multigrid},
       {"implicit_euler", K::implicit_euler},
       {"implicit_euler newton 2", K::implicit_euler, 0, 0, true, true, 2},
       {"implicit_euler newton 3", K::implicit_euler, 0, 0, true, true, 3},
+      {"implicit_euler tol 0.1", K::implicit_euler, 0, 0, true, true, 0, LinearSolver::automatic,
+       0.1},
       {"implicit_euler block jacobi", K::implicit_euler, 0, 0, true, true, 0,
        LinearSolver::block_jacobi},
       {"implicit_euler multigrid", K::implicit_euler, 0, 0, true, true, 0, LinearSolver::multigrid},
