@@ -32,6 +32,7 @@ const std::map<std::string, std::set<std::string>>& allowed() {
       {"vis", {"sim", "gl"}},
       {"bench", {"sim", "music", "load", "gl", "gpu", "factory", "vis"}},
       {"apps", {"sim", "music", "load", "gl", "gpu", "factory", "vis", "bench"}},
+      {"python", {"sim", "music", "load", "gl", "gpu", "factory", "vis"}},
   };
   return table;
 }

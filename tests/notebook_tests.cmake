@@ -76,3 +76,17 @@ foreach(name traces accuracy stability largestep)
       FIXTURES_REQUIRED notebook_figures_${name})
   endforeach()
 endforeach()
+
+# sweep.ipynb runs its own sweep through the Python module (the 3 x 3 grid per integrator of
+# CLOTHLAB_SWEEP_QUICK, on a LocalCluster of two workers: alone). Its map is a few squares and
+# crosses: checked for coloured marks.
+if(CLOTHLAB_PYTHON)
+  add_test(NAME notebook.sweep COMMAND ${PROJECT_SOURCE_DIR}/scripts/notebooks --no-deps sweep)
+  set_tests_properties(notebook.sweep PROPERTIES
+    ENVIRONMENT "CLOTHLAB_FIGURES=${CLOTHLAB_NOTEBOOK_OUT};CLOTHLAB_SWEEP_QUICK=1"
+    FIXTURES_SETUP notebook_figures_sweep RUN_SERIAL TRUE TIMEOUT 300)
+  add_test(NAME notebook.sweep.map
+    COMMAND /usr/bin/python3 ${CMAKE_CURRENT_LIST_DIR}/check_colour.py
+      ${CLOTHLAB_NOTEBOOK_OUT}/sweep_map.png 0.02)
+  set_tests_properties(notebook.sweep.map PROPERTIES FIXTURES_REQUIRED notebook_figures_sweep)
+endif()
