@@ -55,7 +55,7 @@ TEST(DocCitations, EveryCitedNoteAndSectionExists) {
   const fs::path root = CLOTHLAB_SOURCE_DIR;
   int files = 0;
   for (const char* folder : {"sim", "gl", "gpu", "vis", "apps", "bench", "load", "music", "tests",
-                             "shaders", "scenes", "scripts", "cmake"}) {
+                             "shaders", "scenes", "scripts", "cmake", "python"}) {
     for (const auto& e : fs::recursive_directory_iterator(root / folder)) {
       if (!e.is_regular_file() || !is_source(e.path())) continue;
       if (e.path().filename() == "doc_citations_test.cpp") continue;  // its own broken examples

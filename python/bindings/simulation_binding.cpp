@@ -125,7 +125,11 @@ class Simulation {
         std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
                   (hi[2] - lo[2]) * (hi[2] - lo[2]));
     const double r = radius ? *radius : std::max(0.05, 0.25 * diagonal);
-    if (!(r > 0.0)) throw py::value_error("clothlab.Simulation.push: radius must be > 0");
+    if (!(r > 0.0) || !std::isfinite(r))
+      throw py::value_error("clothlab.Simulation.push: radius must be > 0 and finite");
+    for (int k = 0; k < 3; ++k)
+      if (!std::isfinite(impulse[std::size_t(k)]) || !std::isfinite(c[std::size_t(k)]))
+        throw py::value_error("clothlab.Simulation.push: impulse and center must be finite");
     solver_->apply_impulse(c, r, Vec3d{impulse[0], impulse[1], impulse[2]});
   }
 
@@ -259,12 +263,15 @@ void bind_simulation(py::module_& m) {
       .def(
           "vertex_index",
           [](const Simulation& s, int i, int j, int cloth) {
-            const int v = s.solver().vertex_index({cloth, i, j});
-            if (v < 0)
+            const auto& cloths = s.solver().cloths();
+            const bool inside = cloth >= 0 && std::size_t(cloth) < cloths.size() && i >= 0 &&
+                                j >= 0 && i < cloths[std::size_t(cloth)].nu &&
+                                j < cloths[std::size_t(cloth)].nv;
+            if (!inside)
               throw py::index_error("clothlab.Simulation.vertex_index: no vertex (" +
                                     std::to_string(i) + ", " + std::to_string(j) + ") in cloth " +
                                     std::to_string(cloth));
-            return v;
+            return s.solver().vertex_index({cloth, i, j});
           },
           py::arg("i"), py::arg("j"), py::arg("cloth") = 0,
           "The row of vertex (i, j) of a cloth in the field arrays.")
