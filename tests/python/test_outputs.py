@@ -42,3 +42,18 @@ def test_paraview_export_round_trips_through_meshio(small_scene_text, tmp_path):
     numpy.testing.assert_array_equal(last.point_data["force"], sim.forces)
     numpy.testing.assert_array_equal(last.point_data["strain"], sim.strain()[1])
     assert not [f for f in os.listdir(tmp_path) if ".tmp." in f]
+
+
+def test_a_traces_rows_export_as_points_per_step(small_scene_text, tmp_path):
+    frame = clothlab.trace(clothlab.Scene.from_toml(small_scene_text), 0.02, every=20)
+    pvd = clothlab.to_paraview(frame, str(tmp_path / "trace"), name="traced")
+    collection = ElementTree.parse(pvd).getroot().find("Collection")
+    files = [d.get("file") for d in collection]
+    assert len(files) == frame.step.nunique() == 3  # steps 0, 20, 40
+    last = meshio.read(str(tmp_path / "trace" / files[-1]))
+    rows = frame[frame.step == frame.step.max()]
+    numpy.testing.assert_array_equal(last.points, rows[["px", "py", "pz"]].to_numpy())
+    numpy.testing.assert_array_equal(last.point_data["force"], rows[["fx", "fy", "fz"]].to_numpy())
+    numpy.testing.assert_array_equal(last.point_data["vertex_i"], rows.vertex_i.to_numpy())
+    with pytest.raises(ValueError, match="position"):
+        clothlab.to_paraview(frame.drop(columns=["px"]), str(tmp_path / "bad"))
