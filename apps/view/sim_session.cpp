@@ -7,6 +7,7 @@
 
 #include "apps/view/scene_edit.hpp"
 #include "sim/cloth/scene_copies.hpp"
+#include "sim/push_region.hpp"
 #include "sim/scene/scene_error.hpp"
 #include "sim/scene/validate.hpp"
 
@@ -175,24 +176,8 @@ void SimSession::toggle_parallel() {
 
 void SimSession::push(const Vec3d& impulse) {
   if (divergence_) return;
-  const std::size_t n = solver_->vertex_count();
-  std::vector<float> xyz(3 * n);
-  solver_->copy_positions(xyz.data());
-  Vec3d lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY}, centre{};
-  for (std::size_t v = 0; v < n; ++v) {
-    for (int k = 0; k < 3; ++k) {
-      const double x = xyz[3 * v + k];
-      lo[k] = std::min(lo[k], x);
-      hi[k] = std::max(hi[k], x);
-      centre[k] += x / double(n);
-    }
-  }
-  // A quarter of the cloth's diagonal: a hand-sized push on the middle, not a shove of the
-  // whole sheet.
-  const double diagonal =
-      std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                (hi[2] - lo[2]) * (hi[2] - lo[2]));
-  solver_->apply_impulse(centre, std::max(0.05, 0.25 * diagonal), impulse);
+  const PushRegion region = default_push_region(*solver_);
+  solver_->apply_impulse(region.center, region.radius, impulse);
 }
 
 FrameAdvance SimSession::advance(const FrameStepper& stepper, double request, const FrameCap& cap) {

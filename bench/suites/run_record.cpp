@@ -8,27 +8,10 @@
 #include <thread>
 
 #include "bench/suites/report.hpp"
+#include "sim/core/quoted_string.hpp"
 
 namespace clothlab::bench {
 namespace {
-
-// A JSON string: quotes, backslashes and control characters escaped.
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (unsigned char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += static_cast<char>(c);
-    } else if (c < 0x20) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
-      out += escaped;
-    } else {
-      out += static_cast<char>(c);
-    }
-  }
-  return out + "\"";
-}
 
 // A JSON number, or null for NaN (an unreadable load average).
 std::string json_number(double value) {
@@ -37,16 +20,16 @@ std::string json_number(double value) {
 
 std::string to_json(const RunRecord& r) {
   std::ostringstream j;
-  j << "{\n  \"suite\": " << json_string(r.suite) << ",\n  \"date\": " << json_string(r.date)
-    << ",\n  \"machine\": " << json_string(r.machine)
+  j << "{\n  \"suite\": " << quoted_string(r.suite) << ",\n  \"date\": " << quoted_string(r.date)
+    << ",\n  \"machine\": " << quoted_string(r.machine)
     << ",\n  \"quick\": " << (r.quick ? "true" : "false") << ",\n  \"threads\": " << r.threads
     << ",\n  \"load_before\": " << json_number(r.load_before)
     << ",\n  \"load_after\": " << json_number(r.load_after)
     << ",\n  \"seconds\": " << json_number(r.seconds) << ",\n  \"tables\": [";
   for (std::size_t t = 0; t < r.tables.size(); ++t)
-    j << (t ? "," : "") << "\n    {\"file\": " << json_string(r.tables[t].file)
-      << ", \"title\": " << json_string(r.tables[t].title)
-      << ", \"note\": " << json_string(r.tables[t].note) << "}";
+    j << (t ? "," : "") << "\n    {\"file\": " << quoted_string(r.tables[t].file)
+      << ", \"title\": " << quoted_string(r.tables[t].title)
+      << ", \"note\": " << quoted_string(r.tables[t].note) << "}";
   j << "\n  ]\n}\n";
   return j.str();
 }

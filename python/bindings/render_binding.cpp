@@ -12,6 +12,7 @@
 #include "factory/solver_factory.hpp"
 #include "python/bindings/bindings.hpp"
 #include "sim/fields/frame_fields.hpp"
+#include "sim/scene/name_list.hpp"
 #include "sim/solver.hpp"
 #include "vis/colormap/colormap.hpp"
 #include "vis/render/headless_renderer.hpp"
@@ -27,13 +28,10 @@ namespace {
 // The element of `all` named `name` by `name_of`, or a ValueError listing the names.
 template <class T, std::size_t N, class NameOf>
 T by_name(const std::array<T, N>& all, NameOf name_of, const std::string& name, const char* what) {
-  std::string names;
-  for (const T& item : all) {
+  for (const T& item : all)
     if (name_of(item) == name) return item;
-    names += (names.empty() ? "" : ", ") + std::string(name_of(item));
-  }
   throw py::value_error(std::string("clothlab.render: unknown ") + what + " '" + name + "' (" +
-                        names + ")");
+                        comma_list(all, name_of) + ")");
 }
 
 struct ViewOptions {

@@ -5,11 +5,10 @@
 #include <toml++/toml.h>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 #include "load/scene_load.hpp"
 #include "python/bindings/bindings.hpp"
+#include "sim/core/quoted_string.hpp"
 #include "sim/scene/overrides.hpp"
 #include "sim/scene/parameters.hpp"
 #include "sim/scene/scene_parser.hpp"
@@ -23,24 +22,6 @@ Scene SceneSource::load() const {
 }
 
 namespace {
-
-// A TOML basic string: quotes, backslashes and control characters escaped.
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", unsigned(static_cast<unsigned char>(c)));
-      out += buf;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
 
 // A float as TOML writes it, exactly (17 significant digits), always a float ("2.0", not "2").
 std::string float_literal(double d) {
@@ -58,7 +39,7 @@ std::string float_literal(double d) {
 // __float__ and iteration.
 std::string toml_literal(const py::handle& v) {
   if (py::isinstance<py::bool_>(v)) return v.cast<bool>() ? "true" : "false";
-  if (py::isinstance<py::str>(v)) return quoted(v.cast<std::string>());
+  if (py::isinstance<py::str>(v)) return quoted_string(v.cast<std::string>());
   if (py::isinstance<py::int_>(v)) return py::str(v).cast<std::string>();
   if (py::isinstance<py::float_>(v)) return float_literal(v.cast<double>());
   if (py::isinstance<py::dict>(v)) {
@@ -67,7 +48,7 @@ std::string toml_literal(const py::handle& v) {
     for (const auto& [key, value] : v.cast<py::dict>()) {
       if (!first) out += ", ";
       first = false;
-      out += quoted(py::str(key).cast<std::string>()) + " = " + toml_literal(value);
+      out += quoted_string(py::str(key).cast<std::string>()) + " = " + toml_literal(value);
     }
     return out + " }";
   }
@@ -142,12 +123,11 @@ py::object get_value(const SceneSource& s, const std::string& key) {
   throw SceneError({s.name, 0, 0}, key, "unknown key");
 }
 
+// The file read once, with the command line's checks and messages (the files it names too).
 SceneSource from_file(const std::string& path) {
-  (void)read_scene_file(path);  // the command line's checks and messages, files included
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return {text.str(), path, {}};
+  SceneSource s{read_scene_text(path), path, {}};
+  (void)s.load();
+  return s;
 }
 
 SceneSource from_toml(const std::string& text) {
@@ -156,15 +136,27 @@ SceneSource from_toml(const std::string& text) {
   return s;
 }
 
-// Appends key=value and keeps it only when the scene still loads.
-void set_value(SceneSource& s, const std::string& key, const py::handle& value) {
-  s.overrides.push_back(key + "=" + toml_literal(value));
+// Appends the overrides and keeps them only when the scene still loads (read once for all).
+void add_overrides(SceneSource& s, const std::vector<std::string>& added) {
+  const std::size_t before = s.overrides.size();
+  s.overrides.insert(s.overrides.end(), added.begin(), added.end());
   try {
     (void)s.load();
   } catch (...) {
-    s.overrides.pop_back();
+    s.overrides.resize(before);
     throw;
   }
+}
+
+void set_value(SceneSource& s, const std::string& key, const py::handle& value) {
+  add_overrides(s, {key + "=" + toml_literal(value)});
+}
+
+void update_values(SceneSource& s, const py::dict& values) {
+  std::vector<std::string> added;
+  for (const auto& [key, value] : values)
+    added.push_back(py::str(key).cast<std::string>() + "=" + toml_literal(value));
+  add_overrides(s, added);
 }
 
 }  // namespace
@@ -179,6 +171,9 @@ void bind_scene(py::module_& m) {
       .def("set", &set_value, py::arg("key"), py::arg("value"),
            "Sets key.path (as --set does) to a number, bool, str, list or dict; a bad key or "
            "value raises SceneError and leaves the scene unchanged.")
+      .def("update", &update_values, py::arg("values"),
+           "set() for each key.path: value of a dict, the scene read once for all of them; a "
+           "bad one raises SceneError and leaves the scene unchanged.")
       .def("get", &get_value, py::arg("key"),
            "The value at key.path: the file's or an override's, else the default.")
       .def("copy", [](const SceneSource& s) { return s; })

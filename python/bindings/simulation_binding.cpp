@@ -17,6 +17,8 @@
 #include "factory/solver_factory.hpp"
 #include "python/bindings/bindings.hpp"
 #include "sim/fields/spring_strain.hpp"
+#include "sim/push_region.hpp"
+#include "sim/scene/name_list.hpp"
 #include "sim/solver.hpp"
 #include "sim/trace/trace_run.hpp"
 
@@ -107,24 +109,13 @@ class Simulation {
   }
 
   // Like the window's P: `impulse` (N s) on the free vertices within `radius` of `center`;
-  // by default the cloth's mean position and a quarter of its bounding box's diagonal.
+  // by default where the window pushes (sim/push_region.hpp).
   void push(const std::array<double, 3>& impulse, std::optional<std::array<double, 3>> center,
             std::optional<double> radius) {
     const auto lock = exclusive();
-    const int n = int(solver_->vertex_count());
-    Vec3d lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY}, mean{0, 0, 0};
-    for (int v = 0; v < n; ++v) {
-      const Vec3d x = solver_->position(v);
-      for (int k = 0; k < 3; ++k) {
-        lo[k] = std::min(lo[k], x[k]), hi[k] = std::max(hi[k], x[k]);
-        mean[k] += x[k] / double(n);
-      }
-    }
-    const Vec3d c = center ? Vec3d{(*center)[0], (*center)[1], (*center)[2]} : mean;
-    const double diagonal =
-        std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                  (hi[2] - lo[2]) * (hi[2] - lo[2]));
-    const double r = radius ? *radius : std::max(0.05, 0.25 * diagonal);
+    const PushRegion region = default_push_region(*solver_);
+    const Vec3d c = center ? Vec3d{(*center)[0], (*center)[1], (*center)[2]} : region.center;
+    const double r = radius ? *radius : region.radius;
     if (!(r > 0.0) || !std::isfinite(r))
       throw py::value_error("clothlab.Simulation.push: radius must be > 0 and finite");
     for (int k = 0; k < 3; ++k)
@@ -233,13 +224,10 @@ void bind_simulation(py::module_& m) {
           "force",
           [](Simulation& s, const std::string& source) {
             const auto f = parse_force_source(source);
-            if (!f) {
-              std::string names;
-              for (ForceSource k : kAllForceSources)
-                names += (names.empty() ? "" : ", ") + std::string(force_source_name(k));
+            if (!f)
               throw py::value_error("clothlab.Simulation.force: unknown source '" + source +
-                                    "' (one of " + names + ")");
-            }
+                                    "' (one of " + comma_list(kAllForceSources, force_source_name) +
+                                    ")");
             return s.forces(*f);
           },
           py::arg("source") = "total", "One force source's field (N), a copy.")

@@ -9,6 +9,7 @@
 
 #include "factory/solver_factory.hpp"
 #include "python/bindings/bindings.hpp"
+#include "sim/scene/trace_fields.hpp"
 #include "sim/solver.hpp"
 #include "sim/trace/trace_run.hpp"
 
@@ -25,17 +26,11 @@ TraceSpec trace_spec(const Scene& scene, const std::optional<std::vector<std::st
   if (fields) {
     spec.position = spec.velocity = spec.force = spec.energy = false;
     for (const std::string& f : *fields) {
-      if (f == "position")
-        spec.position = true;
-      else if (f == "velocity")
-        spec.velocity = true;
-      else if (f == "force")
-        spec.force = true;
-      else if (f == "energy")
-        spec.energy = true;
-      else
-        throw py::value_error("clothlab.trace: unknown field '" + f +
-                              "' (position, velocity, force, energy)");
+      bool* flag = trace_field(spec, f);
+      if (!flag)
+        throw py::value_error("clothlab.trace: unknown field '" + f + "' (" + trace_field_list() +
+                              ")");
+      *flag = true;
     }
   }
   if (every) {

@@ -37,10 +37,9 @@ def run_case(scene, params, duration, measure=None, threads=1):
     start = time.perf_counter()
     try:
         case = scene.copy()
-        if threads is not None and "solver.threads" not in params:
-            case.set("solver.threads", int(threads))
-        for key, value in params.items():
-            case.set(key, value)
+        settings = {} if threads is None else {"solver.threads": int(threads)}
+        settings.update(params)  # a grid's own solver.threads wins
+        case.update(settings)  # the scene read once for all of them
         sim = Simulation(case)
         sim.advance(duration)
         measured = measure(sim)

@@ -71,7 +71,7 @@ Scene parse_scene_string(std::string_view toml_text, const std::string& name,
   return scene;
 }
 
-Scene parse_scene_file(const std::string& path, const std::vector<std::string>& overrides) {
+std::string read_scene_text(const std::string& path) {
   const SourceLoc loc{path, 0, 0};
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
@@ -91,7 +91,11 @@ Scene parse_scene_file(const std::string& path, const std::vector<std::string>& 
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw SceneError(loc, "", "cannot read scene file");
-  return parse_scene_string(text.str(), path, overrides);
+  return text.str();
+}
+
+Scene parse_scene_file(const std::string& path, const std::vector<std::string>& overrides) {
+  return parse_scene_string(read_scene_text(path), path, overrides);
 }
 
 }  // namespace clothlab

@@ -19,6 +19,10 @@ namespace clothlab {
 // "solver.integrator=rk4" works unquoted. Paths may index arrays: "cloth[1].mass".
 Scene parse_scene_file(const std::string& path, const std::vector<std::string>& overrides = {});
 
+// The text of a scene file, refused (SceneError naming the file) when it is a directory, a device
+// or pipe, beyond 16 MiB or unreadable: what parse_scene_file parses.
+std::string read_scene_text(const std::string& path);
+
 // The same for scene text held in memory; name stands in for the file name in messages.
 Scene parse_scene_string(std::string_view toml_text, const std::string& name,
                          const std::vector<std::string>& overrides = {});

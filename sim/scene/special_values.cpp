@@ -6,6 +6,7 @@
 
 #include "sim/scene/name_list.hpp"
 #include "sim/scene/spring_presets.hpp"
+#include "sim/scene/trace_fields.hpp"
 
 // GCC 12 at -O3 reports a false -Wrestrict inside std::string for `"text" + std::string(...)`
 // (GCC bug 105329); the message texts below are built that way throughout.
@@ -15,14 +16,6 @@
 
 namespace clothlab::special {
 namespace {
-
-constexpr std::string_view kTraceFields[] = {"position", "velocity", "force", "energy"};
-
-std::string list(std::span<const std::string_view> names) {
-  std::string text;
-  for (std::string_view name : names) text += (text.empty() ? "" : ", ") + std::string(name);
-  return text;
-}
 
 // One number is both coefficients; a table names them (Section::friction's records, static
 // first, then kinetic).
@@ -289,18 +282,14 @@ void read_trace_vertices(TomlReader& in, void* object) {
 void read_trace_fields(TomlReader& in, void* object) {
   TraceSpec& trace = *static_cast<TraceSpec*>(object);
   const toml::array& a = in.array(in.node(), in.key(), std::nullopt, " of field names");
-  if (a.empty()) in.fail(in.key(), in.node(), "name at least one of " + list(kTraceFields));
+  if (a.empty()) in.fail(in.key(), in.node(), "name at least one of " + trace_field_list());
   trace.position = trace.velocity = trace.force = trace.energy = false;
   for (std::size_t n = 0; n < a.size(); ++n) {
     const std::string k = in.key() + "[" + std::to_string(n) + "]";
     const std::string name = in.text(*a.get(n), k);
-    bool* flag = name == kTraceFields[0]   ? &trace.position
-                 : name == kTraceFields[1] ? &trace.velocity
-                 : name == kTraceFields[2] ? &trace.force
-                 : name == kTraceFields[3] ? &trace.energy
-                                           : nullptr;
+    bool* flag = trace_field(trace, name);
     if (!flag)
-      in.fail(k, *a.get(n), "unknown field \"" + name + "\" (valid: " + list(kTraceFields) + ")");
+      in.fail(k, *a.get(n), "unknown field \"" + name + "\" (valid: " + trace_field_list() + ")");
     if (*flag) in.fail(k, *a.get(n), "field \"" + name + "\" is listed twice");
     *flag = true;
   }

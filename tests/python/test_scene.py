@@ -90,3 +90,13 @@ def test_scene_pickles_as_text_and_overrides(small_scene_text):
     back = pickle.loads(pickle.dumps(scene))
     assert back.text == scene.text and back.overrides == scene.overrides
     assert back.get("cloth.mass") == 0.5
+
+
+def test_update_sets_several_keys_or_none(small_scene_text):
+    scene = clothlab.Scene.from_toml(small_scene_text)
+    scene.update({"cloth.mass": 0.5, "solver.dt": 0.001})
+    assert scene.get("cloth.mass") == 0.5 and scene.get("solver.dt") == 0.001
+    with pytest.raises(clothlab.SceneError, match="solver.dt"):
+        scene.update({"cloth.mass": 0.7, "solver.dt": -1.0})
+    assert scene.get("cloth.mass") == 0.5  # neither was kept
+    assert scene.overrides == ["cloth.mass=0.5", "solver.dt=0.001"]
