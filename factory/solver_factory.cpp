@@ -14,9 +14,17 @@ void OwnedGlContextDeleter::operator()(OwnedGlContext* context) const {
   delete context;
 }
 
+namespace {
+
+std::string backend_text(const Scene& scene) {
+  return scene.solver.backend == Backend::transform_feedback ? "transform_feedback" : "gpu";
+}
+
+}  // namespace
+
 std::unique_ptr<Solver> make_backend_solver(const Scene& scene, std::string& note) {
   note.clear();
-  if (scene.solver.backend != Backend::gpu) return make_solver(scene);
+  if (scene.solver.backend == Backend::cpu) return make_solver(scene);
   std::string why = gpu::gpu_unsupported_reason(scene);
   if (why.empty()) {
     try {
@@ -25,19 +33,19 @@ std::unique_ptr<Solver> make_backend_solver(const Scene& scene, std::string& not
       why = e.what();
     }
   }
-  note = gpu::cpu_fallback_note(why);
+  note = gpu::cpu_fallback_note(backend_text(scene), why);
   return make_solver(scene);
 }
 
 std::unique_ptr<Solver> make_headless_backend_solver(const Scene& scene, GlContextHandle& context,
                                                      std::string& note) {
   // A context only where the GPU could run the scene; else make_backend_solver says why not.
-  if (scene.solver.backend == Backend::gpu && gpu::gpu_unsupported_reason(scene).empty() &&
+  if (scene.solver.backend != Backend::cpu && gpu::gpu_unsupported_reason(scene).empty() &&
       !context) {
     try {
       context.reset(new OwnedGlContext{});
     } catch (const vis::GlUnavailable& e) {
-      note = gpu::cpu_fallback_note(e.what());
+      note = gpu::cpu_fallback_note(backend_text(scene), e.what());
       return make_solver(scene);
     }
   }

@@ -61,6 +61,9 @@ inline void delete_shader(GLuint n) {
 inline void delete_sampler(GLuint n) {
   glDeleteSamplers(1, &n);
 }
+inline void delete_transform_feedback(GLuint n) {
+  glDeleteTransformFeedbacks(1, &n);
+}
 }  // namespace detail
 
 using Buffer = GlName<detail::delete_buffer>;
@@ -71,6 +74,7 @@ using Renderbuffer = GlName<detail::delete_renderbuffer>;
 using Program = GlName<detail::delete_program>;
 using Shader = GlName<detail::delete_shader>;
 using Sampler = GlName<detail::delete_sampler>;
+using TransformFeedback = GlName<detail::delete_transform_feedback>;
 
 // Creation helpers (direct state access, GL 4.5): one name from glCreate*(args..., 1, &name).
 template <class Name, class Create, class... Args>
@@ -96,6 +100,9 @@ inline Renderbuffer make_renderbuffer() {
 }
 inline Sampler make_sampler() {
   return create_one<Sampler>(glCreateSamplers);
+}
+inline TransformFeedback make_transform_feedback() {
+  return create_one<TransformFeedback>(glCreateTransformFeedbacks);
 }
 
 }  // namespace clothlab::vis

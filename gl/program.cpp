@@ -88,7 +88,8 @@ std::string with_defines(const std::string& text, const std::string& defines) {
 
 }  // namespace
 
-Program link_program(const std::vector<ShaderStage>& stages, const std::string& defines) {
+Program link_program(const std::vector<ShaderStage>& stages, const std::string& defines,
+                     const std::vector<const char*>& captured) {
   std::vector<Shader> shaders;
   std::string names;
   for (const ShaderStage& stage : stages) {
@@ -109,6 +110,9 @@ Program link_program(const std::vector<ShaderStage>& stages, const std::string& 
   }
   Program program(glCreateProgram());
   for (const Shader& s : shaders) glAttachShader(program.get(), s.get());
+  if (!captured.empty())  // one buffer binding per output, in the listed order
+    glTransformFeedbackVaryings(program.get(), static_cast<GLsizei>(captured.size()),
+                                captured.data(), GL_SEPARATE_ATTRIBS);
   glLinkProgram(program.get());
   GLint ok = 0;
   glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
@@ -119,10 +123,11 @@ Program link_program(const std::vector<ShaderStage>& stages, const std::string& 
   return program;
 }
 
-Program build_program(const std::vector<std::string>& files, const std::string& defines) {
+Program build_program(const std::vector<std::string>& files, const std::string& defines,
+                      const std::vector<const char*>& captured) {
   std::vector<ShaderStage> stages;
   for (const std::string& f : files) stages.push_back({stage_of(f), f, shader_text(f)});
-  return link_program(stages, defines);
+  return link_program(stages, defines, captured);
 }
 
 }  // namespace clothlab::vis

@@ -22,11 +22,15 @@ std::string expand_includes(const std::string& text, const std::string& file,
                             std::vector<std::string>& files);
 
 // Compiles and links; throws ShaderError on failure. `defines` ("#define NAME VALUE" lines) go
-// after each stage's #version line, the stage's own lines keeping their numbers.
-Program link_program(const std::vector<ShaderStage>& stages, const std::string& defines = "");
+// after each stage's #version line, the stage's own lines keeping their numbers. `captured`
+// names the last vertex-processing stage's outputs that transform feedback writes, each into
+// its own buffer binding (GL_SEPARATE_ATTRIBS), in that order.
+Program link_program(const std::vector<ShaderStage>& stages, const std::string& defines = "",
+                     const std::vector<const char*>& captured = {});
 
 // The same from shader file names, the stage taken from the extension (.vert, .geom, .frag).
-Program build_program(const std::vector<std::string>& files, const std::string& defines = "");
+Program build_program(const std::vector<std::string>& files, const std::string& defines = "",
+                      const std::vector<const char*>& captured = {});
 
 // Rewrites a driver log so "0:12(5): error" lines read "shaders/cloth.frag:12:5: error" (Mesa
 // prints "<source>:<line>(<column>)", NVIDIA "<source>(<line>)"); files[k] names source string k.

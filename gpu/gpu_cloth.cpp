@@ -69,7 +69,11 @@ GpuCloth::GpuCloth(const Model<float>& model, const Vec3Array<float>& positions,
     : n_(model.n),
       slots_(model.slots),
       incident_slots_(model.incident_slots),
-      triangle_count_(model.triangles.size()) {
+      triangle_count_(model.triangles.size()),
+      damped_(model.has_damping),
+      gravity_(model.gravity),
+      drag_(model.drag),
+      wind_(model.wind) {
   if (model.kernel != SpringKernel::neighbour_list)
     throw std::invalid_argument("GpuCloth needs a model built with SpringKernel::neighbour_list");
   if (positions.size() != n_ || velocities.size() != n_)
@@ -107,18 +111,11 @@ GpuCloth::GpuCloth(const Model<float>& model, const Vec3Array<float>& positions,
   step_program_ = build_program({"cloth_step.comp"});
   faces_program_ = build_program({"cloth_faces.comp"});
   normals_program_ = build_program({"cloth_normals.comp"});
-  const GLuint p = step_program_.get();
   stage_location_ = location(step_program_, "stage");
   time_location_ = location(step_program_, "t");
   h_location_ = location(step_program_, "h");
   half_h_location_ = location(step_program_, "half_h");
-  glProgramUniform1ui(p, location(step_program_, "n"), static_cast<GLuint>(n_));
-  glProgramUniform1i(p, location(step_program_, "slots"), slots_);
-  glProgramUniform1i(p, location(step_program_, "damped"), model.has_damping ? 1 : 0);
-  glProgramUniform3f(p, location(step_program_, "gravity"), model.gravity[0], model.gravity[1],
-                     model.gravity[2]);
-  glProgramUniform1f(p, location(step_program_, "drag"), model.drag);
-  set_wind_uniforms(model.wind);
+  set_force_uniforms(step_program_);
   glProgramUniform1ui(faces_program_.get(), location(faces_program_, "triangles"),
                       static_cast<GLuint>(triangle_count_));
   glProgramUniform1ui(normals_program_.get(), location(normals_program_, "n"),
@@ -148,20 +145,30 @@ void GpuCloth::dispatch(unsigned items) const {
                   GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
-// The wind's constants (sim/forces/wind.hpp WindField) as cloth_step.comp's uniforms.
-void GpuCloth::set_wind_uniforms(const WindSpec& spec) {
+void GpuCloth::set_force_uniforms(const Program& program) {
+  const GLuint p = program.get();
+  glProgramUniform1ui(p, location(program, "n"), static_cast<GLuint>(n_));
+  glProgramUniform1i(p, location(program, "slots"), slots_);
+  glProgramUniform1i(p, location(program, "damped"), damped_ ? 1 : 0);
+  glProgramUniform3f(p, location(program, "gravity"), gravity_[0], gravity_[1], gravity_[2]);
+  glProgramUniform1f(p, location(program, "drag"), drag_);
+  set_wind_uniforms(program, wind_);
+}
+
+// The wind's constants (sim/forces/wind.hpp WindField) as cloth_force.glsl's uniforms.
+void GpuCloth::set_wind_uniforms(const Program& program, const WindSpec& spec) {
   const WindField field(spec);
   windy_ = spec.enabled && !field.calm() && triangle_count_ > 0;
-  const GLuint p = step_program_.get();
-  glProgramUniform1i(p, location(step_program_, "windy"), windy_ ? 1 : 0);
-  glProgramUniform1i(p, location(step_program_, "gusty"), windy_ && !field.steady() ? 1 : 0);
-  glProgramUniform3f(p, location(step_program_, "wind"), static_cast<float>(spec.velocity[0]),
+  const GLuint p = program.get();
+  glProgramUniform1i(p, location(program, "windy"), windy_ ? 1 : 0);
+  glProgramUniform1i(p, location(program, "gusty"), windy_ && !field.steady() ? 1 : 0);
+  glProgramUniform3f(p, location(program, "wind"), static_cast<float>(spec.velocity[0]),
                      static_cast<float>(spec.velocity[1]), static_cast<float>(spec.velocity[2]));
-  glProgramUniform1f(p, location(step_program_, "wind_coefficient"),
+  glProgramUniform1f(p, location(program, "wind_coefficient"),
                      static_cast<float>(spec.coefficient));
-  glProgramUniform3dv(p, location(step_program_, "wind_lag"), 1, field.lag());
-  glProgramUniform1d(p, location(step_program_, "gust"), spec.gust);
-  glProgramUniform1d(p, location(step_program_, "gust_period"), spec.gust_period);
+  glProgramUniform3dv(p, location(program, "wind_lag"), 1, field.lag());
+  glProgramUniform1d(p, location(program, "gust"), spec.gust);
+  glProgramUniform1d(p, location(program, "gust_period"), spec.gust_period);
   // seed * golden ratio, as detail::lattice_value forms it, for the two octaves' seeds.
   GLuint seeds[4];
   for (int k = 0; k < 2; ++k) {
@@ -169,7 +176,7 @@ void GpuCloth::set_wind_uniforms(const WindSpec& spec) {
     seeds[2 * k] = static_cast<GLuint>(g & 0xffffffffu);
     seeds[2 * k + 1] = static_cast<GLuint>(g >> 32);
   }
-  glProgramUniform2uiv(p, location(step_program_, "gust_seeds"), 2, seeds);
+  glProgramUniform2uiv(p, location(program, "gust_seeds"), 2, seeds);
 }
 
 // The surface (normals_: unit normal and vertex area) of the positions in `x`: a face pass and a

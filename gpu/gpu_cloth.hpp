@@ -13,6 +13,7 @@
 // buffer textures are optional in some drivers' fast paths). Needs a current GL 4.5 context.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -24,10 +25,19 @@
 namespace clothlab::gpu {
 
 using vis::Buffer;
+using vis::Framebuffer;
 using vis::Program;
 using vis::Texture;
+using vis::TransformFeedback;
+using vis::VertexArray;
+
+class TfCloth;
 
 class GpuCloth final : public DeviceCloth {
+  // The transform-feedback step (tf_cloth.hpp) keeps its cloth in a GpuCloth's buffers and
+  // steps it with its own draws.
+  friend class TfCloth;
+
  public:
   // Uploads the model (kernel neighbour_list, else std::invalid_argument) and the state (n
   // positions and velocities, m and m/s). Throws GlUnavailable without compute shaders (GL 4.3)
@@ -67,6 +77,7 @@ class GpuCloth final : public DeviceCloth {
   void compute_normals();
   void read_normals(float* xyz) const override;
   void update_normals() override { compute_normals(); }
+  const char* name() const override { return "GPU"; }
 
   std::size_t vertex_count() const { return n_; }
   // Waits until every queued pass has finished (for timing).
@@ -81,7 +92,9 @@ class GpuCloth final : public DeviceCloth {
   void read_vec4(const Buffer& b, float* xyz) const;
   void read_vec4(const Buffer& b, Vec3Array<float>& a) const;
   const std::vector<float>& load_staging(const Buffer& b) const;
-  void set_wind_uniforms(const WindSpec& spec);
+  // The force rule's uniforms (shaders/cloth_force.glsl) on `program`: the model's and the wind's.
+  void set_force_uniforms(const Program& program);
+  void set_wind_uniforms(const Program& program, const WindSpec& spec);
   void surface_pass(const TexturedBuffer& x);
   void force_pass(int stage, int src, double t, const Buffer& force);
   void dispatch(unsigned items) const;
@@ -91,6 +104,11 @@ class GpuCloth final : public DeviceCloth {
   int incident_slots_ = 0;
   std::size_t triangle_count_ = 0;
   bool windy_ = false;
+  // The model's constants the force rule's uniforms are set from.
+  bool damped_ = false;
+  std::array<float, 3> gravity_{};
+  float drag_ = 0.0f;
+  WindSpec wind_;
 
   TexturedBuffer neighbour_, stiffness_, rest_length_, damping_;  // slot-major, n * slots
   Buffer mass_, inv_mass_;

@@ -1,6 +1,19 @@
 #version 450 core
 #include "frame.glsl"
 
+// With the transform-feedback backend a geometry shader (cloth_flat.geom) sits between this
+// stage and cloth.frag and gives every triangle its own normal: its inputs take these names.
+#ifdef FLAT_NORMALS
+#define v_world vg_world
+#define v_normal vg_normal
+#define v_uv vg_uv
+#define v_scalar vg_scalar
+#define v_tangent vg_tangent
+#define v_atlas_uv vg_atlas_uv
+#undef SHADOW_FAST_COORD
+#define SHADOW_FAST_COORD 0
+#endif
+
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec2 uv;

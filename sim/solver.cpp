@@ -473,6 +473,11 @@ void SolverT<T>::state_changed() {
 template class SolverT<float>;
 template class SolverT<double>;
 
+const char* backend_name(const SolverState& solver) {
+  const DeviceCloth* device = solver.device_cloth();
+  return device ? device->name() : "CPU";
+}
+
 std::unique_ptr<Solver> make_solver(const Scene& scene) {
   return make_solver(scene, SpringKernel::row_sweep);
 }

@@ -146,10 +146,9 @@ class Solver : public SolverStepping, public SolverState, public SolverInteracti
   ~Solver() override = default;
 };
 
-// "GPU" when `solver` steps on the GPU backend, else "CPU".
-inline const char* backend_name(const SolverState& solver) {
-  return solver.device_cloth() ? "GPU" : "CPU";
-}
+// "GPU" when `solver` steps on the compute-shader backend, "GPU transform feedback" on the vertex
+// shader's, else "CPU".
+const char* backend_name(const SolverState& solver);
 
 std::unique_ptr<Solver> make_solver(const Scene& scene);
 // With a chosen spring kernel: tests and benchmarks compare the row sweep (the default) with the

@@ -22,6 +22,12 @@ class DeviceCloth {
   virtual unsigned normal_buffer() const = 0;
   // The last update_normals(), 3 floats per vertex (waits for the device).
   virtual void read_normals(float* xyz) const = 0;
+  // True when the renderer computes each triangle's normal itself (a geometry shader) and
+  // normal_buffer() is 0; read_normals() then gives each vertex the normal of its first
+  // incident triangle, the same per-triangle normal.
+  virtual bool flat_normals() const { return false; }
+  // The backend's name in titles and reports ("GPU", "GPU transform feedback").
+  virtual const char* name() const = 0;
 };
 
 template <class T>

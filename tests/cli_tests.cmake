@@ -59,7 +59,9 @@ clothlab_bad_scene(mesh_pin_int_min 6 "cloth\\.pins.1."
 clothlab_bad_scene(duplicate_pin 4 "cloth\\.pins.2." "pin .0, 0. is listed twice")
 clothlab_bad_scene(all_pinned 4 "cloth\\.pins" "every vertex is pinned")
 clothlab_bad_scene(unknown_integrator 6 "solver\\.integrator" "unknown integrator .leapfrog.")
-clothlab_bad_scene(unknown_backend 6 "solver\\.backend" ".*unknown backend \"cuda\" \\(valid: cpu, gpu\\)")
+clothlab_bad_scene(unknown_backend 6 "solver\\.backend" ".*unknown backend \"cuda\" \\(valid: cpu, gpu, transform_feedback\\)")
+clothlab_bad_scene(transform_feedback_verlet 6 "solver\\.integrator"
+  "solver\\.backend = \"transform_feedback\" steps symplectic_euler, explicit_euler and seed_hack, not verlet")
 clothlab_bad_scene(collider_radius 8 "colliders.0.\\.radius" "must be > 0")
 clothlab_bad_scene(collider_friction 8 "colliders.0.\\.friction\\.static" "must be >= 0")
 clothlab_bad_scene(collider_obj_missing 6 "colliders.0.\\.file" "[^\n]*no_such_chair\\.obj: no such OBJ file")
@@ -231,11 +233,25 @@ clothlab_env_test(trace.gpu_without_gl "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexist
   "clothlab trace: solver\\.backend = \"gpu\": EGL [^\n]*; the cloth steps on the CPU\n.*float, CPU,"
   trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.01 --out ${CLOTHLAB_TRACE_OUT}/trace_gpu_no_gl.csv
   --set solver.backend=gpu)
+# solver.backend = "transform_feedback": the step as a vertex shader with transform feedback;
+# what it cannot run is refused naming the key (exit 2), never run on another path.
+clothlab_cli_test(trace.gpu_transform_feedback 0
+  "ms/step \\(symplectic_euler, float, GPU transform feedback, .*wrote"
+  trace ${CLOTHLAB_DEFAULT_SCENE} --duration 0.05 --out ${CLOTHLAB_TRACE_OUT}/trace_tf.csv
+  --set solver.backend=transform_feedback)
+clothlab_cli_test(trace.gpu_transform_feedback_shape 2
+  "skirt\\.toml:7:[0-9]+: cloth\\.shape: solver\\.backend = \"transform_feedback\" draws grid cloths only, not a tube"
+  trace ${PROJECT_SOURCE_DIR}/scenes/skirt.toml --duration 0.01
+  --out ${CLOTHLAB_TRACE_OUT}/trace_tf_tube.csv --set solver.backend=transform_feedback
+  --set solver.integrator=symplectic_euler)
+clothlab_cli_test(render.transform_feedback 0 "steps of [0-9.]+ s on the GPU transform feedback\\)"
+  render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 160x90
+  --out ${CLOTHLAB_TRACE_OUT}/render_tf --set solver.backend=transform_feedback)
 clothlab_cli_test(render.gpu_backend 0 "steps of [0-9.]+ s on the GPU\\)"
   render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 160x90
   --out ${CLOTHLAB_TRACE_OUT}/render_gpu --set solver.backend=gpu)
 # The GPU backend against the CPU solver (an OpenGL context: EGL on llvmpipe in CI).
-clothlab_cli_test(bench.backends_quick 0 "CPU and GPU backends.*gpu .*32x32.*wrote .*backends\\.csv"
+clothlab_cli_test(bench.backends_quick 0 "CPU, GPU compute and GPU transform-feedback backends.*gpu .*32x32.*transform_feedback .*32x32.*wrote .*backends\\.csv"
   bench --suite backends --quick --out ${CLOTHLAB_TRACE_OUT}/bench/backends.csv)
 # An existing directory as --out takes the one suite's files (it was renamed onto: an error).
 file(MAKE_DIRECTORY ${CLOTHLAB_TRACE_OUT}/bench_directory)

@@ -1,4 +1,5 @@
-// Golden images of display modes 1, 2 and 3 and of the force and normal arrows (320 x 240) of a
+// Golden images of display modes 1, 2 and 3 (and 2 and 3 on the transform-feedback backend) and
+// of the force and normal arrows (320 x 240) of a
 // fixed scene after a fixed number of steps, rendered headless (EGL; Mesa llvmpipe on CI) and
 // compared with tests/golden/modeK.png. Tolerance: at most 0.5 % of the pixels may differ by more
 // than 8/255 in any channel, and the mean absolute difference over all channels must stay below
@@ -15,6 +16,7 @@
 #include <memory>
 #include <string>
 
+#include "factory/solver_factory.hpp"
 #include "render_frame.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
@@ -280,6 +282,26 @@ TEST_F(GoldenImage, NormalArrowsOverHeight) {
   view.color.field = vis::ScalarField::height;
   view.color.map = vis::ColorMap::viridis;
   check_golden(*renderer_, *solver_, view, "arrows_normals");
+}
+
+// The transform-feedback backend (solver.backend = "transform_feedback"): the same sheet stepped
+// by the vertex shader and drawn from its captured buffer, each triangle shaded with the geometry
+// shader's flat normal (mode 2's colours, mode 3's light). Same tolerance as the others.
+TEST_F(GoldenImage, TransformFeedbackModes2And3) {
+  Scene scene = golden_scene();
+  scene.solver.backend = Backend::transform_feedback;
+  std::string note;
+  const std::unique_ptr<Solver> tf = make_backend_solver(scene, note);
+  ASSERT_EQ(note, "");
+  ASSERT_STREQ(backend_name(*tf), "GPU transform feedback");
+  ASSERT_TRUE(tf->step(600).ok());
+  renderer_->set_cloth(*tf);
+  for (int mode : {2, 3}) {
+    vis::ViewSettings view = full_view(*tf);
+    view.mode = static_cast<vis::DisplayMode>(mode);
+    check_golden(*renderer_, *tf, view, "tf_mode" + std::to_string(mode));
+  }
+  renderer_->set_cloth(*solver_);
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, GoldenImage, ::testing::Values(1, 2, 3),

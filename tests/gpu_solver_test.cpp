@@ -344,12 +344,7 @@ TEST(GpuSolverRender, DrawsAndProbesTheGpuStateAsTheCpus) {
   renderer.set_cloth(cpu);
   const std::vector<std::uint8_t> from_cpu = test::render_frame(renderer, cpu, view);
   ASSERT_EQ(from_gpu.size(), from_cpu.size());
-  int worst = 0;
-  long moved = 0;
-  for (std::size_t k = 0; k < from_gpu.size(); ++k) {
-    worst = std::max(worst, std::abs(int(from_gpu[k]) - int(from_cpu[k])));
-    moved += std::abs(int(from_gpu[k]) - int(rest[k])) > 16;
-  }
+  const auto [worst, moved] = test::compare_frames(from_gpu, from_cpu, rest);
   std::printf(
       "GPU-drawn against CPU-drawn frame: largest channel difference %d; %ld channels "
       "differ from the rest frame\n",

@@ -30,8 +30,10 @@ constexpr std::array<std::pair<LinearSolver, const char*>, 3> kLinearSolverNames
     {{LinearSolver::automatic, "auto"},
      {LinearSolver::block_jacobi, "block_jacobi"},
      {LinearSolver::multigrid, "multigrid"}}};
-constexpr std::array<std::pair<Backend, const char*>, 2> kBackendNames{
-    {{Backend::cpu, "cpu"}, {Backend::gpu, "gpu"}}};
+constexpr std::array<std::pair<Backend, const char*>, 3> kBackendNames{
+    {{Backend::cpu, "cpu"},
+     {Backend::gpu, "gpu"},
+     {Backend::transform_feedback, "transform_feedback"}}};
 
 std::vector<Parameter> top_level() {
   return {
@@ -398,7 +400,9 @@ std::vector<Parameter> solver_more() {
           {.name = "backend",
            .fallback = "\"cpu\"",
            .widget = W::combo,
-           .description = "gpu: the step as OpenGL compute shaders where it can run"}),
+           .description = "gpu: the step as OpenGL compute shaders where it can run; "
+                          "transform_feedback: as a vertex shader whose output is captured "
+                          "(grid cloths; symplectic_euler, explicit_euler, seed_hack; float)"}),
 
   };
 }

@@ -107,7 +107,9 @@ inline bool is_explicit(IntegratorKind k) {
 }
 enum class Precision { f32, f64 };
 
-enum class Backend { cpu, gpu };
+// Where the integrator substeps run: the CPU; the GPU's compute shaders (gpu); the GPU's vertex
+// shader with transform feedback (docs/gpu-backend.md).
+enum class Backend { cpu, gpu, transform_feedback };
 
 // What solves the backward-Euler problem of each bdf2 step.
 enum class StepSolver { newton, vbd };

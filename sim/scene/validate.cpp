@@ -81,6 +81,7 @@ class Validator {
     check_total_vertices();
     check_forces();
     ranges(Section::solver, &scene_.solver, section_path(Section::solver));
+    if (scene_.solver.backend == Backend::transform_feedback) check_transform_feedback();
     if (scene_.trace) check_trace(*scene_.trace);
     check_render(scene_.render);
     for (const ColliderSpec& c : scene_.colliders) check_collider(c);
@@ -168,6 +169,31 @@ class Validator {
     if (!unloaded_mesh(cloth)) check_pins(cloth);
     if (cloth.springs)
       ranges(Section::springs, &*cloth.springs, at(k, key_of<&ClothSpec::springs>()));
+  }
+
+  // What the transform-feedback step (gpu/tf_cloth.hpp) runs: the one-evaluation integrators in
+  // float, on cloths drawn straight from the captured buffer, which holds one entry per solver
+  // vertex, so a cloth whose UVs copy vertices along a seam (tube, mesh) cannot be drawn from it.
+  // Refused here, naming the key, rather than run differently from what the scene asks.
+  void check_transform_feedback() const {
+    const std::string solver = section_path(Section::solver);
+    const std::string backend =
+        join_key(solver, key_of<&SolverSpec::backend>()) + " = \"transform_feedback\" ";
+    const IntegratorKind k = scene_.solver.integrator;
+    if (k != IntegratorKind::symplectic_euler && k != IntegratorKind::explicit_euler &&
+        k != IntegratorKind::seed_hack)
+      fail(join_key(solver, key_of<&SolverSpec::integrator>()),
+           backend + "steps symplectic_euler, explicit_euler and seed_hack, not " + to_string(k) +
+               " (backend = \"gpu\" runs verlet, \"cpu\" every integrator)");
+    if (scene_.solver.precision == Precision::f64)
+      fail(join_key(solver, key_of<&SolverSpec::precision>()),
+           backend + "computes in float, not double");
+    for (const ClothSpec& cloth : scene_.cloths)
+      if (cloth.shape != "grid")
+        fail(at(cloth.key, key_of<&ClothSpec::shape>()),
+             backend + "draws grid cloths only, not a " + cloth.shape +
+                 " (whose UVs may copy vertices along a seam, which the captured buffer does "
+                 "not hold; backend = \"gpu\" runs it)");
   }
 
   // A tube takes radius and length instead of size; at least 6 vertices round a ring (so the

@@ -58,7 +58,7 @@ int fuzz_scene(const std::uint8_t* data, std::size_t size) {
     return 0;  // refused with its location: what bad input must get
   }
   if (scene_vertices(scene) > kMaxVertices || estimated_solver_bytes(scene) > kMaxBytes) return 0;
-  if (scene.solver.backend == Backend::gpu) scene.solver.backend = Backend::cpu;
+  if (scene.solver.backend != Backend::cpu) scene.solver.backend = Backend::cpu;
   std::unique_ptr<Solver> solver;
   try {
     solver = make_solver(scene);

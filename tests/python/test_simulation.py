@@ -109,3 +109,18 @@ def test_fields_have_their_shapes_and_sources(small_scene_text):
     assert sim.triangles.shape == (2 * 11 * 11, 3)
     with pytest.raises(ValueError, match="unknown source"):
         sim.force("magnetism")
+
+
+def test_transform_feedback_steps_as_the_cpu_and_refuses_verlet(small_scene_text):
+    scene = clothlab.Scene.from_toml(small_scene_text)
+    scene.update({"solver.precision": "float", "solver.integrator": "symplectic_euler"})
+    cpu = clothlab.Simulation(scene)
+    scene.set("solver.backend", "transform_feedback")
+    tf = clothlab.Simulation(scene)
+    assert (cpu.backend, tf.backend, tf.backend_note) == ("CPU", "GPU transform feedback", "")
+    cpu.step(200)
+    tf.step(200)
+    assert numpy.abs(tf.positions - cpu.positions).max() < 1e-5
+    assert numpy.abs(tf.positions - clothlab.Simulation(scene).positions).max() > 1e-3
+    with pytest.raises(clothlab.SceneError, match="solver.integrator"):
+        scene.set("solver.integrator", "verlet")

@@ -34,6 +34,9 @@ std::string cloth_defines(DisplayMode mode, bool color_by) {
          "\n#define CLOTH_COLOR_BY " + (color_by ? "1" : "0") + "\n";
 }
 
+// shaders/cloth.vert's switch to the flat-normal geometry shader (shaders/cloth_flat.geom).
+constexpr const char* kFlatNormals = "#define FLAT_NORMALS 1\n";
+
 }  // namespace
 
 ClothPass::ClothPass()
@@ -45,8 +48,14 @@ ClothPass::ClothPass()
 
 void ClothPass::draw(const ViewSettings& view, ClothGeometry& cloth, ScalarRange range,
                      GLuint colormap, const DiffusionPass* diffusion, const std::string& shading) {
+  const std::string defines =
+      shading + cloth_defines(view.mode, view.color.field != ScalarField::none);
+  if (cloth.flat_normals() && !flat_programs_)
+    flat_programs_ = std::make_unique<ProgramVariants>(
+        std::vector<std::string>{"cloth.vert", "cloth_flat.geom", "cloth.frag"},
+        defines + kFlatNormals);
   program_ =
-      programs_.get(shading + cloth_defines(view.mode, view.color.field != ScalarField::none));
+      cloth.flat_normals() ? flat_programs_->get(defines + kFlatNormals) : programs_.get(defines);
   const GLuint p = program_;
   glUseProgram(p);
   glProgramUniform1f(p, kClothTextureRepeat, fabric_repeat_of(view));

@@ -4,6 +4,7 @@
 // (mode 6, sections 3 and 4). Owns the cloth's textures. Needs a current GL 4.5 context.
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "gl/objects.hpp"
@@ -42,6 +43,9 @@ class ClothPass {
   void upload_normal_map(const Image& map);
 
   ProgramVariants programs_;
+  // With a geometry shader giving each triangle its normal (ClothGeometry::flat_normals()),
+  // made the first time such a cloth is drawn.
+  std::unique_ptr<ProgramVariants> flat_programs_;
   GLuint program_ = 0;  // the variant this draw uses
   Texture fabric_;
   Texture threads_;  // r: metal thread mask, g: weft on top

@@ -90,7 +90,8 @@ void FieldPass::draw(const Renderer& renderer, const std::vector<float>& force,
                          copy_scratch_.data() + 3 * copies.size());
   }
   // The renderer's buffers are bound anew each time: set_cloth() may have replaced them.
-  glVertexArrayVertexBuffer(vao_.get(), 0, renderer.position_buffer(), 0, 3 * sizeof(float));
+  glVertexArrayVertexBuffer(vao_.get(), 0, renderer.position_buffer(), 0,
+                            renderer.position_stride());
   glVertexArrayVertexBuffer(vao_.get(), 1, field_vbo_.get(), 0, 3 * sizeof(float));
   glVertexArrayVertexBuffer(vao_.get(), 2, field_vbo_.get(), half, 3 * sizeof(float));
   glVertexArrayElementBuffer(vao_.get(), renderer.triangle_buffer());

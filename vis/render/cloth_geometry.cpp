@@ -31,6 +31,7 @@ void ClothGeometry::build(const SolverState& solver) {
   tangents_stale_ = true;
   strain_top_ = kMinStrainRange;
   make_vertex_arrays();
+  draw_positions_from(dynamic_vbo_.get(), 3 * sizeof(float));
   staging_.resize(6 * rn);
   scalar_staging_.resize(rn);
 }
@@ -61,6 +62,14 @@ void ClothGeometry::make_vertex_arrays() {
   element_buffer(line_vao_.get(), line_ebo_.get());
 }
 
+// Attribute 0 (position) of both vertex arrays from `buffer`.
+void ClothGeometry::draw_positions_from(GLuint buffer, GLsizei stride) {
+  for (GLuint vao : {cloth_vao_.get(), line_vao_.get()})
+    vertex_buffer(vao, 0, buffer, 0, static_cast<std::size_t>(stride));
+  position_buffer_ = buffer;
+  position_stride_ = stride;
+}
+
 void ClothGeometry::update(const FrameFields& fields) {
   if (fields.vertices != layout_.vertices || fields.positions.size() != 3 * fields.vertices)
     throw std::invalid_argument("ClothGeometry::update: a snapshot of another cloth");
@@ -69,6 +78,11 @@ void ClothGeometry::update(const FrameFields& fields) {
   update_bounds();
   tangents_stale_ = true;
   if (!fields.spring_strain.empty()) update_strain_top(fields.spring_strain);
+  // The transform-feedback backend's captured buffer is drawn as it is (its ping-pong half
+  // changes every substep); a grid cloth has no seam copies (sim/scene/validate.cpp).
+  const bool direct = device_ && device_->flat_normals() && layout_.seam_copies.empty();
+  if (direct) return draw_positions_from(device_->position_buffer(), 4 * sizeof(float));
+  if (flat_normals()) draw_positions_from(dynamic_vbo_.get(), 3 * sizeof(float));
   if (device_)
     return pack_.pack(*device_, layout_.vertices, layout_.render_vertices(), dynamic_vbo_.get());
   const std::size_t rn = layout_.render_vertices();
@@ -128,6 +142,10 @@ void ClothGeometry::update_tangents() {
   if (!tangents_stale_ || layout_.vertices == 0) return;
   const std::size_t rn = layout_.render_vertices();
   if (device_) device_->read_normals(staging_.data() + 3 * rn);  // the normals stayed there
+  // Mode 6's irradiance pass reads attribute 1: the flat normals the device gave, per vertex.
+  if (flat_normals())
+    update_buffer(dynamic_vbo_.get(), staging_.data() + 3 * rn, 3 * rn * sizeof(float),
+                  3 * rn * sizeof(float));
   const float* positions = staging_.data();
   const float* normals = staging_.data() + 3 * rn;
   for (const ClothRange& c : layout_.cloths) {

@@ -51,7 +51,13 @@ class ClothGeometry {
   GLuint line_vao() const { return line_vao_.get(); }
   GLsizei triangle_indices() const { return triangle_indices_; }
   GLsizei line_indices() const { return line_indices_; }
-  GLuint position_buffer() const { return dynamic_vbo_.get(); }
+  // The buffer the positions are drawn from and its stride (bytes): the vertex buffer's, or the
+  // transform-feedback backend's captured buffer (vec4 per vertex) while flat_normals().
+  GLuint position_buffer() const { return position_buffer_; }
+  GLsizei position_stride() const { return position_stride_; }
+  // True while the positions are drawn straight from a device cloth that leaves the normals to
+  // the renderer's geometry shader (shaders/cloth_flat.geom).
+  bool flat_normals() const { return position_buffer_ != dynamic_vbo_.get(); }
   GLuint triangle_buffer() const { return triangle_ebo_.get(); }
   std::size_t vertex_count() const { return layout_.vertices; }
   std::size_t render_vertex_count() const { return layout_.render_vertices(); }
@@ -62,6 +68,7 @@ class ClothGeometry {
 
  private:
   void make_vertex_arrays();
+  void draw_positions_from(GLuint buffer, GLsizei stride);
   void update_bounds();
   void update_strain_top(const std::vector<float>& spring_strain);
   void copy_seams(float* values, std::size_t stride, std::size_t offset) const;
@@ -82,7 +89,9 @@ class ClothGeometry {
   // The GPU backend's cloth the last update() packed from (the tangents read its normals back
   // only when a mode needs them), else null.
   const DeviceCloth* device_ = nullptr;
-  ClothPackPass pack_;  // the GPU backend's buffers into dynamic_vbo_
+  ClothPackPass pack_;          // the GPU backend's buffers into dynamic_vbo_
+  GLuint position_buffer_ = 0;  // dynamic_vbo_, or the device cloth's captured buffer
+  GLsizei position_stride_ = 0;
 };
 
 }  // namespace clothlab::vis

@@ -91,6 +91,7 @@ class Renderer {
   // vertex are the positions of the last update_cloth(), and the triangles' index buffer (the
   // solver's triangles in their order, indexing render vertices).
   GLuint position_buffer() const { return cloth_.position_buffer(); }
+  GLsizei position_stride() const { return cloth_.position_stride(); }
   GLuint triangle_buffer() const { return cloth_.triangle_buffer(); }
   GLsizei triangle_index_count() const { return cloth_.triangle_indices(); }
   // The solver's vertices (what set_scalars and FieldPass::draw take values for).
