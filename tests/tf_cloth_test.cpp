@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -259,7 +260,7 @@ TEST(TfClothRefusal, UnsupportedOptionsNameTheirKey) {
 
 // The renderer draws the captured buffer itself: in mode 1 (the springs, positions only) the
 // frame of the transform-feedback state equals the CPU-drawn frame of the same state, copies
-// included, and it shows the moved cloth.
+// included, and it shows the moved cloth; the probe picks the same vertex from it.
 TEST(TfClothRender, DrawsTheCapturedBufferAsTheCpuDrawsItsState) {
   vis::HeadlessRenderer renderer(320, 240);  // its context is current from here on
   Scene scene = windy(IntegratorKind::symplectic_euler);
@@ -284,6 +285,17 @@ TEST(TfClothRender, DrawsTheCapturedBufferAsTheCpuDrawsItsState) {
       worst, moved);
   EXPECT_LE(worst, 2);
   EXPECT_GT(moved, 500);
+  // The probe's field pass reads the captured buffer too (its vec4 stride).
+  view.mode = vis::DisplayMode::lambert;
+  std::optional<vis::ProbeSample> a;
+  int x = 0, y = 120;
+  for (x = 40; x < 320 && !a; x += 20) a = test::probe_frame(renderer, *cpu, view, x, y);
+  ASSERT_TRUE(a) << "no cloth along the middle row";
+  renderer.set_cloth(*tf);
+  const auto b = test::probe_frame(renderer, *tf, view, x - 20, y);
+  ASSERT_TRUE(b);
+  EXPECT_EQ(a->vertex, b->vertex);
+  EXPECT_LT(glm::length(a->velocity - b->velocity), 1e-5f);
 }
 
 }  // namespace
