@@ -137,14 +137,16 @@ TEST_F(GpuSolverTest, ForceFieldEqualsTheCpusAtTheSameState) {
 }
 
 // Release at 0.05 s, a push at 0.08 s and a grab from 0.1 s on: the CPU-side parts of the step
-// act on the GPU's state as they act on the CPU's.
-TEST_F(GpuSolverTest, ReleasePushAndGrabActAsOnTheCpu) {
+// act on the GPU's state (`backend`: compute or transform feedback) as they act on the CPU's.
+void release_push_and_grab(Backend backend) {
   Scene scene = windy(IntegratorKind::symplectic_euler);
   scene.cloths[0].release_at = 0.05;
+  scene.solver.backend = backend;
   const auto cpu_owner = testing::solver<float>(scene, SpringKernel::neighbour_list);
   Solver& cpu = *cpu_owner;
   const auto gpu_owner = gpu::make_gpu_solver(scene);
   Solver& gpu = *gpu_owner;
+  EXPECT_STREQ(backend_name(gpu), backend == Backend::gpu ? "GPU" : "GPU transform feedback");
   const auto steps_to = [&](double t) { return std::lround(t / cpu.dt()); };
   for (Solver* s : {static_cast<Solver*>(&cpu), static_cast<Solver*>(&gpu)}) {
     ASSERT_TRUE(s->step(steps_to(0.08)).ok());
@@ -171,12 +173,14 @@ TEST_F(GpuSolverTest, ReleasePushAndGrabActAsOnTheCpu) {
   EXPECT_EQ(gpu.position(0)[1], 1.5);  // pinned again on the GPU too
 }
 
-// A sheet dropped onto a sphere: the collision response runs on the CPU around every substep.
+// A sheet dropped onto a sphere (`backend`: compute or transform feedback): the collision
+// response runs on the CPU around every substep.
 // Contact with friction amplifies round-off (stick or slip is a threshold): the two runs agree to
 // 1e-7 m until the sheet lands at about 0.3 s and to 1e-4 m some 50 ms later, so the comparison
 // is made 30 ms after landing, and afterwards on what does not depend on round-off.
-TEST_F(GpuSolverTest, DropOntoASphereFollowsTheCpu) {
+void drop_onto_a_sphere(Backend backend) {
   Scene scene = hanging(IntegratorKind::symplectic_euler);
+  scene.solver.backend = backend;
   scene.cloths[0].origin = {-0.5, 0.8, -0.5};
   scene.cloths[0].v_axis = {0.0, 0.0, 1.0};
   scene.cloths[0].pins.clear();
@@ -190,6 +194,7 @@ TEST_F(GpuSolverTest, DropOntoASphereFollowsTheCpu) {
   Solver& cpu = *cpu_owner;
   const auto gpu_owner = gpu::make_gpu_solver(scene);
   Solver& gpu = *gpu_owner;
+  EXPECT_STREQ(backend_name(gpu), backend == Backend::gpu ? "GPU" : "GPU transform feedback");
   long landed = -1;  // the step of the first contact
   long steps = 0;
   const long end = std::lround(0.6 / cpu.dt());
@@ -224,6 +229,23 @@ TEST_F(GpuSolverTest, DropOntoASphereFollowsTheCpu) {
   }
   EXPECT_GT(nearest, ball.radius);
   EXPECT_LT(nearest, ball.radius + 2 * ball.thickness);
+}
+
+// Both GPU paths share the CPU-side parts of the step (sim/step_backend.hpp).
+TEST_F(GpuSolverTest, ReleasePushAndGrabActAsOnTheCpu) {
+  release_push_and_grab(Backend::gpu);
+}
+
+TEST_F(GpuSolverTest, ReleasePushAndGrabActAsOnTheCpuWithTransformFeedback) {
+  release_push_and_grab(Backend::transform_feedback);
+}
+
+TEST_F(GpuSolverTest, DropOntoASphereFollowsTheCpu) {
+  drop_onto_a_sphere(Backend::gpu);
+}
+
+TEST_F(GpuSolverTest, DropOntoASphereFollowsTheCpuWithTransformFeedback) {
+  drop_onto_a_sphere(Backend::transform_feedback);
 }
 
 TEST_F(GpuSolverTest, ScenesTheGpuCannotRunStayOnTheCpuWithAReason) {
