@@ -1,5 +1,5 @@
 #version 450 core
-// Face pass of the smoothed normals (vis/gpu/gpu_cloth.cpp), one invocation per triangle, as
+// Face pass of the smoothed normals (gpu/gpu_cloth.cpp), one invocation per triangle, as
 // sim/forces/force_field.cpp compute_faces: c = (x1 - x0) x (x2 - x0), twice the area times the
 // unit normal, and the area |c| / 2; written out term by term and `precise` (no fused multiply-add)
 // so it matches the CPU bit for bit. The face array keeps one zero dummy at index `triangles` for

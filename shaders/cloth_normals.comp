@@ -1,5 +1,5 @@
 #version 450 core
-// Vertex pass of the smoothed normals (vis/gpu/gpu_cloth.cpp), one invocation per vertex, as
+// Vertex pass of the smoothed normals (gpu/gpu_cloth.cpp), one invocation per vertex, as
 // sim/forces/force_field.cpp compute_vertex_normals: the sum of the incident faces' c (area
 // weighted, Max 1999) over the padded slot-major incidence table, in slot order, normalised; the
 // vertex area is a third of the incident areas. `precise`, so it matches the CPU bit for bit.
