@@ -14,14 +14,6 @@ void OwnedGlContextDeleter::operator()(OwnedGlContext* context) const {
   delete context;
 }
 
-namespace {
-
-std::string backend_text(const Scene& scene) {
-  return scene.solver.backend == Backend::transform_feedback ? "transform_feedback" : "gpu";
-}
-
-}  // namespace
-
 std::unique_ptr<Solver> make_backend_solver(const Scene& scene, std::string& note) {
   note.clear();
   if (scene.solver.backend == Backend::cpu) return make_solver(scene);
@@ -33,7 +25,7 @@ std::unique_ptr<Solver> make_backend_solver(const Scene& scene, std::string& not
       why = e.what();
     }
   }
-  note = gpu::cpu_fallback_note(backend_text(scene), why);
+  note = gpu::cpu_fallback_note(scene.solver.backend, why);
   return make_solver(scene);
 }
 
@@ -45,7 +37,7 @@ std::unique_ptr<Solver> make_headless_backend_solver(const Scene& scene, GlConte
     try {
       context.reset(new OwnedGlContext{});
     } catch (const vis::GlUnavailable& e) {
-      note = gpu::cpu_fallback_note(backend_text(scene), e.what());
+      note = gpu::cpu_fallback_note(scene.solver.backend, e.what());
       return make_solver(scene);
     }
   }

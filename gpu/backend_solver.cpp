@@ -30,9 +30,10 @@ std::unique_ptr<Solver> make_gpu_solver(const Scene& scene) {
   return solver;
 }
 
-std::string cpu_fallback_note(const std::string& name, const std::string& why) {
-  const Parameter& backend = *find_parameter(Section::solver, key_of<&SolverSpec::backend>());
-  return parameter_path(backend) + " = \"" + name + "\": " + why + "; the cloth steps on the CPU";
+std::string cpu_fallback_note(Backend backend, const std::string& why) {
+  const Parameter& key = *find_parameter(Section::solver, key_of<&SolverSpec::backend>());
+  return parameter_path(key) + " = \"" + to_string(backend) + "\": " + why +
+         "; the cloth steps on the CPU";
 }
 
 }  // namespace clothlab::gpu

@@ -23,8 +23,7 @@ std::string gpu_unsupported_reason(const Scene& scene);
 // solver does.
 std::unique_ptr<Solver> make_gpu_solver(const Scene& scene);
 
-// The line said when solver.backend = `name` ("gpu", "transform_feedback") cannot be honoured
-// for reason `why`.
-std::string cpu_fallback_note(const std::string& name, const std::string& why);
+// The line said when solver.backend = `backend` cannot be honoured for reason `why`.
+std::string cpu_fallback_note(Backend backend, const std::string& why);
 
 }  // namespace clothlab::gpu

@@ -94,7 +94,7 @@ std::vector<Table> backends_suite(const SuiteOptions& o) {
       Scene scene = sheets(res, copies, 1);
       scene.solver.backend = b;
       const auto solver = gpu::make_gpu_solver(scene);
-      add(b == Backend::gpu ? "gpu" : "transform_feedback", gpu_threads, res, copies, *solver);
+      add(to_string(b), gpu_threads, res, copies, *solver);
     }
   };
   const std::vector<int> sizes =

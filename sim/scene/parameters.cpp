@@ -30,10 +30,6 @@ constexpr std::array<std::pair<LinearSolver, const char*>, 3> kLinearSolverNames
     {{LinearSolver::automatic, "auto"},
      {LinearSolver::block_jacobi, "block_jacobi"},
      {LinearSolver::multigrid, "multigrid"}}};
-constexpr std::array<std::pair<Backend, const char*>, 3> kBackendNames{
-    {{Backend::cpu, "cpu"},
-     {Backend::gpu, "gpu"},
-     {Backend::transform_feedback, "transform_feedback"}}};
 
 std::vector<Parameter> top_level() {
   return {

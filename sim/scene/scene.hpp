@@ -206,5 +206,8 @@ struct Scene {
 
 const char* to_string(IntegratorKind kind);
 std::optional<IntegratorKind> integrator_from_string(const std::string& name);
+// solver.backend's names in scene files and messages ("cpu", "gpu", "transform_feedback").
+extern const std::array<std::pair<Backend, const char*>, 3> kBackendNames;
+const char* to_string(Backend backend);
 
 }  // namespace clothlab

@@ -48,6 +48,14 @@ const std::array<std::pair<MeshKind, const char*>, 4> kMeshKindNames{
 const std::array<std::pair<ThreadMetal, const char*>, 3> kThreadMetalNames{
     {{ThreadMetal::none, "none"}, {ThreadMetal::gold, "gold"}, {ThreadMetal::silver, "silver"}}};
 
+const std::array<std::pair<Backend, const char*>, 3> kBackendNames{
+    {{Backend::cpu, "cpu"},
+     {Backend::gpu, "gpu"},
+     {Backend::transform_feedback, "transform_feedback"}}};
+
+const char* to_string(Backend backend) {
+  return name_of(kBackendNames, backend);
+}
 const char* to_string(ColliderKind kind) {
   return name_of(kColliderKindNames, kind);
 }

@@ -177,8 +177,8 @@ class Validator {
   // Refused here, naming the key, rather than run differently from what the scene asks.
   void check_transform_feedback() const {
     const std::string solver = section_path(Section::solver);
-    const std::string backend =
-        join_key(solver, key_of<&SolverSpec::backend>()) + " = \"transform_feedback\" ";
+    const std::string backend = join_key(solver, key_of<&SolverSpec::backend>()) + " = \"" +
+                                to_string(Backend::transform_feedback) + "\" ";
     const IntegratorKind k = scene_.solver.integrator;
     if (k != IntegratorKind::symplectic_euler && k != IntegratorKind::explicit_euler &&
         k != IntegratorKind::seed_hack)
