@@ -74,6 +74,7 @@ GpuCloth::GpuCloth(const Model<float>& model, const Vec3Array<float>& positions,
       gravity_(model.gravity),
       drag_(model.drag),
       wind_(model.wind) {
+  windy_ = wind_.enabled && !WindField(wind_).calm() && triangle_count_ > 0;
   if (model.kernel != SpringKernel::neighbour_list)
     throw std::invalid_argument("GpuCloth needs a model built with SpringKernel::neighbour_list");
   if (positions.size() != n_ || velocities.size() != n_)
@@ -152,13 +153,13 @@ void GpuCloth::set_force_uniforms(const Program& program) {
   glProgramUniform1i(p, location(program, "damped"), damped_ ? 1 : 0);
   glProgramUniform3f(p, location(program, "gravity"), gravity_[0], gravity_[1], gravity_[2]);
   glProgramUniform1f(p, location(program, "drag"), drag_);
-  set_wind_uniforms(program, wind_);
+  set_wind_uniforms(program);
 }
 
 // The wind's constants (sim/forces/wind.hpp WindField) as cloth_force.glsl's uniforms.
-void GpuCloth::set_wind_uniforms(const Program& program, const WindSpec& spec) {
+void GpuCloth::set_wind_uniforms(const Program& program) {
+  const WindSpec& spec = wind_;
   const WindField field(spec);
-  windy_ = spec.enabled && !field.calm() && triangle_count_ > 0;
   const GLuint p = program.get();
   glProgramUniform1i(p, location(program, "windy"), windy_ ? 1 : 0);
   glProgramUniform1i(p, location(program, "gusty"), windy_ && !field.steady() ? 1 : 0);

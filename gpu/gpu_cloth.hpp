@@ -94,7 +94,7 @@ class GpuCloth final : public DeviceCloth {
   const std::vector<float>& load_staging(const Buffer& b) const;
   // The force rule's uniforms (shaders/cloth_force.glsl) on `program`: the model's and the wind's.
   void set_force_uniforms(const Program& program);
-  void set_wind_uniforms(const Program& program, const WindSpec& spec);
+  void set_wind_uniforms(const Program& program);
   void surface_pass(const TexturedBuffer& x);
   void force_pass(int stage, int src, double t, const Buffer& force);
   void dispatch(unsigned items) const;
@@ -103,7 +103,7 @@ class GpuCloth final : public DeviceCloth {
   int slots_ = 0;
   int incident_slots_ = 0;
   std::size_t triangle_count_ = 0;
-  bool windy_ = false;
+  bool windy_ = false;  // the wind blows on a cloth with triangles
   // The model's constants the force rule's uniforms are set from.
   bool damped_ = false;
   std::array<float, 3> gravity_{};

@@ -82,9 +82,9 @@ const TfCloth::StepProgram& TfCloth::step_program(int rule) {
   return p;
 }
 
-// Output `index` of the next draw into `target`'s buffer.
-void TfCloth::capture(GLuint index, const GpuCloth::TexturedBuffer& target) {
-  glTransformFeedbackBufferBase(feedback_.get(), index, target.buffer.get());
+// Output `index` of the next draw into `buffer`.
+void TfCloth::capture(GLuint index, const Buffer& buffer) {
+  glTransformFeedbackBufferBase(feedback_.get(), index, buffer.get());
 }
 
 // Each vertex's (unit normal, area) of the positions in x_[src] into the surface buffer.
@@ -93,7 +93,7 @@ void TfCloth::surface_draw(int src) {
   glBindTextureUnit(0, base_.x_[src].texture.get());
   glBindTextureUnit(1, base_.incident_.texture.get());
   glBindTextureUnit(2, corners_.texture.get());
-  glTransformFeedbackBufferBase(feedback_.get(), 0, base_.normals_.get());
+  capture(0, base_.normals_);
   glBeginTransformFeedback(GL_POINTS);
   glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(base_.n_));
   glEndTransformFeedback();
@@ -113,8 +113,8 @@ void TfCloth::step_draw(const StepProgram& p, int src, double t) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, base_.inv_mass_.get());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, base_.normals_.get());
   glProgramUniform1d(p.program.get(), p.t, t);
-  capture(0, base_.x_[dst]);
-  capture(1, base_.v_[dst]);
+  capture(0, base_.x_[dst].buffer);
+  capture(1, base_.v_[dst].buffer);
   glBeginTransformFeedback(GL_POINTS);
   glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(base_.n_));
   glEndTransformFeedback();

@@ -63,7 +63,7 @@ class TfCloth final : public DeviceCloth {
     GLint h = -1, t = -1;  // uniform locations
   };
   const StepProgram& step_program(int rule);
-  void capture(GLuint index, const GpuCloth::TexturedBuffer& target);
+  void capture(GLuint index, const Buffer& buffer);
   void surface_draw(int src);
   void step_draw(const StepProgram& p, int src, double t);
 
