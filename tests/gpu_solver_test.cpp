@@ -232,21 +232,19 @@ void drop_onto_a_sphere(Backend backend) {
 }
 
 // Both GPU paths share the CPU-side parts of the step (sim/step_backend.hpp).
-TEST_F(GpuSolverTest, ReleasePushAndGrabActAsOnTheCpu) {
-  release_push_and_grab(Backend::gpu);
+class GpuBackends : public GpuSolverTest, public ::testing::WithParamInterface<Backend> {};
+
+TEST_P(GpuBackends, ReleasePushAndGrabActAsOnTheCpu) {
+  release_push_and_grab(GetParam());
 }
 
-TEST_F(GpuSolverTest, ReleasePushAndGrabActAsOnTheCpuWithTransformFeedback) {
-  release_push_and_grab(Backend::transform_feedback);
+TEST_P(GpuBackends, DropOntoASphereFollowsTheCpu) {
+  drop_onto_a_sphere(GetParam());
 }
 
-TEST_F(GpuSolverTest, DropOntoASphereFollowsTheCpu) {
-  drop_onto_a_sphere(Backend::gpu);
-}
-
-TEST_F(GpuSolverTest, DropOntoASphereFollowsTheCpuWithTransformFeedback) {
-  drop_onto_a_sphere(Backend::transform_feedback);
-}
+INSTANTIATE_TEST_SUITE_P(Paths, GpuBackends,
+                         ::testing::Values(Backend::gpu, Backend::transform_feedback),
+                         [](const auto& info) { return std::string(to_string(info.param)); });
 
 TEST_F(GpuSolverTest, ScenesTheGpuCannotRunStayOnTheCpuWithAReason) {
   std::string note;

@@ -99,17 +99,19 @@ class TfClothTest : public testing::GlContextTest {
   }
 };
 
-TEST_F(TfClothTest, FollowsTheCpuWithSymplecticEuler) {
-  follows_the_cpu(IntegratorKind::symplectic_euler);
+// Each integrator the path runs.
+class TfClothIntegrators : public TfClothTest,
+                           public ::testing::WithParamInterface<IntegratorKind> {};
+
+TEST_P(TfClothIntegrators, FollowsTheCpu) {
+  follows_the_cpu(GetParam());
 }
 
-TEST_F(TfClothTest, FollowsTheCpuWithExplicitEuler) {
-  follows_the_cpu(IntegratorKind::explicit_euler);
-}
-
-TEST_F(TfClothTest, FollowsTheCpuWithTheSeedHack) {
-  follows_the_cpu(IntegratorKind::seed_hack);
-}
+INSTANTIATE_TEST_SUITE_P(Rules, TfClothIntegrators,
+                         ::testing::Values(IntegratorKind::symplectic_euler,
+                                           IntegratorKind::explicit_euler,
+                                           IntegratorKind::seed_hack),
+                         [](const auto& info) { return std::string(to_string(info.param)); });
 
 TEST_F(TfClothTest, SameBytesRunToRun) {
   const Scene scene = windy(IntegratorKind::symplectic_euler);
