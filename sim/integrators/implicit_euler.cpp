@@ -137,8 +137,7 @@ class ImplicitEuler final : public Integrator<T> {
       // Later iterations solve for delta in dv_'s place; the first dv stays the next warm start.
       if (k == 1) std::swap(dv_, first_dv_);
       sys.forces(first ? t : t + double(h), s.pos, s.vel, f0_);
-      matrix_.assemble(s, h, sys.threads);
-      const SolveStats st = solve(sys.model, s.vel, h, first, sys.threads);
+      const SolveStats st = solve(sys.model, s, h, first, sys.threads);
       total.iterations += st.iterations;
       ++total.solves;
       if (multigrid_ && st.iterations > kMultigridAfter) use_multigrid_ = true;
@@ -162,11 +161,11 @@ class ImplicitEuler final : public Integrator<T> {
  private:
   // One linear solve (M - h D - h^2 K) dv = b by PCG, warm-started from the last step's first
   // dv on the first Newton iteration, from 0 on later ones.
-  SolveStats solve(const Model<T>& m, const Vec3Array<T>& vel, T h, bool first, int threads) {
+  SolveStats solve(const Model<T>& m, const State<T>& state, T h, bool first, int threads) {
     // Slot blocks, preconditioner, right side and initial residual, per vertex block.
     const bool warm = first && warm_;
     for_each_block_indexed(n_, threads, [&](std::size_t blk, std::size_t b, std::size_t e) {
-      setup_block(m, vel, h, warm, first, blk, b, e);
+      setup_block(m, state, h, warm, first, blk, b, e);
     });
     const auto [bb, rz_start, rr_start] = sum_partials();
     double rz = rz_start, rr = rr_start;
@@ -264,11 +263,12 @@ class ImplicitEuler final : public Integrator<T> {
   // For vertices [b, e): the right side b (first: h (f0 + h K v0); later: h F - M (v - v0)),
   // the matrix's slots and preconditioner there, r = b - A dv (warm) or r = b, dv = 0 (cold),
   // and with block Jacobi z = P r and p = z. Partial sums: |b|^2, r.z (block Jacobi) and r.r.
-  void setup_block(const Model<T>& m, const Vec3Array<T>& vel, T h, bool warm, bool first,
+  void setup_block(const Model<T>& m, const State<T>& state, T h, bool warm, bool first,
                    std::size_t blk, std::size_t b, std::size_t e) {
     T* __restrict bx = r_.x.data();
     T* __restrict by = r_.y.data();
     T* __restrict bz = r_.z.data();
+    const Vec3Array<T>& vel = state.vel;
     for (std::size_t i = b; i < e; ++i) {
       bx[i] = h * f0_.x[i], by[i] = h * f0_.y[i], bz[i] = h * f0_.z[i];
       if (!first) {  // Newton on R(v): b = h F - M (v - v0)
@@ -277,7 +277,7 @@ class ImplicitEuler final : public Integrator<T> {
         bz[i] -= m.mass[i] * (vel.z[i] - v0_.z[i]);
       }
     }
-    matrix_.setup_block(m, h, first, r_, blk, b, e);
+    matrix_.setup_block(m, state, h, first, r_, blk, b, e);
     double bb = 0.0;
     for (std::size_t i = b; i < e; ++i)
       bb += double(bx[i]) * bx[i] + double(by[i]) * by[i] + double(bz[i]) * bz[i];

@@ -35,30 +35,41 @@ class MultigridPreconditioner {
     fine_ = coarsen(m.n, springs, pinned, grids);
     coarse_ = std::make_unique<CoarseHierarchy>(fine_);
     partials_.assign(2 * block_count(m.n), 0.0);
+    // Which fine springs each coarse vertex's diagonal and each coarse edge sum, in spring order.
+    std::vector<int> to_diag(springs.size(), -1), to_edge(springs.size(), -1);
+    for (std::size_t s = 0; s < springs.size(); ++s) {
+      const int t = fine_.edge_target[s];
+      if (t >= 0) to_edge[s] = t;
+      if (t < kInside) to_diag[s] = -2 - t;
+    }
+    children(to_diag, fine_.count, diag_start_, diag_spring_);
+    children(to_edge, coarse_->first().edges.size(), edge_start_, edge_spring_);
   }
 
-  // Level 1 from the matrix's current spring blocks and diagonal, then the coarser levels.
+  // Level 1 from the matrix's current spring blocks and diagonal, then the coarser levels. Each
+  // coarse vertex and edge gathers its own sum (its vertices' mass and drag, then its springs,
+  // in index order): in parallel, and the same bits for any thread count.
   void refresh(const Model<T>& m, const NewtonMatrix<T>& matrix, T h, int threads) {
     CoarseLevel& first = coarse_->first();
-    coarse_->zero_first();
-    for (std::size_t i = 0; i < m.n; ++i) {
-      const int c = fine_.of[i];
-      if (c < 0) continue;
-      const double d = double(m.mass[i]) + double(h) * double(m.drag);
-      double* out = &first.diag[6 * std::size_t(c)];
-      out[0] += d, out[3] += d, out[5] += d;
-    }
-    for (std::size_t s = 0; s < fine_.edge_target.size(); ++s) {
-      const int t = fine_.edge_target[s];
-      if (t == kInside) continue;
-      const auto [alpha, ex, ey, ez] = matrix.spring_block(s);
-      const double block[6] = {
-          double(alpha) + double(ex) * ex, double(ex) * ey, double(ex) * ez,
-          double(alpha) + double(ey) * ey, double(ey) * ez, double(alpha) + double(ez) * ez};
-      double* out =
-          t >= 0 ? &first.edge_block[6 * std::size_t(t)] : &first.diag[6 * std::size_t(-2 - t)];
-      for (int c = 0; c < 6; ++c) out[c] += block[c];
-    }
+    for_each_block(first.n, threads, [&](std::size_t b, std::size_t e) {
+      for (std::size_t c = b; c < e; ++c) {
+        double sum[6] = {};
+        for (int k = fine_.child_start[c]; k < fine_.child_start[c + 1]; ++k) {
+          const auto i = std::size_t(fine_.child[std::size_t(k)]);
+          const double d = double(m.mass[i]) + double(h) * double(m.drag);
+          sum[0] += d, sum[3] += d, sum[5] += d;
+        }
+        add_springs(matrix, diag_start_, diag_spring_, c, sum);
+        std::copy_n(sum, 6, &first.diag[6 * c]);
+      }
+    });
+    for_each_block(first.edges.size(), threads, [&](std::size_t b, std::size_t e) {
+      for (std::size_t t = b; t < e; ++t) {
+        double sum[6] = {};
+        add_springs(matrix, edge_start_, edge_spring_, t, sum);
+        std::copy_n(sum, 6, &first.edge_block[6 * t]);
+      }
+    });
     coarse_->finish_refresh(threads);
   }
 
@@ -125,6 +136,17 @@ class MultigridPreconditioner {
   std::size_t levels() const { return 1 + coarse_->levels(); }
 
  private:
+  // sum += the blocks of group g's springs (CSR start / spring), in their order.
+  static void add_springs(const NewtonMatrix<T>& matrix, const std::vector<int>& start,
+                          const std::vector<int>& spring, std::size_t g, double* sum) {
+    for (int k = start[g]; k < start[g + 1]; ++k) {
+      const auto [alpha, ex, ey, ez] = matrix.spring_block(std::size_t(spring[std::size_t(k)]));
+      sum[0] += double(alpha) + double(ex) * ex, sum[1] += double(ex) * ey;
+      sum[2] += double(ex) * ez, sum[3] += double(alpha) + double(ey) * ey;
+      sum[4] += double(ey) * ez, sum[5] += double(alpha) + double(ez) * ez;
+    }
+  }
+
   // out = r - A z on vertex block blk = [b, e) (0 on pinned vertices).
   static void residual(const Model<T>& m, const NewtonMatrix<T>& matrix, T h, const Vec3Array<T>& r,
                        const Vec3Array<T>& z, Vec3Array<T>& out, std::size_t blk, std::size_t b,
@@ -150,6 +172,8 @@ class MultigridPreconditioner {
   CoarseMap fine_;
   std::unique_ptr<CoarseHierarchy> coarse_;
   std::vector<double> partials_;  // r.z and q.z per vertex block
+  // CSR: the fine springs summed into each level-1 vertex's diagonal and each level-1 edge.
+  std::vector<int> diag_start_, diag_spring_, edge_start_, edge_spring_;
 };
 
 }  // namespace clothlab

@@ -58,19 +58,6 @@ int aggregate_mesh(int offset, int count, const std::vector<std::vector<int>>& a
   return next - first;
 }
 
-// The CSR of `of`'s inverse: each aggregate's vertices in index order.
-void children(const std::vector<int>& of, std::size_t count, std::vector<int>& start,
-              std::vector<int>& child) {
-  start.assign(count + 1, 0);
-  for (int a : of)
-    if (a >= 0) ++start[std::size_t(a) + 1];
-  for (std::size_t k = 0; k < count; ++k) start[k + 1] += start[k];
-  child.assign(std::size_t(start[count]), 0);
-  std::vector<int> fill(start.begin(), start.end() - 1);
-  for (std::size_t v = 0; v < of.size(); ++v)
-    if (of[v] >= 0) child[std::size_t(fill[std::size_t(of[v])]++)] = int(v);
-}
-
 void allocate(CoarseLevel& level) {
   const std::size_t n = level.n;
   level.edge_block.assign(6 * level.edges.size(), 0.0);
@@ -126,6 +113,18 @@ void allocate(CoarseLevel& level) {
 }
 
 }  // namespace
+
+void children(const std::vector<int>& of, std::size_t count, std::vector<int>& start,
+              std::vector<int>& child) {
+  start.assign(count + 1, 0);
+  for (int a : of)
+    if (a >= 0) ++start[std::size_t(a) + 1];
+  for (std::size_t k = 0; k < count; ++k) start[k + 1] += start[k];
+  child.assign(std::size_t(start[count]), 0);
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (std::size_t v = 0; v < of.size(); ++v)
+    if (of[v] >= 0) child[std::size_t(fill[std::size_t(of[v])]++)] = int(v);
+}
 
 CoarseMap coarsen(std::size_t n, const std::vector<std::array<int, 2>>& edges,
                   const std::vector<char>& left_out, const std::vector<LevelGrid>& grids) {
@@ -210,11 +209,6 @@ CoarseHierarchy::CoarseHierarchy(const CoarseMap& fine) {
     ldlt_.compute(dense_);
     rhs_.setZero(Eigen::Index(3 * n));
   }
-}
-
-void CoarseHierarchy::zero_first() {
-  std::fill(first().diag.begin(), first().diag.end(), 0.0);
-  std::fill(first().edge_block.begin(), first().edge_block.end(), 0.0);
 }
 
 void CoarseHierarchy::finish_refresh(int threads) {

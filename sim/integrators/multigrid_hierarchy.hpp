@@ -80,6 +80,11 @@ struct CoarseMap {
   std::vector<int> child_start, child;    // per aggregate: its vertices (not the left-out ones)
 };
 
+// The CSR of `of`'s inverse: for each of `count` groups, the indices v with of[v] equal to it, in
+// index order (of[v] < 0: in none).
+void children(const std::vector<int>& of, std::size_t count, std::vector<int>& start,
+              std::vector<int>& child);
+
 CoarseMap coarsen(std::size_t n, const std::vector<std::array<int, 2>>& edges,
                   const std::vector<char>& left_out, const std::vector<LevelGrid>& grids);
 
@@ -94,10 +99,9 @@ class CoarseHierarchy {
   // From the finest level's coarse map (coarsen() of the springs and pinned vertices).
   explicit CoarseHierarchy(const CoarseMap& fine);
 
-  // Level 1, whose diag and edge_block the caller fills from the fine operator (in zeroed
-  // arrays: first() zeroes them) before finish_refresh().
+  // Level 1, whose diag and edge_block the caller fills from the fine operator before
+  // finish_refresh().
   CoarseLevel& first() { return levels_.front(); }
-  void zero_first();
   // The coarser levels' operators, every level's inverse diagonal and the coarsest factors.
   void finish_refresh(int threads);
   // first().x from first().b: the K-cycle (Krylov-accelerated: up to two flexible CG steps per
