@@ -78,7 +78,7 @@ int newton_iterations(const SolverSpec& spec) {
 
 // solver.linear_solver = "auto" starts with block Jacobi and takes multigrid, on grid and tube
 // cloths, for the rest of the run once a block-Jacobi solve needs more than this many iterations
-// (a large or stiff sheet): a K-cycle costs 5-14 block-Jacobi iterations (docs/solver.md,
+// (a large or stiff sheet): a K-cycle costs 6-12 block-Jacobi iterations (docs/solver.md,
 // "Multigrid preconditioner", has the measurements behind the number).
 constexpr int kMultigridAfter = 150;
 
