@@ -3,8 +3,8 @@
 // the finest level, the Newton matrix itself (newton_matrix.hpp: its matrix-free product and
 // block-Jacobi inverse), with the aggregation levels of multigrid_hierarchy.hpp below it solved
 // by their K-cycle. Block-Jacobi PCG's iterations grow with the grid's side (214 / 444 / 939 /
-// 1826 on the falling sheet from 16^2 to 128^2); these grow about 1.1x per doubling (40 / 46 /
-// 56 / 62; docs/solver.md, "Multigrid preconditioner").
+// 1826 on the falling sheet from 16^2 to 128^2); these grow about 1.1x per doubling (36 / 41 /
+// 49 / 53; docs/solver.md, "Multigrid preconditioner").
 //
 // Per Newton iteration refresh() sums the first coarse level from the fine springs' blocks (one
 // pass over vertices and springs, no product) and the hierarchy the rest. Per PCG iteration
