@@ -1,8 +1,9 @@
 // `clothlab bench --suite largestep`: the large-step methods at the display step 1/60 s on the
 // accuracy sheet (docs/design.md, "Accuracy benchmark scenes") at stiffness k0 = 1e3, 1e4 and
 // 1e5, against a double-precision RK4 run of the same sheet, next to symplectic Euler at its
-// own automatic step; and one 1/60 s step of vbd on a 256 x 256 sheet against the explicit step
-// there (issue 22's targets; docs/results.md "Large steps" has the measured tables).
+// own automatic step; one 1/60 s step of vbd on a 256 x 256 sheet against the explicit step
+// there (issue 22's targets); and the linear solves' iteration counts from 32 x 32 to 256 x 256
+// (issue 39's). docs/results.md "Large steps" has the measured tables.
 #include <algorithm>
 #include <cmath>
 #include <ostream>
@@ -169,6 +170,52 @@ Table frame_table(const SuiteOptions& o) {
   return t;
 }
 
+// PCG iterations a linear solve on the falling sheet (k0 = 1e3, 1/60 s, double): its linearised
+// backward-Euler steps 5-8 (the first ones, from a flat sheet at rest, are nearly uncoupled),
+// the same kind of system on every grid, with each preconditioner and tolerance. Issue 39's
+// target is the multigrid's count within 1.5x from 32^2 to 256^2 (docs/solver.md, "Multigrid
+// preconditioner"; tests/multigrid_test.cpp asserts the counts up to 128^2).
+double solve_iterations(int side, LinearSolver ls, double tolerance, int threads) {
+  Scene s = sheet(side, 1e3, {IntegratorKind::implicit_euler, false, 1, 0, 1}, threads);
+  s.solver.linear_solver = ls;
+  s.solver.cg_tolerance = tolerance;
+  s.solver.cg_max_iterations = 10000;
+  const auto solver = make_solver(s);
+  solver->step(4);
+  const long before = solver->solve_totals().iterations;
+  solver->step(4);
+  return double(solver->solve_totals().iterations - before) / 4.0;
+}
+
+Table solve_table(const SuiteOptions& o) {
+  Table t;
+  t.name = "solves";
+  t.title =
+      "PCG iterations a solve: the falling sheet's linearised steps 5-8 at 1/60 s, k0 = 1e3, "
+      "double, 2 threads";
+  t.columns = {"grid",
+               "multigrid to 1e-2",
+               "multigrid to 1e-6",
+               "x the smallest grid's (1e-6)",
+               "block Jacobi to 1e-2",
+               "block Jacobi to 1e-6"};
+  const std::vector<int> sides =
+      o.quick ? std::vector<int>{16, 32} : std::vector<int>{32, 64, 128, 256};
+  double first = 0.0;
+  for (int side : sides) {
+    double counts[4];
+    int k = 0;
+    for (LinearSolver ls : {LinearSolver::multigrid, LinearSolver::block_jacobi})
+      for (double tol : {1e-2, 1e-6}) counts[k++] = solve_iterations(side, ls, tol, 2);
+    if (first == 0.0) first = counts[1];
+    t.add({std::to_string(side) + "x" + std::to_string(side), fixed(counts[0], 2),
+           fixed(counts[1], 2), fixed(counts[1] / first, 2), fixed(counts[2], 2),
+           fixed(counts[3], 2)});
+    if (o.log) *o.log << "largestep: solves " << side << "^2 done\n";
+  }
+  return t;
+}
+
 struct Point {
   std::string label;
   double rms, cost;
@@ -268,8 +315,9 @@ std::vector<Table> large_step_suite(const SuiteOptions& o) {
                          "local_global at 1/60 s (their ladders stay); a 12x12 sheet instead of "
                          "32x32, t = 0.1 s instead of 0.5 s, the reference at dt 4e-5 s instead "
                          "of 1e-5 s, each ladder stopped after 0.2 s of wall time instead of "
-                         "20 s; the frame on 32x32 instead of 256x256");
-  return {data, ladder, summary, frame_table(o)};
+                         "20 s; the frame on 32x32 instead of 256x256; the solves on 16x16 and "
+                         "32x32 instead of 32x32 to 256x256");
+  return {data, ladder, summary, frame_table(o), solve_table(o)};
 }
 
 }  // namespace clothlab::bench
