@@ -5,7 +5,7 @@
 // Matrix-free: each spring's block B_s = h^2 Ks + h c d d^T = alpha I + e e^T (e = sqrt(beta) d,
 // beta >= 0; 4 numbers, the same at both ends) is computed once per Newton iteration in each
 // of the spring's two slots, from that end's side, in the pass that also sums the diagonal
-// blocks (on the 256^2 sheet a frame took 0.72x the time of a pass per spring whose blocks the
+// blocks (on the 256^2 sheet a frame took 0.7x the time of a pass per spring whose blocks the
 // slots then gathered, one thread), and the product (A u)_a = (m_a + h drag) u_a + sum_s B_s (u_a -
 // u_b) is gathered per vertex (no atomics: the same bits for any thread count; the differences u_a
 // - u_b keep it accurate in float where the h^2 k terms dwarf the mass). The neighbours are stored
