@@ -6,8 +6,8 @@
 // 1826 on the falling sheet from 16^2 to 128^2); these grow about 1.1x per doubling (36 / 41 /
 // 49 / 53; docs/solver.md, "Multigrid preconditioner").
 //
-// Per Newton iteration refresh() sums the first coarse level from the fine springs' blocks (one
-// pass over vertices and springs, no product) and the hierarchy the rest. Per PCG iteration
+// Per Newton iteration refresh() sums the first coarse level from the fine springs' blocks (each
+// coarse vertex and edge gathers its own, no product) and the hierarchy the rest. Per PCG iteration
 // apply(): z = omega P r (P the block-Jacobi inverse), the residual r - A z restricted to level
 // 1 (each aggregate's sum), the coarse K-cycle, its correction copied back to each aggregate's
 // vertices, and z += omega P (r - A z). Two products with A per cycle; pinned vertices stay 0.
@@ -42,8 +42,8 @@ class MultigridPreconditioner {
       if (t >= 0) to_edge[s] = t;
       if (t < kInside) to_diag[s] = -2 - t;
     }
-    children(to_diag, fine_.count, diag_start_, diag_spring_);
-    children(to_edge, coarse_->first().edges.size(), edge_start_, edge_spring_);
+    group_by(to_diag, fine_.count, diag_start_, diag_spring_);
+    group_by(to_edge, coarse_->first().edges.size(), edge_start_, edge_spring_);
   }
 
   // Level 1 from the matrix's current spring blocks and diagonal, then the coarser levels. Each

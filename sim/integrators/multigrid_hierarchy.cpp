@@ -114,7 +114,7 @@ void allocate(CoarseLevel& level) {
 
 }  // namespace
 
-void children(const std::vector<int>& of, std::size_t count, std::vector<int>& start,
+void group_by(const std::vector<int>& of, std::size_t count, std::vector<int>& start,
               std::vector<int>& child) {
   start.assign(count + 1, 0);
   for (int a : of)
@@ -170,7 +170,7 @@ CoarseMap coarsen(std::size_t n, const std::vector<std::array<int, 2>>& edges,
           int(std::lower_bound(map.edges.begin(), map.edges.end(), key) - map.edges.begin());
     }
   }
-  children(map.of, map.count, map.child_start, map.child);
+  group_by(map.of, map.count, map.child_start, map.child);
   return map;
 }
 

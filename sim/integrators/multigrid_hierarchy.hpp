@@ -82,7 +82,7 @@ struct CoarseMap {
 
 // The CSR of `of`'s inverse: for each of `count` groups, the indices v with of[v] equal to it, in
 // index order (of[v] < 0: in none).
-void children(const std::vector<int>& of, std::size_t count, std::vector<int>& start,
+void group_by(const std::vector<int>& of, std::size_t count, std::vector<int>& start,
               std::vector<int>& child);
 
 CoarseMap coarsen(std::size_t n, const std::vector<std::array<int, 2>>& edges,

@@ -48,7 +48,7 @@ class NewtonMatrix {
     ends_ = list.ends;
     const std::vector<std::int32_t> entry_spring = build_layout(ns);
     // Each entry's spring constants; an empty entry keeps 0 stiffness, 0 damping and 0 rest
-    // length, whose block is 0 (see slot_block).
+    // length, whose block is 0 (see slot_value).
     for (AlignedVector<T>* v : {&stiffness_, &rest_length_, &damping_})
       v->assign(entry_spring.size(), T(0));
     for (std::size_t at = 0; at < entry_spring.size(); ++at) {
@@ -190,7 +190,7 @@ class NewtonMatrix {
     return free_[i];
   }
 
-  // The springs in spring_list order and, after assemble(), each one's block B_s = alpha I +
+  // The springs in spring_list order and, after setup_block(), each one's block B_s = alpha I +
   // e e^T as (alpha, ex, ey, ez): what multigrid.hpp sums its coarse operators from.
   std::size_t spring_count() const {
     return ends_.size();
@@ -263,9 +263,16 @@ class NewtonMatrix {
                         *__restrict vzo = s.vel.z.data() + o;
     const T *__restrict ks = stiffness_.data() + at, *__restrict rest = rest_length_.data() + at,
                         *__restrict c = damping_.data() + at;
-    T* __restrict al = alpha_.data() + at, * __restrict ex = ex_.data() + at, * __restrict ey = ey_.data() + at, * __restrict ez = ez_.data() + at;
-    T* __restrict pc = precond_.data() + lo;
-    T* __restrict p0 = pc, * __restrict p1 = pc + n, * __restrict p2 = pc + 2 * n, * __restrict p3 = pc + 3 * n, * __restrict p4 = pc + 4 * n, * __restrict p5 = pc + 5 * n;
+    T* __restrict al = alpha_.data() + at;
+    T* __restrict ex = ex_.data() + at;
+    T* __restrict ey = ey_.data() + at;
+    T* __restrict ez = ez_.data() + at;
+    T* __restrict p0 = precond_.data() + lo;  // the diagonal blocks' six components
+    T* __restrict p1 = p0 + n;
+    T* __restrict p2 = p0 + 2 * n;
+    T* __restrict p3 = p0 + 3 * n;
+    T* __restrict p4 = p0 + 4 * n;
+    T* __restrict p5 = p0 + 5 * n;
     T *__restrict bx = rhs.x.data() + lo, *__restrict by = rhs.y.data() + lo,
                   *__restrict bz = rhs.z.data() + lo;
 #pragma omp simd
