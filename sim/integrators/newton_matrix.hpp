@@ -84,9 +84,8 @@ class NewtonMatrix {
     for (std::size_t k = 0; k < l.slots; ++k) {
       const std::size_t row = l.entry + k * len;  // entry of vertex i: row + (i - b)
       if (l.diagonal) {
+        // Entries outside [lo, hi) have no neighbour: they keep the zeros of construction.
         const auto [lo, hi] = diagonal_range(l, k, b, e);
-        for (std::size_t i = b; i < e; ++i)
-          if (i < lo || i >= hi) clear_slot(row + (i - b));
         if (first)
           diagonal_slots<true>(s, h, rhs, row, shifts_[l.shift + k], b, lo, hi);
         else
@@ -214,10 +213,6 @@ class NewtonMatrix {
     const auto lo = std::max<std::ptrdiff_t>(std::ptrdiff_t(b), -shift);
     const auto hi = std::min<std::ptrdiff_t>(std::ptrdiff_t(e), n - shift);
     return {static_cast<std::size_t>(lo), static_cast<std::size_t>(std::max(lo, hi))};
-  }
-
-  void clear_slot(std::size_t at) {
-    alpha_[at] = ex_[at] = ey_[at] = ez_[at] = T(0);
   }
 
   // One slot's spring, seen from vertex i towards its neighbour o at offset (dx, dy, dz) with
