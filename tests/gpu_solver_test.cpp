@@ -360,11 +360,8 @@ TEST(GpuSolverRender, DrawsAndProbesTheGpuStateAsTheCpus) {
   const std::vector<std::uint8_t> rest = test::render_frame(renderer, gpu, view);
   ASSERT_TRUE(gpu.step(300).ok());
   cpu.load_state(gpu);
-  const std::vector<std::uint8_t> from_gpu = test::render_frame(renderer, gpu, view);
-  renderer.set_cloth(cpu);
-  const std::vector<std::uint8_t> from_cpu = test::render_frame(renderer, cpu, view);
-  ASSERT_EQ(from_gpu.size(), from_cpu.size());
-  const auto [worst, moved] = test::compare_frames(from_gpu, from_cpu, rest);
+  const auto [same_size, worst, moved] = test::compare_with_cpu(renderer, gpu, cpu, view, rest);
+  ASSERT_TRUE(same_size);
   std::printf(
       "GPU-drawn against CPU-drawn frame: largest channel difference %d; %ld channels "
       "differ from the rest frame\n",

@@ -276,11 +276,8 @@ TEST(TfClothRender, DrawsTheCapturedBufferAsTheCpuDrawsItsState) {
   const std::vector<std::uint8_t> rest = test::render_frame(renderer, *tf, view);
   ASSERT_TRUE(tf->step(300).ok());
   cpu->load_state(*tf);
-  const std::vector<std::uint8_t> from_tf = test::render_frame(renderer, *tf, view);
-  renderer.set_cloth(*cpu);
-  const std::vector<std::uint8_t> from_cpu = test::render_frame(renderer, *cpu, view);
-  ASSERT_EQ(from_tf.size(), from_cpu.size());
-  const auto [worst, moved] = test::compare_frames(from_tf, from_cpu, rest);
+  const auto [same_size, worst, moved] = test::compare_with_cpu(renderer, *tf, *cpu, view, rest);
+  ASSERT_TRUE(same_size);
   std::printf(
       "transform-feedback-drawn against CPU-drawn frame (2 copies): largest channel "
       "difference %d; %ld channels differ from the rest frame\n",
