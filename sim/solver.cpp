@@ -8,6 +8,7 @@
 
 #include "sim/body/body_motion.hpp"
 #include "sim/core/parallel.hpp"
+#include "sim/core/vec3_eigen.hpp"
 #include "sim/integrators/coarse_stretch.hpp"
 #include "sim/integrators/tethers.hpp"
 #include "sim/model/model_check.hpp"
@@ -19,10 +20,13 @@ namespace {
 
 // solver.threads = 0 ("auto"): one thread below kParallelMinVertices, where a second thread's
 // wake-up and barriers cost more than it computes (docs/results.md, "Threads"), else all cores
-// OpenMP offers. An explicit count is used as given.
-int resolve_threads(int requested, std::size_t vertices) {
+// OpenMP offers; with triangle contact from kParallelMinContactVertices on, whose broad and narrow
+// phases pay for a second thread on far smaller cloths (docs/contact.md section 7). An explicit
+// count is used as given.
+int resolve_threads(int requested, std::size_t vertices, bool cloth_contact) {
   if (requested > 0) return requested;
-  return vertices < kParallelMinVertices ? 1 : omp_get_max_threads();
+  const std::size_t least = cloth_contact ? kParallelMinContactVertices : kParallelMinVertices;
+  return vertices < least ? 1 : omp_get_max_threads();
 }
 
 template <class T>
@@ -105,7 +109,7 @@ SolverT<T>::SolverT(const Scene& scene, SpringKernel kernel)
       spec_(checked(limit_substep_for_body(scene, resolve_step(model_, scene.solver)), scene)),
       dt_(spec_.dt),
       substeps_(spec_.substeps),
-      threads_(resolve_threads(scene.solver.threads, model_.n)),
+      threads_(resolve_threads(scene.solver.threads, model_.n, scene.solver.cloth_contact)),
       integrator_(make_integrator<T>(model_, spec_)),
       monitor_(model_, state_, initial_energy(model_)) {
   workspace_.resize(model_);
@@ -117,6 +121,8 @@ SolverT<T>::SolverT(const Scene& scene, SpringKernel kernel)
   if (!scene.colliders.empty())
     contacts_ = std::make_unique<ContactResponse<T>>(scene.colliders, model_);
   if (spec_.self_collision) self_ = std::make_unique<SelfCollision<T>>(model_, spec_);
+  check_contact_thickness(model_, scene);
+  if (spec_.cloth_contact) cloth_contact_ = std::make_unique<TriangleContact<T>>(model_, spec_);
   const bool pins_move = std::any_of(scene.cloths.begin(), scene.cloths.end(),
                                      [](const ClothSpec& c) { return c.pins_follow.has_value(); });
   if (pins_move) moving_pins_ = std::make_unique<KinematicPins<T>>(scene, model_);
@@ -167,6 +173,10 @@ AdvanceResult SolverT<T>::step(long count) {
         moving_pins_->drive(model_, state_, t, h);
         mirror_written();
       }
+      if (cloth_contact_) {
+        sync_state();
+        cloth_contact_->begin(state_);
+      }
       record(integrate(sys, t, h));
       if (moving_pins_) {
         sync_state();
@@ -187,6 +197,11 @@ AdvanceResult SolverT<T>::step(long count) {
         sync_state();
         if (self_->respond(model_, state_, h)) corrected = true;
       }
+      // Last: the fail-safe's guarantee holds for the positions it leaves.
+      if (cloth_contact_) {
+        sync_state();
+        if (cloth_contact_->respond(model_, state_, h, threads_)) corrected = true;
+      }
       if (corrected) state_corrected();
     }
     ++steps_;
@@ -200,6 +215,18 @@ AdvanceResult SolverT<T>::step(long count) {
     }
   }
   return result;
+}
+
+template <class T>
+long SolverT<T>::intersections() const {
+  sync_state();
+  std::vector<Eigen::Vector3d> rest(model_.n), now(model_.n);
+  for (std::size_t i = 0; i < model_.n; ++i) {
+    rest[i] = load3(model_.rest_positions, i);
+    now[i] = load3(state_.pos, i);
+  }
+  if (!counter_) counter_ = std::make_unique<IntersectionCounter>(model_.triangles, rest);
+  return counter_->count(now);
 }
 
 template <class T>
@@ -376,7 +403,7 @@ void SolverT<T>::copy_normals(float* xyz) {
 
 template <class T>
 void SolverT<T>::set_threads(int threads) {
-  threads_ = resolve_threads(threads, model_.n);
+  threads_ = resolve_threads(threads, model_.n, spec_.cloth_contact);
 }
 
 template <class T>

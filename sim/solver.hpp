@@ -103,6 +103,10 @@ class SolverState {
   virtual ContactStats last_contacts() const = 0;
   // Self-collision's last step; none without solver.self_collision.
   virtual std::optional<SelfCollisionStats> last_self_collision() const = 0;
+  // Triangle contact's last substep; none without solver.cloth_contact.
+  virtual std::optional<ClothContactStats> last_cloth_contact() const = 0;
+  // Crossing (edge, triangle) pairs of the cloth surfaces now (sim/contact/intersections.hpp).
+  virtual long intersections() const = 0;
   // Where the state lives in device buffers (the GPU backend): the renderer draws from them.
   // Null on the CPU.
   virtual DeviceCloth* device_cloth() const = 0;

@@ -9,8 +9,10 @@
 #include <vector>
 
 #include "sim/contact/contact_response.hpp"
+#include "sim/contact/intersections.hpp"
 #include "sim/contact/kinematic_pins.hpp"
 #include "sim/contact/self_collision.hpp"
+#include "sim/contact/triangle_contact.hpp"
 #include "sim/solver.hpp"
 #include "sim/step_backend.hpp"
 
@@ -94,6 +96,10 @@ class SolverT : public Solver {
   std::optional<SelfCollisionStats> last_self_collision() const override {
     return self_ ? std::optional<SelfCollisionStats>(self_->last()) : std::nullopt;
   }
+  std::optional<ClothContactStats> last_cloth_contact() const override {
+    return cloth_contact_ ? std::optional<ClothContactStats>(cloth_contact_->last()) : std::nullopt;
+  }
+  long intersections() const override;
   DeviceCloth* device_cloth() const override {
     return backend_ ? backend_->device_cloth() : nullptr;
   }
@@ -157,9 +163,12 @@ class SolverT : public Solver {
   double pending_ = 0.0;  // s of requested time not yet stepped (less than one dt)
   int threads_ = 1;
   std::unique_ptr<Integrator<T>> integrator_;
-  std::unique_ptr<StepBackend<T>> backend_;        // null: the integrator runs here, on state_
-  std::unique_ptr<ContactResponse<T>> contacts_;   // only with colliders
-  std::unique_ptr<SelfCollision<T>> self_;         // only with solver.self_collision
+  std::unique_ptr<StepBackend<T>> backend_;            // null: the integrator runs here, on state_
+  std::unique_ptr<ContactResponse<T>> contacts_;       // only with colliders
+  std::unique_ptr<SelfCollision<T>> self_;             // only with solver.self_collision
+  std::unique_ptr<TriangleContact<T>> cloth_contact_;  // only with solver.cloth_contact
+  // Built by the first intersections() call (a scene that never counts pays nothing).
+  mutable std::unique_ptr<IntersectionCounter> counter_;
   std::unique_ptr<KinematicPins<T>> moving_pins_;  // only with cloth.pins_follow
   std::vector<std::optional<double>> release_at_;  // per cloth, s; reset when it happened
   std::vector<std::optional<double>> built_release_at_;

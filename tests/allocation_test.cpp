@@ -1,6 +1,6 @@
 // The step loop allocates nothing: global operator new is counted across many steps of every
 // integrator, with every force (springs with damping, drag, gusty wind) on and two threads, and
-// with self-collision on.
+// with self-collision and triangle contact on.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -109,6 +109,20 @@ TEST(StepLoop, SelfCollisionAllocatesNothingInFloat) {
 }
 TEST(StepLoop, SelfCollisionAllocatesNothingInDouble) {
   expect_no_allocation_with_self_collision<double>();
+}
+
+// Triangle contact on the landed pile (scenes/pile.toml, 2 threads): its pair lists grow only
+// when a tangle outgrows the largest they have held, so once the sheet lies in its folds a
+// second of steps allocates nothing.
+TEST(StepLoop, ClothContactAllocatesNothingOnceLanded) {
+  const Scene scene =
+      read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/pile.toml", {"solver.threads=2"});
+  const auto s = make_solver(scene);
+  ASSERT_TRUE(s->advance(4.0).ok());
+  const long before = g_allocations.load();
+  ASSERT_TRUE(s->advance(1.0).ok());
+  EXPECT_EQ(g_allocations.load() - before, 0) << "allocations in the step loop";
+  EXPECT_GT(s->last_cloth_contact()->candidates, 1000);
 }
 
 // A mesh cloth (the shipped round cloth, scaled to 0.24 m) falling across a thin rod: the

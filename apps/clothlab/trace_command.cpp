@@ -128,6 +128,17 @@ void print_summary(const TraceArgs& args, const Scene& scene, const Solver& solv
       backend_name(solver), solver.threads(), openmp_wait_policy().c_str(), solver.vertex_count(),
       r.final_energy.total(), r.final_energy.kinetic, r.final_energy.elastic,
       r.final_energy.gravity, args.out.c_str(), r.written_steps);
+  // Cloth through cloth at the end (sim/contact/intersections.hpp), and what triangle contact did
+  // in the last substep when it is on.
+  std::printf("contact: %ld crossing edge/triangle pairs at the end", solver.intersections());
+  if (const auto c = solver.last_cloth_contact())
+    std::printf(
+        "; cloth contact in the last substep: %d candidate pairs, %d pushed apart, %d "
+        "vertices rolled back",
+        c->candidates, c->contacts, c->rolled_back);
+  if (const auto c = solver.last_cloth_contact(); c && c->overflow)
+    std::printf(" (a tangle beyond the pair bound: the substep was undone)");
+  std::printf("\n");
   const SolveTotals& t = solver.solve_totals();
   if (t.iterations > 0) {
     std::printf("solver: %.3g iterations per substep (max %d)",

@@ -23,13 +23,16 @@ std::vector<Table> stability_suite(const SuiteOptions& options);
 std::vector<Table> large_step_suite(const SuiteOptions& options);
 std::vector<Table> scaling_suite(const SuiteOptions& options);
 std::vector<Table> features_suite(const SuiteOptions& options);
+// Cloth against cloth: crossing pairs and the cost of triangle contact on the stress scenes.
+std::vector<Table> contact_suite(const SuiteOptions& options);
 // Needs EGL / OpenGL 4.5 (throws vis::GlUnavailable without): headless rendering.
 std::vector<Table> views_suite(const SuiteOptions& options);
 std::vector<Table> rendering_suite(const SuiteOptions& options);
 // Needs EGL / OpenGL 4.3 compute: the CPU solver against the GPU compute backend.
 std::vector<Table> backends_suite(const SuiteOptions& options);
 
-inline constexpr const char* kSuiteNames[] = {"accuracy", "largestep", "stability", "scaling",
-                                              "features", "views",     "rendering", "backends"};
+inline constexpr const char* kSuiteNames[] = {"accuracy", "largestep", "stability",
+                                              "scaling",  "features",  "contact",
+                                              "views",    "rendering", "backends"};
 
 }  // namespace clothlab::bench

@@ -269,6 +269,10 @@ void bind_simulation(py::module_& m) {
            "(per spring, per vertex): engineering strain (l - l0) / l0 of each spring, in "
            "`springs` order, and its mean over the springs at each vertex")
       .def("energy", &Simulation::energy, "kinetic, elastic, gravity and total (J)")
+      .def(
+          "intersections", [](const Simulation& s) { return s.solver().intersections(); },
+          "Crossing (edge, triangle) pairs of the cloth surfaces now: edges that pass through a "
+          "triangle they share no vertex with (0 when no cloth passes through cloth).")
       .def("push", &Simulation::push, py::arg("impulse"), py::arg("center") = py::none(),
            py::arg("radius") = py::none(), "A push like the window's P (impulse in N s).")
       .def("drop", &Simulation::drop, "Lets go of every pin, like the window's D.")

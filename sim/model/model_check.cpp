@@ -105,6 +105,27 @@ void check_built_forces(const Vec3Array<T>& f, const Model<T>& m, const Scene& s
       }
 }
 
+template <class T>
+void check_contact_thickness(const Model<T>& m, const Scene& scene) {
+  if (!scene.solver.cloth_contact || m.triangles.empty()) return;
+  double sum = 0.0;
+  for (const auto& t : m.triangles)
+    for (std::size_t k = 0; k < 3; ++k) {
+      const auto a = std::size_t(t[k]), b = std::size_t(t[(k + 1) % 3]);
+      sum += std::sqrt(std::pow(double(m.rest_positions.x[a] - m.rest_positions.x[b]), 2) +
+                       std::pow(double(m.rest_positions.y[a] - m.rest_positions.y[b]), 2) +
+                       std::pow(double(m.rest_positions.z[a] - m.rest_positions.z[b]), 2));
+    }
+  const double mean = sum / double(3 * m.triangles.size());
+  if (scene.solver.self_thickness <= mean) return;
+  const std::string key =
+      section_path(Section::solver) + "." + std::string(key_of<&SolverSpec::self_thickness>());
+  fail(scene, key,
+       "with cloth_contact the thickness (" + format_number(scene.solver.self_thickness) +
+           " m) must be at most the cloths' mean edge at rest (" + format_number(mean) +
+           " m): refine the cloth or thin the layers");
+}
+
 void check_step(double dt, int substeps, const Scene& scene) {
   const std::string key =
       section_path(Section::solver) + "." + std::string(key_of<&SolverSpec::dt>());
@@ -119,6 +140,8 @@ void check_step(double dt, int substeps, const Scene& scene) {
 
 template void check_built_model<float>(const Model<float>&, const Scene&, double);
 template void check_built_model<double>(const Model<double>&, const Scene&, double);
+template void check_contact_thickness<float>(const Model<float>&, const Scene&);
+template void check_contact_thickness<double>(const Model<double>&, const Scene&);
 template void check_built_forces<float>(const Vec3Array<float>&, const Model<float>&, const Scene&);
 template void check_built_forces<double>(const Vec3Array<double>&, const Model<double>&,
                                          const Scene&);

@@ -20,6 +20,12 @@ void check_built_model(const Model<T>& m, const Scene& scene, double energy);
 template <class T>
 void check_built_forces(const Vec3Array<T>& f, const Model<T>& m, const Scene& scene);
 
+// Throws SceneError (at solver.self_thickness) when triangle contact is on and the thickness is
+// more than the cloths' mean rest edge: every neighbour within a few rings would be a contact
+// pair, and a fuzzed 2e9 m made every pair of the cloth one.
+template <class T>
+void check_contact_thickness(const Model<T>& m, const Scene& scene);
+
 // Throws SceneError (at solver.dt) when the step the solver will take is not a positive, finite
 // number of seconds (an automatic step that came out 0 for drag = 1e38).
 void check_step(double dt, int substeps, const Scene& scene);

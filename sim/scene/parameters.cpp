@@ -387,6 +387,11 @@ std::vector<Parameter> solver_more() {
           {.name = "self_collision",
            .fallback = "false",
            .description = "the cloth keeps its layers self_thickness apart"}),
+      row<&SolverSpec::cloth_contact>(
+          {.name = "cloth_contact",
+           .fallback = "false",
+           .description = "triangles of every cloth keep self_thickness apart and never pass "
+                          "through each other"}),
       row<&SolverSpec::self_thickness>({.name = "self_thickness",
                                         .range = kPositive,
                                         .unit = "m",

@@ -136,6 +136,9 @@ struct SolverSpec {
   int threads = 0;                // 0 = auto (sim/core/parallel.hpp)
   bool self_collision = false;    // the cloth keeps its layers apart (sim/contact/self_collision)
   double self_thickness = 0.005;  // m: how far apart two layers stay
+  // Triangle contact within and between cloths with the no-crossing fail-safe
+  // (sim/contact/triangle_contact.hpp), at self_thickness.
+  bool cloth_contact = false;
   Precision precision = Precision::f32;
   // Where the cloth step runs: gpu asks for the OpenGL compute backend (gpu/backend_solver.hpp),
   // which only a program with a GL context can give; everything else steps on the CPU.

@@ -1,0 +1,79 @@
+#include "sim/contact/triangle_bvh.hpp"
+
+#include <algorithm>
+
+namespace clothlab {
+
+TriangleBvh::TriangleBvh(const std::vector<Eigen::Vector3d>& centroids) {
+  const std::size_t count = centroids.size();
+  leaf_boxes_.assign(count, Box3{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
+  if (count == 0) return;
+  nodes_.reserve(2 * count - 1);
+  std::vector<int> order(count);
+  for (std::size_t t = 0; t < count; ++t) order[t] = int(t);
+  build(order, 0, count, centroids);
+}
+
+// Median split along the widest axis of the centroids' box; ties broken by triangle index, so the
+// tree depends on nothing but the rest shape.
+int TriangleBvh::build(std::vector<int>& order, std::size_t begin, std::size_t end,
+                       const std::vector<Eigen::Vector3d>& centroids) {
+  const int index = int(nodes_.size());
+  nodes_.push_back(Node{});
+  if (end - begin == 1) {
+    nodes_.back().triangle = order[begin];
+    return index;
+  }
+  Eigen::Vector3d lo = centroids[std::size_t(order[begin])], hi = lo;
+  for (std::size_t k = begin + 1; k < end; ++k) {
+    lo = lo.cwiseMin(centroids[std::size_t(order[k])]);
+    hi = hi.cwiseMax(centroids[std::size_t(order[k])]);
+  }
+  int axis = 0;
+  (hi - lo).maxCoeff(&axis);
+  const std::size_t mid = begin + (end - begin) / 2;
+  std::nth_element(order.begin() + long(begin), order.begin() + long(mid),
+                   order.begin() + long(end), [&](int a, int b) {
+                     const double ca = centroids[std::size_t(a)][axis];
+                     const double cb = centroids[std::size_t(b)][axis];
+                     return ca < cb || (ca == cb && a < b);
+                   });
+  const int left = build(order, begin, mid, centroids);
+  const int right = build(order, mid, end, centroids);
+  nodes_[std::size_t(index)].left = left;
+  nodes_[std::size_t(index)].right = right;
+  return index;
+}
+
+std::vector<TriangleBvh::Task> TriangleBvh::tasks(int depth) const {
+  std::vector<Task> out;
+  if (!nodes_.empty()) split(0, depth, out);
+  return out;
+}
+
+// self(n) = self(left), self(right), pair(left, right), unrolled `depth` levels.
+void TriangleBvh::split(int n, int depth, std::vector<Task>& out) const {
+  const Node& node = nodes_[std::size_t(n)];
+  if (depth == 0 || node.left < 0) {
+    out.push_back({n, n});
+    return;
+  }
+  split(node.left, depth - 1, out);
+  split(node.right, depth - 1, out);
+  out.push_back({node.left, node.right});
+}
+
+void TriangleBvh::refit() {
+  for (std::size_t k = nodes_.size(); k-- > 0;) {
+    Node& node = nodes_[k];
+    if (node.left < 0) {
+      node.box = leaf_boxes_[std::size_t(node.triangle)];
+    } else {
+      const Box3& a = nodes_[std::size_t(node.left)].box;
+      const Box3& b = nodes_[std::size_t(node.right)].box;
+      node.box = {a.lo.cwiseMin(b.lo), a.hi.cwiseMax(b.hi)};
+    }
+  }
+}
+
+}  // namespace clothlab

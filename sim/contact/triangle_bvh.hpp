@@ -1,0 +1,97 @@
+// A bounding-volume hierarchy over a cloth's triangles for contact's broad phase (docs/contact.md
+// section 7). Built once from the rest shape (median splits of the triangles' centroids along the
+// widest axis), so each node is a patch of material; each substep refits the boxes bottom-up from
+// the current (swept, padded) triangle boxes. A patch's box is bounded by its material size
+// however the cloth folds, which is why a refitted material-space tree stays useful (the classic
+// cloth choice: Volino & Magnenat-Thalmann 1994; Bridson et al. 2002 section 5).
+// The self traversal (a node against itself: its two children each against themselves and
+// against each other) reports every unordered pair of distinct triangles whose boxes meet, in an
+// order fixed by the tree, so results do not depend on the thread count; the callback returns
+// false to stop it.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "sim/core/parallel.hpp"
+
+namespace clothlab {
+
+struct Box3 {
+  Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();
+  bool overlaps(const Box3& o) const {
+    return lo.x() <= o.hi.x() && o.lo.x() <= hi.x() && lo.y() <= o.hi.y() && o.lo.y() <= hi.y() &&
+           lo.z() <= o.hi.z() && o.lo.z() <= hi.z();
+  }
+  double half_area() const {
+    const Eigen::Vector3d d = hi - lo;
+    return d.x() * d.y() + d.y() * d.z() + d.z() * d.x();
+  }
+};
+
+class TriangleBvh {
+ public:
+  TriangleBvh() = default;
+  // centroids: one per triangle, in the shape the hierarchy is cut from.
+  explicit TriangleBvh(const std::vector<Eigen::Vector3d>& centroids);
+
+  std::size_t triangle_count() const { return leaf_boxes_.size(); }
+  // The leaf boxes to fill before refit(): box(t) for triangle t.
+  std::vector<Box3>& leaf_boxes() { return leaf_boxes_; }
+  // Every inner node's box as the union of its children's (children come after their parent).
+  void refit();
+  const Box3& root_box() const { return nodes_.front().box; }
+
+  // fn(ta, tb) for every pair of distinct triangles whose boxes meet, each once, until fn
+  // returns false. Returns false when stopped.
+  template <class Fn>
+  bool self_pairs(Fn&& fn) const {
+    return nodes_.empty() || self(0, fn);
+  }
+
+  // The same traversal cut into independent pieces for threads: the nodes `depth` levels down
+  // each against themselves, and the pairs of siblings above them against each other. Run in
+  // the listed order, the pieces report the pairs in the order self_pairs does.
+  struct Task {
+    int a = 0, b = 0;  // a == b: node a against itself
+  };
+  std::vector<Task> tasks(int depth) const;
+  template <class Fn>
+  bool run(const Task& t, Fn&& fn) const {
+    return t.a == t.b ? self(t.a, fn) : pair(t.a, t.b, fn);
+  }
+
+ private:
+  struct Node {
+    Box3 box;
+    int left = -1, right = -1;  // children; -1 for a leaf
+    int triangle = -1;          // the leaf's triangle
+  };
+  void split(int n, int depth, std::vector<Task>& out) const;
+  int build(std::vector<int>& order, std::size_t begin, std::size_t end,
+            const std::vector<Eigen::Vector3d>& centroids);
+
+  template <class Fn>
+  bool self(int n, Fn& fn) const {
+    const Node& node = nodes_[std::size_t(n)];
+    if (node.left < 0) return true;
+    return self(node.left, fn) && self(node.right, fn) && pair(node.left, node.right, fn);
+  }
+  template <class Fn>
+  bool pair(int a, int b, Fn& fn) const {
+    const Node& na = nodes_[std::size_t(a)];
+    const Node& nb = nodes_[std::size_t(b)];
+    if (!na.box.overlaps(nb.box)) return true;
+    const bool leaf_a = na.left < 0, leaf_b = nb.left < 0;
+    if (leaf_a && leaf_b) return fn(na.triangle, nb.triangle);
+    if (leaf_a || (!leaf_b && nb.box.half_area() > na.box.half_area()))
+      return pair(a, nb.left, fn) && pair(a, nb.right, fn);
+    return pair(na.left, b, fn) && pair(na.right, b, fn);
+  }
+
+  std::vector<Node> nodes_;  // pre-order: the root first, a parent before its children
+  std::vector<Box3> leaf_boxes_;
+};
+
+}  // namespace clothlab

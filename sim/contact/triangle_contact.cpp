@@ -1,0 +1,452 @@
+#include "sim/contact/triangle_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sim/contact/ccd.hpp"
+#include "sim/contact/intersections.hpp"
+#include "sim/contact/primitive_distance.hpp"
+#include "sim/core/parallel.hpp"
+#include "sim/core/vec3_eigen.hpp"
+
+namespace clothlab {
+namespace {
+
+using V3 = Eigen::Vector3d;
+
+template <class T>
+std::vector<V3> rest_points(const Model<T>& m) {
+  std::vector<V3> x(m.n);
+  for (std::size_t i = 0; i < m.n; ++i) x[i] = load3(m.rest_positions, i);
+  return x;
+}
+
+template <class T>
+std::array<V3, 4> gather(const Vec3Array<T>& a, const std::array<std::int32_t, 4>& v) {
+  return {load3(a, std::size_t(v[0])), load3(a, std::size_t(v[1])), load3(a, std::size_t(v[2])),
+          load3(a, std::size_t(v[3]))};
+}
+
+// The pair's closest points at x as weights on its four vertices: the relative position
+// sum_k w_k x_k points from the triangle (or edge q) to the point (or edge p).
+std::array<double, 4> closest_weights(bool edge_edge, const std::array<V3, 4>& x) {
+  if (edge_edge) {
+    const EdgeEdgeClosest c = closest_edge_edge(x[0], x[1], x[2], x[3]);
+    return {1.0 - c.s, c.s, -(1.0 - c.t), -c.t};
+  }
+  const PointTriangleClosest c = closest_point_triangle(x[0], x[1], x[2], x[3]);
+  return {1.0, -c.w[0], -c.w[1], -c.w[2]};
+}
+
+V3 combine(const std::array<double, 4>& w, const std::array<V3, 4>& x) {
+  return w[0] * x[0] + w[1] * x[1] + w[2] * x[2] + w[3] * x[3];
+}
+
+// The box around the swept boxes of some vertices.
+template <class Box, std::size_t N>
+Box unite(const std::vector<Box>& swept, const std::array<int, N>& vertices) {
+  Box b = swept[std::size_t(vertices[0])];
+  for (std::size_t k = 1; k < N; ++k) {
+    const Box& o = swept[std::size_t(vertices[k])];
+    for (std::size_t a = 0; a < 3; ++a) {
+      b.lo[a] = std::min(b.lo[a], o.lo[a]);
+      b.hi[a] = std::max(b.hi[a], o.hi[a]);
+    }
+  }
+  return b;
+}
+
+// Whether two boxes come within `gap` of each other along every axis.
+template <class Box>
+bool near(const Box& a, const Box& b, float gap) {
+  for (std::size_t k = 0; k < 3; ++k)
+    if (a.lo[k] > b.hi[k] + gap || b.lo[k] > a.hi[k] + gap) return false;
+  return true;
+}
+
+// Whether the pair's points at x lie within d of each other's box along every axis: the
+// point's (or edge p's) box against the triangle's (or edge q's).
+bool boxes_within(bool edge_edge, const std::array<V3, 4>& x, double d) {
+  const V3 lo_p = edge_edge ? V3(x[0].cwiseMin(x[1])) : x[0];
+  const V3 hi_p = edge_edge ? V3(x[0].cwiseMax(x[1])) : x[0];
+  V3 lo_q = x[3], hi_q = x[3];
+  for (std::size_t k = edge_edge ? 2 : 1; k < 3; ++k) {
+    lo_q = lo_q.cwiseMin(x[k]);
+    hi_q = hi_q.cwiseMax(x[k]);
+  }
+  return (lo_p.array() <= hi_q.array() + d).all() && (lo_q.array() <= hi_p.array() + d).all();
+}
+
+}  // namespace
+
+template <class T>
+TriangleContact<T>::TriangleContact(const Model<T>& m, const SolverSpec& spec)
+    : thickness_(spec.self_thickness),
+      eta_(0.01 * spec.self_thickness),
+      features_(surface_features(m.triangles, m.n)),
+      bvh_(triangle_centroids(m.triangles, rest_points(m))) {
+  cloth_of_.assign(m.n, 0);
+  for (std::size_t c = 0; c < m.cloths.size(); ++c)
+    std::fill_n(cloth_of_.begin() + m.cloths[c].offset,
+                std::size_t(m.cloths[c].nu) * std::size_t(m.cloths[c].nv), std::int32_t(c));
+  x0_.resize(m.n);
+  x_step_.resize(m.n);
+  gap_ = float(thickness_);
+  reach_.assign(m.n, SweptBox{});
+  radius_.assign(m.n, 0.0f);
+  triangle_box_.assign(features_.triangles.size(), SweptBox{});
+  edge_box_.assign(features_.edges.size(), SweptBox{});
+  tasks_ = bvh_.tasks(kTaskDepth);
+  task_pairs_.resize(tasks_.size());
+  task_done_.assign(tasks_.size(), 1);
+  for (auto& part : task_pairs_) part.reserve(pairs_.capacity() / tasks_.size() + 64);
+  flag_.reserve(pairs_.capacity());
+  pairs_.reserve(kPairsPerTriangle * m.triangles.size());
+  returned_round_.assign(m.n, 0);
+  returned_.reserve(m.n);
+}
+
+template <class T>
+void TriangleContact<T>::begin(const State<T>& s) {
+  x0_ = s.pos;  // same size: copies without allocating
+  // Something moved the cloth between substeps (a reset, a state set from outside).
+  if (!stale_ && !inside_reach(x0_)) stale_ = true;
+}
+
+template <class T>
+bool TriangleContact<T>::inside_reach(const Vec3Array<T>& x) const {
+  for (std::size_t i = 0; i < reach_.size(); ++i) {
+    const SweptBox& b = reach_[i];
+    const float px = float(x.x[i]), py = float(x.y[i]), pz = float(x.z[i]);
+    if (!(px >= b.lo[0] && px <= b.hi[0] && py >= b.lo[1] && py <= b.hi[1] && pz >= b.lo[2] &&
+          pz <= b.hi[2]))
+      return false;
+  }
+  return true;
+}
+
+// Each vertex's box (swept over the substep, widened by the skin) and how far the vertex can move
+// inside it; each triangle's and edge's box around its vertices' boxes.
+template <class T>
+void TriangleContact<T>::sweep_boxes(const State<T>& s, int threads) {
+  const double skin = kSkin * thickness_;
+  for_each_block(reach_.size(), threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const std::array<T, 3> a{x0_.x[i], x0_.y[i], x0_.z[i]}, b{s.pos.x[i], s.pos.y[i], s.pos.z[i]};
+      double r2 = 0.0;
+      for (std::size_t k = 0; k < 3; ++k) {
+        reach_[i].lo[k] = float(double(std::min(a[k], b[k])) - skin);
+        reach_[i].hi[k] = float(double(std::max(a[k], b[k])) + skin);
+        const double far = std::max(double(b[k]) - double(reach_[i].lo[k]),
+                                    double(reach_[i].hi[k]) - double(b[k]));
+        r2 += far * far;
+      }
+      radius_[i] = float(std::sqrt(r2));
+    }
+  });
+  for_each_block(triangle_box_.size(), threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+      triangle_box_[t] = unite(reach_, features_.triangles[t]);
+  });
+  for_each_block(edge_box_.size(), threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t e = begin; e < end; ++e) edge_box_[e] = unite(reach_, features_.edges[e]);
+  });
+}
+
+// The pairs of triangles whose boxes (half the gap wider) meet give their owned features' pairs;
+// the tree's pieces run in parallel, each into its own list, joined in the pieces' order.
+template <class T>
+bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
+  sweep_boxes(s, threads);
+  now_ = &s.pos;
+  stale_ = false;
+  std::vector<Box3>& boxes = bvh_.leaf_boxes();
+  const double pad = 0.5 * double(gap_);
+  for (std::size_t t = 0; t < boxes.size(); ++t) {
+    const SweptBox& b = triangle_box_[t];
+    boxes[t] = {V3(b.lo[0] - pad, b.lo[1] - pad, b.lo[2] - pad),
+                V3(b.hi[0] + pad, b.hi[1] + pad, b.hi[2] + pad)};
+  }
+  bvh_.refit();
+  // Each piece stops at the bound on its own (the same decision for any thread count).
+  const std::size_t bound = kMaxPairsPerTriangle * boxes.size();
+  const long count = long(tasks_.size());
+  run_team(threads, [&] {
+#pragma omp for schedule(dynamic, 1)
+    for (long k = 0; k < count; ++k) {
+      std::vector<Pair>& out = task_pairs_[std::size_t(k)];
+      out.clear();
+      std::size_t leaves = 0;
+      task_done_[std::size_t(k)] = bvh_.run(tasks_[std::size_t(k)], [&](int ta, int tb) {
+        add_pairs(ta, tb, out);
+        return ++leaves <= bound && out.size() <= bound;
+      });
+    }
+  });
+  pairs_.clear();
+  std::size_t total = 0;
+  bool done = true;
+  for (std::size_t k = 0; k < task_pairs_.size(); ++k) {
+    total += task_pairs_[k].size();
+    done = done && task_done_[k];
+  }
+  if (!done || total > bound) {
+    stale_ = true;
+    flag_.clear();
+    return false;
+  }
+  for (const std::vector<Pair>& part : task_pairs_)
+    pairs_.insert(pairs_.end(), part.begin(), part.end());
+  flag_.resize(pairs_.size());
+  return true;
+}
+
+template <class T>
+void TriangleContact<T>::add_pairs(int ta, int tb, std::vector<Pair>& out) const {
+  const auto& A = features_.triangles[std::size_t(ta)];
+  const auto& B = features_.triangles[std::size_t(tb)];
+  const auto points_on = [&](int owner, const std::array<int, 3>& P, int face) {
+    const std::uint8_t mask = features_.owned_vertices[std::size_t(owner)];
+    const auto& F = features_.triangles[std::size_t(face)];
+    for (int k = 0; k < 3; ++k) {
+      const int v = P[std::size_t(k)];
+      if ((mask & (1u << k)) && !shares_vertex(F, v) &&
+          near(reach_[std::size_t(v)], triangle_box_[std::size_t(face)], gap_))
+        keep_if_close({{v, F[0], F[1], F[2]}, false}, out);
+    }
+  };
+  points_on(ta, A, tb);
+  points_on(tb, B, ta);
+  const std::uint8_t ma = features_.owned_edges[std::size_t(ta)];
+  const std::uint8_t mb = features_.owned_edges[std::size_t(tb)];
+  if (!ma || !mb) return;
+  for (int i = 0; i < 3; ++i) {
+    if (!(ma & (1u << i))) continue;
+    const auto ei = std::size_t(features_.triangle_edges[std::size_t(ta)][std::size_t(i)]);
+    const auto& e = features_.edges[ei];
+    for (int j = 0; j < 3; ++j) {
+      if (!(mb & (1u << j))) continue;
+      const auto fj = std::size_t(features_.triangle_edges[std::size_t(tb)][std::size_t(j)]);
+      const auto& f = features_.edges[fj];
+      if (!shares_vertex(e, f) && near(edge_box_[ei], edge_box_[fj], gap_))
+        keep_if_close({{e[0], e[1], f[0], f[1]}, true}, out);
+    }
+  }
+}
+
+// A pair is kept when it can come within the thickness while its vertices stay in their boxes:
+// its distance now, less the farthest each side can move (a point of a triangle or an edge moves
+// no farther than its farthest vertex), is at most the thickness.
+template <class T>
+void TriangleContact<T>::keep_if_close(const Pair& p, std::vector<Pair>& out) const {
+  const auto r = [&](std::size_t k) { return double(radius_[std::size_t(p.v[k])]); };
+  const double reach = p.edge_edge ? std::max(r(0), r(1)) + std::max(r(2), r(3))
+                                   : r(0) + std::max({r(1), r(2), r(3)});
+  const double d = thickness_ + reach;
+  const double dist2 = pair_dist2(
+      p.edge_edge ? PrimitivePair::edge_edge : PrimitivePair::point_triangle, gather(*now_, p.v));
+  if (dist2 <= d * d) out.push_back(p);
+}
+
+// Whether a pair needs its proximity constraint now: within the thickness along every axis,
+// and then closer than it or on the other side than at x0.
+template <class T>
+bool TriangleContact<T>::needs_push(const Pair& p, const Vec3Array<T>& x) const {
+  const std::array<V3, 4> x1 = gather(x, p.v);
+  if (!boxes_within(p.edge_edge, x1, thickness_)) return false;
+  const std::array<double, 4> w = closest_weights(p.edge_edge, x1);
+  const V3 r1 = combine(w, x1);
+  return r1.squaredNorm() < thickness_ * thickness_ || r1.dot(combine(w, gather(x0_, p.v))) <= 0.0;
+}
+
+// One pair's proximity constraint: (sum_k w_k x_k) . n >= thickness, where n is the direction
+// between the closest points now, or at x0 when the pair has passed through since (the two
+// disagree), so a pair that crossed in the substep is pushed back to the side it came from.
+template <class T>
+bool TriangleContact<T>::push_apart(const Model<T>& m, State<T>& s, const Pair& p) {
+  const std::array<V3, 4> x = gather(s.pos, p.v);
+  // Farther apart than the thickness along some axis: nothing to do (most candidates). A pair
+  // that passed through each other by more than that is the fail-safe's.
+  if (!boxes_within(p.edge_edge, x, thickness_)) return false;
+  const std::array<double, 4> w = closest_weights(p.edge_edge, x);
+  const V3 r1 = combine(w, x);
+  const double th = thickness_;
+  const V3 r0 = combine(w, gather(x0_, p.v));
+  // A pair that stayed more than the thickness apart and on its side needs nothing.
+  if (r1.squaredNorm() >= th * th && r1.dot(r0) > 0.0) return false;
+  V3 n;
+  if (r1.dot(r0) > 0.0 && r1.squaredNorm() > 1e-24)
+    n = r1.normalized();
+  else if (r0.squaredNorm() > 1e-24)
+    n = r0.normalized();
+  else
+    return false;
+  const double depth = th - r1.dot(n);
+  if (depth <= 0.0) return false;
+  // Features of one cloth that close at rest are its springs' business.
+  if (cloth_of_[std::size_t(p.v[0])] == cloth_of_[std::size_t(p.v[3])] &&
+      combine(w, gather(m.rest_positions, p.v)).squaredNorm() < th * th)
+    return false;
+  std::array<double, 4> inv;
+  double W = 0.0;
+  for (std::size_t k = 0; k < 4; ++k) {
+    inv[k] = double(m.inv_mass[std::size_t(p.v[k])]);
+    W += w[k] * w[k] * inv[k];
+  }
+  if (!(W > 0.0)) return false;
+  // Coulomb friction on the relative tangential motion of the substep, bounded by mu depth.
+  const V3 slide = (r1 - r0) - (r1 - r0).dot(n) * n;
+  const double len = slide.norm();
+  const V3 stop = len <= kFriction * depth ? V3(-slide) : V3(-(kFriction * depth / len) * slide);
+  const V3 correction = (depth * n + stop) / W;
+  for (std::size_t k = 0; k < 4; ++k)
+    store3(s.pos, std::size_t(p.v[k]), V3(x[k] + w[k] * inv[k] * correction));
+  return true;
+}
+
+template <class T>
+bool TriangleContact<T>::meets(const Pair& p, const Vec3Array<T>& x) const {
+  const std::array<V3, 4> x0 = gather(x0_, p.v), x1 = gather(x, p.v);
+  // Swept boxes that stay apart by more than eta cannot meet.
+  std::array<V3, 4> lo, hi;
+  for (std::size_t k = 0; k < 4; ++k) {
+    lo[k] = x0[k].cwiseMin(x1[k]);
+    hi[k] = x0[k].cwiseMax(x1[k]);
+  }
+  const std::size_t split = p.edge_edge ? 2 : 1;
+  V3 lo_p = lo[0], hi_p = hi[0], lo_q = lo[3], hi_q = hi[3];
+  for (std::size_t k = 1; k < 3; ++k) {
+    (k < split ? lo_p : lo_q) = (k < split ? lo_p : lo_q).cwiseMin(lo[k]);
+    (k < split ? hi_p : hi_q) = (k < split ? hi_p : hi_q).cwiseMax(hi[k]);
+  }
+  if (!((lo_p.array() <= hi_q.array() + eta_).all() && (lo_q.array() <= hi_p.array() + eta_).all()))
+    return false;
+  CcdOptions o;
+  o.eta = eta_;
+  o.tolerance = eta_;
+  return additive_ccd(p.edge_edge ? PrimitivePair::edge_edge : PrimitivePair::point_triangle, x0,
+                      x1, o) >= 0.0;
+}
+
+// flag_[k] = test(pairs_[k]) for every pair, in parallel (each pair its own byte: the same flags
+// for any thread count).
+template <class T>
+template <class Test>
+void TriangleContact<T>::flag_pairs(int threads, Test&& test) {
+  for_each_block(pairs_.size(), threads, [&](std::size_t b, std::size_t e) {
+    for (std::size_t k = b; k < e; ++k) flag_[k] = test(pairs_[k]) ? 1 : 0;
+  });
+}
+
+// Returns the pair's vertices that may move to x0 with zero velocity; whether it returned any.
+template <class T>
+bool TriangleContact<T>::return_vertices(const Model<T>& m, State<T>& s, const Pair& p, int round) {
+  bool any = false;
+  for (std::int32_t v : p.v) {
+    const auto i = std::size_t(v);
+    if (returned_round_[i] != 0 || m.inv_mass[i] == T(0)) continue;
+    returned_round_[i] = round;
+    returned_.push_back(v);
+    s.pos.x[i] = x0_.x[i];
+    s.pos.y[i] = x0_.y[i];
+    s.pos.z[i] = x0_.z[i];
+    s.vel.x[i] = s.vel.y[i] = s.vel.z[i] = T(0);
+    any = true;
+  }
+  return any;
+}
+
+// Rounds of the fail-safe; returns the vertices returned to x0. The first round tests every pair
+// (in parallel), later ones only the pairs of vertices the last round returned.
+template <class T>
+int TriangleContact<T>::fail_safe(const Model<T>& m, State<T>& s, int threads) {
+  returned_.clear();
+  int unresolved = 0;
+  flag_pairs(threads, [&](const Pair& p) { return meets(p, s.pos); });
+  for (int round = 1;; ++round) {
+    if (round > kMaxRounds) {
+      for (std::int32_t v : returned_) returned_round_[std::size_t(v)] = 0;
+      stats_.unresolved = 0;
+      return return_all(m, s);
+    }
+    const std::size_t before = returned_.size();
+    unresolved = 0;
+    for (std::size_t k = 0; k < pairs_.size(); ++k) {
+      const Pair& p = pairs_[k];
+      const bool met = round == 1
+                           ? flag_[k] != 0
+                           : std::any_of(p.v.begin(), p.v.end(),
+                                         [&](std::int32_t v) {
+                                           return returned_round_[std::size_t(v)] == round - 1;
+                                         }) &&
+                                 meets(p, s.pos);
+      if (met && !return_vertices(m, s, p, round)) ++unresolved;
+    }
+    if (returned_.size() == before) break;
+  }
+  for (std::int32_t v : returned_) returned_round_[std::size_t(v)] = 0;
+  stats_.unresolved = unresolved;
+  return int(returned_.size());
+}
+
+// A tangle beyond the bound: the substep is undone.
+template <class T>
+bool TriangleContact<T>::undo(const Model<T>& m, State<T>& s) {
+  stats_.overflow = true;
+  stats_.candidates = 0;
+  stats_.rolled_back = return_all(m, s);
+  return true;
+}
+
+template <class T>
+int TriangleContact<T>::return_all(const Model<T>& m, State<T>& s) {
+  int count = 0;
+  for (std::size_t i = 0; i < m.n; ++i) {
+    if (m.inv_mass[i] == T(0)) continue;
+    s.pos.x[i] = x0_.x[i];
+    s.pos.y[i] = x0_.y[i];
+    s.pos.z[i] = x0_.z[i];
+    s.vel.x[i] = s.vel.y[i] = s.vel.z[i] = T(0);
+    ++count;
+  }
+  return count;
+}
+
+template <class T>
+bool TriangleContact<T>::respond(const Model<T>& m, State<T>& s, double h, int threads) {
+  stats_ = {};
+  x_step_ = s.pos;
+  // Candidates: pairs that can come within the thickness inside their vertices' boxes.
+  if (stale_ || !inside_reach(s.pos)) {
+    stats_.collected = true;
+    if (!collect_pairs(s, threads)) return undo(m, s);
+  }
+  stats_.candidates = int(pairs_.size());
+  // Which pairs need a push, in parallel; then sweeps of pushes over those, serially in pair
+  // order (a pair that a neighbour's push brings within the thickness waits for the next
+  // substep; the fail-safe holds meanwhile).
+  int contacts = 0;
+  flag_pairs(threads, [&](const Pair& p) { return needs_push(p, s.pos); });
+  for (int it = 0; it < kProximityIterations; ++it)
+    for (std::size_t k = 0; k < pairs_.size(); ++k)
+      if (flag_[k] && push_apart(m, s, pairs_[k])) ++contacts;
+  stats_.contacts = contacts;
+  const double inv_h = 1.0 / h;
+  for (std::size_t i = 0; i < m.n; ++i) {
+    const V3 d = load3(s.pos, i) - load3(x_step_, i);
+    if (d.x() == 0.0 && d.y() == 0.0 && d.z() == 0.0) continue;
+    store3(s.vel, i, V3(load3(s.vel, i) + inv_h * d));
+  }
+  // The fail-safe needs every pair whose swept boxes meet: new ones if a push left a box.
+  if (!inside_reach(s.pos)) {
+    stats_.recollected = true;
+    if (!collect_pairs(s, threads)) return undo(m, s);
+  }
+  stats_.rolled_back = fail_safe(m, s, threads);
+  return contacts > 0 || stats_.rolled_back > 0;
+}
+
+template class TriangleContact<float>;
+template class TriangleContact<double>;
+
+}  // namespace clothlab

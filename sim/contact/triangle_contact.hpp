@@ -1,0 +1,130 @@
+// Cloth against cloth, within a cloth and between cloths, with triangles (docs/contact.md section
+// 7; solver.cloth_contact). After every integrator substep, on the positions x1 and velocities it
+// made from the substep's start x0:
+//  1. Broad phase: a material-space tree over the triangles (sim/contact/triangle_bvh.hpp)
+//     refitted to each triangle's box swept from x0 to x1 yields the pairs of triangles within
+//     a thickness, and of those the vertex-triangle and edge-edge pairs (each once,
+//     sim/contact/surface_features.hpp) whose own swept boxes are that close and whose distance
+//     now could close to the thickness within the boxes. Each vertex's box
+//     is widened by a skin (a Verlet list, Verlet 1967): the pairs stay valid, and the broad
+//     phase is skipped, for as long as every vertex stays inside its widened box; a pile at rest
+//     is collected once in many substeps, a falling sheet every substep.
+//  2. Proximity (Bridson, Fedkiw & Anderson 2002, section 7.1; as position constraints, Mueller
+//     et al. 2007 section 4.4): a pair closer than the thickness is pushed apart to it along the
+//     direction between its closest points, taken on the side the pair was at x0 when it has
+//     passed through since, split by inverse mass with the closest points' weights, with Coulomb
+//     friction on the pair's relative tangential motion. Gauss-Seidel over the pairs in their
+//     fixed order, kProximityIterations sweeps. Velocities take the position change over h.
+//     A tangle beyond kMaxPairsPerTriangle (an exploding cloth) undoes the whole substep: every
+//     free vertex returns to x0 with zero velocity, which keeps the guarantee at a bounded cost.
+//  3. Fail-safe (the no-crossing guarantee): each pair's straight motion from x0 to its final
+//     x1 is tested with conservative continuous collision detection (sim/contact/ccd.hpp: does it
+//     come within eta of contact, give or take eta, with eta a hundredth of the thickness); the
+//     vertices of a pair that would meet return to x0 with zero velocity (a rollback, as
+//     Harmon et al. 2008 fall back to when impact zones fail), and the pairs of returned vertices
+//     are tested again until none meets (after kMaxRounds rounds every free vertex returns). A
+//     returned vertex does not move, so each round returns new vertices and the loop ends; if x0
+//     had no crossing, x1 has none.
+// Pairs of one cloth closer than the thickness at rest are left to the springs in step 2 (but not
+// in step 3). Pinned vertices never move in either step. The tests of every pair (does it need a
+// push, does it meet) run in parallel into a flag per pair; the pushes and returns run serially
+// in the pairs' fixed order: the same bytes for any thread count.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "sim/contact/contact_stats.hpp"
+#include "sim/contact/surface_features.hpp"
+#include "sim/contact/triangle_bvh.hpp"
+#include "sim/integrators/integrator.hpp"
+#include "sim/scene/scene.hpp"
+
+namespace clothlab {
+
+template <class T>
+class TriangleContact {
+ public:
+  static constexpr int kProximityIterations = 2;
+  static constexpr double kFriction = 0.3;  // cloth on cloth (cotton on cotton 0.3 to 0.5)
+  // Candidate pairs reserved per triangle when built: the pair list grows past it only in a
+  // tangle denser than that, once.
+  static constexpr std::size_t kPairsPerTriangle = 16;
+  // Broad-phase leaf pairs and candidate pairs per triangle beyond which the substep is undone.
+  static constexpr std::size_t kMaxPairsPerTriangle = 64;
+  // Rounds of the fail-safe before every free vertex returns.
+  static constexpr int kMaxRounds = 16;
+  // Levels of the tree unrolled into pieces for threads (2^kTaskDepth nodes against themselves).
+  static constexpr int kTaskDepth = 5;
+  // The skin, in thicknesses.
+  static constexpr double kSkin = 0.25;
+
+  TriangleContact(const Model<T>& m, const SolverSpec& spec);
+
+  // Before a substep: where it starts.
+  void begin(const State<T>& s);
+  // After the substep of length h. Returns true when it changed some vertex.
+  bool respond(const Model<T>& m, State<T>& s, double h, int threads);
+
+  const ClothContactStats& last() const { return stats_; }
+  double thickness() const { return thickness_; }
+  // The separation the fail-safe's collision detection counts as contact.
+  double eta() const { return eta_; }
+
+  struct Pair {
+    std::array<std::int32_t, 4> v{};  // point, triangle; or edge, edge
+    bool edge_edge = false;
+  };
+  const std::vector<Pair>& pairs() const { return pairs_; }
+
+ private:
+  // A vertex's box swept over the substep.
+  struct SweptBox {
+    std::array<float, 3> lo{}, hi{};
+  };
+  // Returns false when the tangle was beyond kMaxPairsPerTriangle.
+  bool collect_pairs(const State<T>& s, int threads);
+  // Every free vertex back to x0 with zero velocity; returns how many.
+  int return_all(const Model<T>& m, State<T>& s);
+  bool undo(const Model<T>& m, State<T>& s);
+  // Whether every vertex of x lies in its widened box (the pairs are still valid).
+  bool inside_reach(const Vec3Array<T>& x) const;
+  void add_pairs(int ta, int tb, std::vector<Pair>& out) const;
+  void keep_if_close(const Pair& p, std::vector<Pair>& out) const;
+  void sweep_boxes(const State<T>& s, int threads);
+  bool needs_push(const Pair& p, const Vec3Array<T>& x) const;
+  bool push_apart(const Model<T>& m, State<T>& s, const Pair& p);
+  bool meets(const Pair& p, const Vec3Array<T>& x) const;
+  template <class Test>
+  void flag_pairs(int threads, Test&& test);
+  bool return_vertices(const Model<T>& m, State<T>& s, const Pair& p, int round);
+  int fail_safe(const Model<T>& m, State<T>& s, int threads);
+
+  double thickness_ = 0.0;
+  double eta_ = 0.0;
+  SurfaceFeatures features_;
+  TriangleBvh bvh_;
+  std::vector<std::int32_t> cloth_of_;  // per vertex
+  Vec3Array<T> x0_;                     // the substep's start
+  Vec3Array<T> x_step_;                 // what the integrator made
+  float gap_ = 0.0f;                    // m: how close two swept boxes make a candidate pair
+  std::vector<SweptBox> reach_;         // per vertex: swept box and skin, at the last collection
+  std::vector<float> radius_;           // per vertex: how far it can move inside its box
+  std::vector<SweptBox> triangle_box_, edge_box_;  // the union of their vertices' boxes
+  std::vector<TriangleBvh::Task> tasks_;           // the broad phase's pieces for threads
+  std::vector<std::vector<Pair>> task_pairs_;      // per piece: the pairs it found
+  std::vector<std::uint8_t> task_done_;            // per piece: it ran to the end
+  const Vec3Array<T>* now_ = nullptr;              // the positions the pairs are collected at
+  bool stale_ = true;                              // a vertex left its box between substeps
+  std::vector<Pair> pairs_;
+  std::vector<std::uint8_t> flag_;   // per pair: the last parallel test's answer
+  std::vector<int> returned_round_;  // per vertex: the fail-safe round that returned it (0: none)
+  std::vector<int> returned_;        // the vertices returned this substep
+  ClothContactStats stats_;
+};
+
+extern template class TriangleContact<float>;
+extern template class TriangleContact<double>;
+
+}  // namespace clothlab
