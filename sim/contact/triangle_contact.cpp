@@ -42,20 +42,6 @@ V3 combine(const std::array<double, 4>& w, const std::array<V3, 4>& x) {
   return w[0] * x[0] + w[1] * x[1] + w[2] * x[2] + w[3] * x[3];
 }
 
-// The box around the swept boxes of some vertices.
-template <class Box, std::size_t N>
-Box unite(const std::vector<Box>& swept, const std::array<int, N>& vertices) {
-  Box b = swept[std::size_t(vertices[0])];
-  for (std::size_t k = 1; k < N; ++k) {
-    const Box& o = swept[std::size_t(vertices[k])];
-    for (std::size_t a = 0; a < 3; ++a) {
-      b.lo[a] = std::min(b.lo[a], o.lo[a]);
-      b.hi[a] = std::max(b.hi[a], o.hi[a]);
-    }
-  }
-  return b;
-}
-
 // Whether two boxes come within `gap` of each other along every axis.
 template <class Box>
 bool near(const Box& a, const Box& b, float gap) {
@@ -91,11 +77,9 @@ TriangleContact<T>::TriangleContact(const Model<T>& m, const SolverSpec& spec)
                 std::size_t(m.cloths[c].nu) * std::size_t(m.cloths[c].nv), std::int32_t(c));
   x0_.resize(m.n);
   x_step_.resize(m.n);
-  gap_ = float(thickness_);
-  reach_.assign(m.n, SweptBox{});
-  radius_.assign(m.n, 0.0f);
-  triangle_box_.assign(features_.triangles.size(), SweptBox{});
-  edge_box_.assign(features_.edges.size(), SweptBox{});
+  xc_.resize(m.n);
+  triangle_box_.assign(features_.triangles.size(), FloatBox{});
+  edge_box_.assign(features_.edges.size(), FloatBox{});
   tasks_ = bvh_.tasks(kTaskDepth);
   task_pairs_.resize(tasks_.size());
   task_done_.assign(tasks_.size(), 1);
@@ -110,60 +94,63 @@ template <class T>
 void TriangleContact<T>::begin(const State<T>& s) {
   x0_ = s.pos;  // same size: copies without allocating
   // Something moved the cloth between substeps (a reset, a state set from outside).
-  if (!stale_ && !inside_reach(x0_)) stale_ = true;
+  if (!stale_ && strayed(x0_) > skin_) stale_ = true;
 }
 
+// How far a vertex of x has strayed from where the pairs were collected, once the mean motion of
+// all vertices since then is taken away: the largest |(x_i - xc_i) - mean|. A common motion
+// changes no distance, so a falling or swinging cloth keeps its pairs. Serial, in double.
 template <class T>
-bool TriangleContact<T>::inside_reach(const Vec3Array<T>& x) const {
-  for (std::size_t i = 0; i < reach_.size(); ++i) {
-    const SweptBox& b = reach_[i];
-    const float px = float(x.x[i]), py = float(x.y[i]), pz = float(x.z[i]);
-    if (!(px >= b.lo[0] && px <= b.hi[0] && py >= b.lo[1] && py <= b.hi[1] && pz >= b.lo[2] &&
-          pz <= b.hi[2]))
-      return false;
-  }
-  return true;
+double TriangleContact<T>::strayed(const Vec3Array<T>& x) const {
+  V3 mean = V3::Zero();
+  for (std::size_t i = 0; i < xc_.size(); ++i) mean += load3(x, i) - load3(xc_, i);
+  mean /= double(std::max<std::size_t>(xc_.size(), 1));
+  double most = 0.0;
+  for (std::size_t i = 0; i < xc_.size(); ++i)
+    most = std::max(most, (load3(x, i) - load3(xc_, i) - mean).squaredNorm());
+  return std::sqrt(most);
 }
 
-// Each vertex's box (swept over the substep, widened by the skin) and how far the vertex can move
-// inside it; each triangle's and edge's box around its vertices' boxes.
+// Each triangle's and edge's box around its vertices where the pairs are collected (xc).
 template <class T>
-void TriangleContact<T>::sweep_boxes(const State<T>& s, int threads) {
-  const double skin = kSkin * thickness_;
-  for_each_block(reach_.size(), threads, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      const std::array<T, 3> a{x0_.x[i], x0_.y[i], x0_.z[i]}, b{s.pos.x[i], s.pos.y[i], s.pos.z[i]};
-      double r2 = 0.0;
-      for (std::size_t k = 0; k < 3; ++k) {
-        reach_[i].lo[k] = float(double(std::min(a[k], b[k])) - skin);
-        reach_[i].hi[k] = float(double(std::max(a[k], b[k])) + skin);
-        const double far = std::max(double(b[k]) - double(reach_[i].lo[k]),
-                                    double(reach_[i].hi[k]) - double(b[k]));
-        r2 += far * far;
+void TriangleContact<T>::feature_boxes(int threads) {
+  const auto box_of = [&](const auto& vertices) {
+    FloatBox b;
+    for (std::size_t a = 0; a < 3; ++a) {
+      const AlignedVector<T>& axis = xc_.axis(int(a));
+      b.lo[a] = b.hi[a] = float(axis[std::size_t(vertices[0])]);
+      for (std::size_t k = 1; k < vertices.size(); ++k) {
+        b.lo[a] = std::min(b.lo[a], float(axis[std::size_t(vertices[k])]));
+        b.hi[a] = std::max(b.hi[a], float(axis[std::size_t(vertices[k])]));
       }
-      radius_[i] = float(std::sqrt(r2));
     }
-  });
+    return b;
+  };
   for_each_block(triangle_box_.size(), threads, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t t = begin; t < end; ++t)
-      triangle_box_[t] = unite(reach_, features_.triangles[t]);
+    for (std::size_t t = begin; t < end; ++t) triangle_box_[t] = box_of(features_.triangles[t]);
   });
   for_each_block(edge_box_.size(), threads, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t e = begin; e < end; ++e) edge_box_[e] = unite(reach_, features_.edges[e]);
+    for (std::size_t e = begin; e < end; ++e) edge_box_[e] = box_of(features_.edges[e]);
   });
 }
 
-// The pairs of triangles whose boxes (half the gap wider) meet give their owned features' pairs;
-// the tree's pieces run in parallel, each into its own list, joined in the pieces' order.
+// The pairs are collected at the positions now (xc). A pair is kept when it is within the
+// thickness plus twice the skin there: while no vertex strays more than the skin from xc (beyond
+// the mean motion), no other pair can come within the thickness. The skin is kSkin thicknesses,
+// or more when the substep's start x0 has already strayed farther, so that the substep under way
+// is covered too. The pairs of triangles whose boxes (half the gap wider) meet give their owned
+// features' pairs; the tree's pieces run in parallel, each into its own list, joined in order.
 template <class T>
 bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
-  sweep_boxes(s, threads);
-  now_ = &s.pos;
+  xc_ = s.pos;
+  skin_ = std::max(kSkin * thickness_, strayed(x0_) * (1.0 + 1e-6));
+  gap_ = float(thickness_ + 2.0 * skin_);
+  feature_boxes(threads);
   stale_ = false;
   std::vector<Box3>& boxes = bvh_.leaf_boxes();
   const double pad = 0.5 * double(gap_);
   for (std::size_t t = 0; t < boxes.size(); ++t) {
-    const SweptBox& b = triangle_box_[t];
+    const FloatBox& b = triangle_box_[t];
     boxes[t] = {V3(b.lo[0] - pad, b.lo[1] - pad, b.lo[2] - pad),
                 V3(b.hi[0] + pad, b.hi[1] + pad, b.hi[2] + pad)};
   }
@@ -211,7 +198,7 @@ void TriangleContact<T>::add_pairs(int ta, int tb, std::vector<Pair>& out) const
     for (int k = 0; k < 3; ++k) {
       const int v = P[std::size_t(k)];
       if ((mask & (1u << k)) && !shares_vertex(F, v) &&
-          near(reach_[std::size_t(v)], triangle_box_[std::size_t(face)], gap_))
+          near(point_box(v), triangle_box_[std::size_t(face)], gap_))
         keep_if_close({{v, F[0], F[1], F[2]}, false}, out);
     }
   };
@@ -234,18 +221,21 @@ void TriangleContact<T>::add_pairs(int ta, int tb, std::vector<Pair>& out) const
   }
 }
 
-// A pair is kept when it can come within the thickness while its vertices stay in their boxes:
-// its distance now, less the farthest each side can move (a point of a triangle or an edge moves
-// no farther than its farthest vertex), is at most the thickness.
+// A pair is kept when its distance at xc is within the thickness and twice the skin (a point of a
+// triangle or an edge strays no farther than its farthest vertex).
 template <class T>
 void TriangleContact<T>::keep_if_close(const Pair& p, std::vector<Pair>& out) const {
-  const auto r = [&](std::size_t k) { return double(radius_[std::size_t(p.v[k])]); };
-  const double reach = p.edge_edge ? std::max(r(0), r(1)) + std::max(r(2), r(3))
-                                   : r(0) + std::max({r(1), r(2), r(3)});
-  const double d = thickness_ + reach;
+  const double d = thickness_ + 2.0 * skin_;
   const double dist2 = pair_dist2(
-      p.edge_edge ? PrimitivePair::edge_edge : PrimitivePair::point_triangle, gather(*now_, p.v));
+      p.edge_edge ? PrimitivePair::edge_edge : PrimitivePair::point_triangle, gather(xc_, p.v));
   if (dist2 <= d * d) out.push_back(p);
+}
+
+template <class T>
+typename TriangleContact<T>::FloatBox TriangleContact<T>::point_box(int v) const {
+  FloatBox b;
+  for (std::size_t a = 0; a < 3; ++a) b.lo[a] = b.hi[a] = float(xc_.axis(int(a))[std::size_t(v)]);
+  return b;
 }
 
 // Whether a pair needs its proximity constraint now: within the thickness along every axis,
@@ -417,7 +407,7 @@ bool TriangleContact<T>::respond(const Model<T>& m, State<T>& s, double h, int t
   stats_ = {};
   x_step_ = s.pos;
   // Candidates: pairs that can come within the thickness inside their vertices' boxes.
-  if (stale_ || !inside_reach(s.pos)) {
+  if (stale_ || strayed(s.pos) > skin_) {
     stats_.collected = true;
     if (!collect_pairs(s, threads)) return undo(m, s);
   }
@@ -438,7 +428,7 @@ bool TriangleContact<T>::respond(const Model<T>& m, State<T>& s, double h, int t
     store3(s.vel, i, V3(load3(s.vel, i) + inv_h * d));
   }
   // The fail-safe needs every pair whose swept boxes meet: new ones if a push left a box.
-  if (!inside_reach(s.pos)) {
+  if (strayed(s.pos) > skin_) {
     stats_.recollected = true;
     if (!collect_pairs(s, threads)) return undo(m, s);
   }

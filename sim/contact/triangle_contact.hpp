@@ -4,11 +4,11 @@
 //  1. Broad phase: a material-space tree over the triangles (sim/contact/triangle_bvh.hpp)
 //     refitted to each triangle's box swept from x0 to x1 yields the pairs of triangles within
 //     a thickness, and of those the vertex-triangle and edge-edge pairs (each once,
-//     sim/contact/surface_features.hpp) whose own swept boxes are that close and whose distance
-//     now could close to the thickness within the boxes. Each vertex's box
-//     is widened by a skin (a Verlet list, Verlet 1967): the pairs stay valid, and the broad
-//     phase is skipped, for as long as every vertex stays inside its widened box; a pile at rest
-//     is collected once in many substeps, a falling sheet every substep.
+//     sim/contact/surface_features.hpp) whose distance there is within the thickness and twice a
+//     skin (a Verlet list, Verlet 1967): the pairs stay valid, and the broad phase is skipped, for
+//     as long as no vertex strays more than the skin from where they were collected once the mean
+//     motion of all vertices is taken away (a common motion changes no distance), so a pile at
+//     rest and a sheet falling as one are collected once in many substeps.
 //  2. Proximity (Bridson, Fedkiw & Anderson 2002, section 7.1; as position constraints, Mueller
 //     et al. 2007 section 4.4): a pair closer than the thickness is pushed apart to it along the
 //     direction between its closest points, taken on the side the pair was at x0 when it has
@@ -58,7 +58,7 @@ class TriangleContact {
   // Levels of the tree unrolled into pieces for threads (2^kTaskDepth nodes against themselves).
   static constexpr int kTaskDepth = 5;
   // The skin, in thicknesses.
-  static constexpr double kSkin = 0.25;
+  static constexpr double kSkin = 0.5;
 
   TriangleContact(const Model<T>& m, const SolverSpec& spec);
 
@@ -79,8 +79,7 @@ class TriangleContact {
   const std::vector<Pair>& pairs() const { return pairs_; }
 
  private:
-  // A vertex's box swept over the substep.
-  struct SweptBox {
+  struct FloatBox {
     std::array<float, 3> lo{}, hi{};
   };
   // Returns false when the tangle was beyond kMaxPairsPerTriangle.
@@ -88,11 +87,12 @@ class TriangleContact {
   // Every free vertex back to x0 with zero velocity; returns how many.
   int return_all(const Model<T>& m, State<T>& s);
   bool undo(const Model<T>& m, State<T>& s);
-  // Whether every vertex of x lies in its widened box (the pairs are still valid).
-  bool inside_reach(const Vec3Array<T>& x) const;
+  // The farthest a vertex of x has strayed from xc, the mean motion taken away.
+  double strayed(const Vec3Array<T>& x) const;
+  FloatBox point_box(int v) const;
   void add_pairs(int ta, int tb, std::vector<Pair>& out) const;
   void keep_if_close(const Pair& p, std::vector<Pair>& out) const;
-  void sweep_boxes(const State<T>& s, int threads);
+  void feature_boxes(int threads);
   bool needs_push(const Pair& p, const Vec3Array<T>& x) const;
   bool push_apart(const Model<T>& m, State<T>& s, const Pair& p);
   bool meets(const Pair& p, const Vec3Array<T>& x) const;
@@ -108,14 +108,13 @@ class TriangleContact {
   std::vector<std::int32_t> cloth_of_;  // per vertex
   Vec3Array<T> x0_;                     // the substep's start
   Vec3Array<T> x_step_;                 // what the integrator made
-  float gap_ = 0.0f;                    // m: how close two swept boxes make a candidate pair
-  std::vector<SweptBox> reach_;         // per vertex: swept box and skin, at the last collection
-  std::vector<float> radius_;           // per vertex: how far it can move inside its box
-  std::vector<SweptBox> triangle_box_, edge_box_;  // the union of their vertices' boxes
+  float gap_ = 0.0f;   // m: how close two boxes at xc make a candidate pair (thickness + 2 skin)
+  Vec3Array<T> xc_;    // where the pairs were collected
+  double skin_ = 0.0;  // m: how far a vertex may stray from xc
+  std::vector<FloatBox> triangle_box_, edge_box_;  // around their vertices at xc
   std::vector<TriangleBvh::Task> tasks_;           // the broad phase's pieces for threads
   std::vector<std::vector<Pair>> task_pairs_;      // per piece: the pairs it found
   std::vector<std::uint8_t> task_done_;            // per piece: it ran to the end
-  const Vec3Array<T>* now_ = nullptr;              // the positions the pairs are collected at
   bool stale_ = true;                              // a vertex left its box between substeps
   std::vector<Pair> pairs_;
   std::vector<std::uint8_t> flag_;   // per pair: the last parallel test's answer
