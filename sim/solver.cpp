@@ -220,13 +220,10 @@ AdvanceResult SolverT<T>::step(long count) {
 template <class T>
 long SolverT<T>::intersections() const {
   sync_state();
-  std::vector<Eigen::Vector3d> rest(model_.n), now(model_.n);
-  for (std::size_t i = 0; i < model_.n; ++i) {
-    rest[i] = load3(model_.rest_positions, i);
-    now[i] = load3(state_.pos, i);
-  }
-  if (!counter_) counter_ = std::make_unique<IntersectionCounter>(model_.triangles, rest);
-  return counter_->count(now);
+  if (!counter_)
+    counter_ =
+        std::make_unique<IntersectionCounter>(model_.triangles, points_of(model_.rest_positions));
+  return counter_->count(points_of(state_.pos));
 }
 
 template <class T>

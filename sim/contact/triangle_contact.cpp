@@ -15,13 +15,6 @@ namespace {
 using V3 = Eigen::Vector3d;
 
 template <class T>
-std::vector<V3> rest_points(const Model<T>& m) {
-  std::vector<V3> x(m.n);
-  for (std::size_t i = 0; i < m.n; ++i) x[i] = load3(m.rest_positions, i);
-  return x;
-}
-
-template <class T>
 std::array<V3, 4> gather(const Vec3Array<T>& a, const std::array<std::int32_t, 4>& v) {
   return {load3(a, std::size_t(v[0])), load3(a, std::size_t(v[1])), load3(a, std::size_t(v[2])),
           load3(a, std::size_t(v[3]))};
@@ -50,15 +43,20 @@ bool near(const Box& a, const Box& b, float gap) {
   return true;
 }
 
-// Whether the pair's points at x lie within d of each other's box along every axis: the
-// point's (or edge p's) box against the triangle's (or edge q's).
-bool boxes_within(bool edge_edge, const std::array<V3, 4>& x, double d) {
-  const V3 lo_p = edge_edge ? V3(x[0].cwiseMin(x[1])) : x[0];
-  const V3 hi_p = edge_edge ? V3(x[0].cwiseMax(x[1])) : x[0];
-  V3 lo_q = x[3], hi_q = x[3];
-  for (std::size_t k = edge_edge ? 2 : 1; k < 3; ++k) {
-    lo_q = lo_q.cwiseMin(x[k]);
-    hi_q = hi_q.cwiseMax(x[k]);
+// Whether the box around the pair's first side (the point, or edge p) comes within d of the box
+// around its other side (the triangle, or edge q) along every axis, each vertex k spanning
+// lo[k] .. hi[k].
+bool sides_within(bool edge_edge, const std::array<V3, 4>& lo, const std::array<V3, 4>& hi,
+                  double d) {
+  const std::size_t split = edge_edge ? 2 : 1;
+  V3 lo_p = lo[0], hi_p = hi[0], lo_q = lo[3], hi_q = hi[3];
+  for (std::size_t k = 1; k < split; ++k) {
+    lo_p = lo_p.cwiseMin(lo[k]);
+    hi_p = hi_p.cwiseMax(hi[k]);
+  }
+  for (std::size_t k = split; k < 3; ++k) {
+    lo_q = lo_q.cwiseMin(lo[k]);
+    hi_q = hi_q.cwiseMax(hi[k]);
   }
   return (lo_p.array() <= hi_q.array() + d).all() && (lo_q.array() <= hi_p.array() + d).all();
 }
@@ -70,7 +68,7 @@ TriangleContact<T>::TriangleContact(const Model<T>& m, const SolverSpec& spec)
     : thickness_(spec.self_thickness),
       eta_(0.01 * spec.self_thickness),
       features_(surface_features(m.triangles, m.n)),
-      bvh_(triangle_centroids(m.triangles, rest_points(m))) {
+      bvh_(triangle_centroids(m.triangles, points_of(m.rest_positions))) {
   cloth_of_.assign(m.n, 0);
   for (std::size_t c = 0; c < m.cloths.size(); ++c)
     std::fill_n(cloth_of_.begin() + m.cloths[c].offset,
@@ -80,12 +78,12 @@ TriangleContact<T>::TriangleContact(const Model<T>& m, const SolverSpec& spec)
   xc_.resize(m.n);
   triangle_box_.assign(features_.triangles.size(), FloatBox{});
   edge_box_.assign(features_.edges.size(), FloatBox{});
+  pairs_.reserve(kPairsPerTriangle * m.triangles.size());
+  flag_.reserve(pairs_.capacity());
   tasks_ = bvh_.tasks(kTaskDepth);
   task_pairs_.resize(tasks_.size());
   task_done_.assign(tasks_.size(), 1);
   for (auto& part : task_pairs_) part.reserve(pairs_.capacity() / tasks_.size() + 64);
-  flag_.reserve(pairs_.capacity());
-  pairs_.reserve(kPairsPerTriangle * m.triangles.size());
   returned_round_.assign(m.n, 0);
   returned_.reserve(m.n);
 }
@@ -243,7 +241,7 @@ typename TriangleContact<T>::FloatBox TriangleContact<T>::point_box(int v) const
 template <class T>
 bool TriangleContact<T>::needs_push(const Pair& p, const Vec3Array<T>& x) const {
   const std::array<V3, 4> x1 = gather(x, p.v);
-  if (!boxes_within(p.edge_edge, x1, thickness_)) return false;
+  if (!sides_within(p.edge_edge, x1, x1, thickness_)) return false;
   const std::array<double, 4> w = closest_weights(p.edge_edge, x1);
   const V3 r1 = combine(w, x1);
   return r1.squaredNorm() < thickness_ * thickness_ || r1.dot(combine(w, gather(x0_, p.v))) <= 0.0;
@@ -257,7 +255,7 @@ bool TriangleContact<T>::push_apart(const Model<T>& m, State<T>& s, const Pair& 
   const std::array<V3, 4> x = gather(s.pos, p.v);
   // Farther apart than the thickness along some axis: nothing to do (most candidates). A pair
   // that passed through each other by more than that is the fail-safe's.
-  if (!boxes_within(p.edge_edge, x, thickness_)) return false;
+  if (!sides_within(p.edge_edge, x, x, thickness_)) return false;
   const std::array<double, 4> w = closest_weights(p.edge_edge, x);
   const V3 r1 = combine(w, x);
   const double th = thickness_;
@@ -303,14 +301,7 @@ bool TriangleContact<T>::meets(const Pair& p, const Vec3Array<T>& x) const {
     lo[k] = x0[k].cwiseMin(x1[k]);
     hi[k] = x0[k].cwiseMax(x1[k]);
   }
-  const std::size_t split = p.edge_edge ? 2 : 1;
-  V3 lo_p = lo[0], hi_p = hi[0], lo_q = lo[3], hi_q = hi[3];
-  for (std::size_t k = 1; k < 3; ++k) {
-    (k < split ? lo_p : lo_q) = (k < split ? lo_p : lo_q).cwiseMin(lo[k]);
-    (k < split ? hi_p : hi_q) = (k < split ? hi_p : hi_q).cwiseMax(hi[k]);
-  }
-  if (!((lo_p.array() <= hi_q.array() + eta_).all() && (lo_q.array() <= hi_p.array() + eta_).all()))
-    return false;
+  if (!sides_within(p.edge_edge, lo, hi, eta_)) return false;
   CcdOptions o;
   o.eta = eta_;
   o.tolerance = eta_;
@@ -328,6 +319,15 @@ void TriangleContact<T>::flag_pairs(int threads, Test&& test) {
   });
 }
 
+// Vertex i back where the substep started, at rest.
+template <class T>
+void TriangleContact<T>::return_vertex(State<T>& s, std::size_t i) const {
+  s.pos.x[i] = x0_.x[i];
+  s.pos.y[i] = x0_.y[i];
+  s.pos.z[i] = x0_.z[i];
+  s.vel.x[i] = s.vel.y[i] = s.vel.z[i] = T(0);
+}
+
 // Returns the pair's vertices that may move to x0 with zero velocity; whether it returned any.
 template <class T>
 bool TriangleContact<T>::return_vertices(const Model<T>& m, State<T>& s, const Pair& p, int round) {
@@ -337,10 +337,7 @@ bool TriangleContact<T>::return_vertices(const Model<T>& m, State<T>& s, const P
     if (returned_round_[i] != 0 || m.inv_mass[i] == T(0)) continue;
     returned_round_[i] = round;
     returned_.push_back(v);
-    s.pos.x[i] = x0_.x[i];
-    s.pos.y[i] = x0_.y[i];
-    s.pos.z[i] = x0_.z[i];
-    s.vel.x[i] = s.vel.y[i] = s.vel.z[i] = T(0);
+    return_vertex(s, i);
     any = true;
   }
   return any;
@@ -393,10 +390,7 @@ int TriangleContact<T>::return_all(const Model<T>& m, State<T>& s) {
   int count = 0;
   for (std::size_t i = 0; i < m.n; ++i) {
     if (m.inv_mass[i] == T(0)) continue;
-    s.pos.x[i] = x0_.x[i];
-    s.pos.y[i] = x0_.y[i];
-    s.pos.z[i] = x0_.z[i];
-    s.vel.x[i] = s.vel.y[i] = s.vel.z[i] = T(0);
+    return_vertex(s, i);
     ++count;
   }
   return count;
@@ -406,7 +400,7 @@ template <class T>
 bool TriangleContact<T>::respond(const Model<T>& m, State<T>& s, double h, int threads) {
   stats_ = {};
   x_step_ = s.pos;
-  // Candidates: pairs that can come within the thickness inside their vertices' boxes.
+  // The pairs again when a vertex has strayed past the skin since they were collected.
   if (stale_ || strayed(s.pos) > skin_) {
     stats_.collected = true;
     if (!collect_pairs(s, threads)) return undo(m, s);

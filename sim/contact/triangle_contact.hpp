@@ -98,6 +98,7 @@ class TriangleContact {
   bool meets(const Pair& p, const Vec3Array<T>& x) const;
   template <class Test>
   void flag_pairs(int threads, Test&& test);
+  void return_vertex(State<T>& s, std::size_t i) const;
   bool return_vertices(const Model<T>& m, State<T>& s, const Pair& p, int round);
   int fail_safe(const Model<T>& m, State<T>& s, int threads);
 

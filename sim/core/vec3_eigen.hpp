@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <vector>
 
 #include "sim/core/vec3_array.hpp"
 
@@ -12,6 +13,14 @@ namespace clothlab {
 template <class T>
 Eigen::Vector3d load3(const Vec3Array<T>& a, std::size_t i) {
   return {double(a.x[i]), double(a.y[i]), double(a.z[i])};
+}
+
+// Every vertex as an Eigen vector in double.
+template <class T>
+std::vector<Eigen::Vector3d> points_of(const Vec3Array<T>& a) {
+  std::vector<Eigen::Vector3d> x(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) x[i] = load3(a, i);
+  return x;
 }
 
 template <class T>
