@@ -175,7 +175,7 @@ AdvanceResult SolverT<T>::step(long count) {
       }
       if (cloth_contact_) {
         sync_state();
-        cloth_contact_->begin(state_);
+        cloth_contact_->begin(state_, threads_);
       }
       record(integrate(sys, t, h));
       if (moving_pins_) {

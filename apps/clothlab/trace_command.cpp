@@ -134,8 +134,8 @@ void print_summary(const TraceArgs& args, const Scene& scene, const Solver& solv
   if (const auto c = solver.last_cloth_contact())
     std::printf(
         "; cloth contact in the last substep: %d candidate pairs, %d pushed apart, %d "
-        "vertices rolled back",
-        c->candidates, c->contacts, c->rolled_back);
+        "vertices rolled back, %d triangles in %d flat patches",
+        c->candidates, c->contacts, c->rolled_back, c->flat_triangles, c->flat_patches);
   if (const auto c = solver.last_cloth_contact(); c && c->overflow)
     std::printf(" (a tangle beyond the pair bound: the substep was undone)");
   std::printf("\n");

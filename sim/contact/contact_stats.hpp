@@ -27,6 +27,8 @@ struct ClothContactStats {
   bool overflow = false;     // a tangle beyond the pair bound: the substep was undone
   bool collected = false;    // the broad phase ran (a vertex left its widened box)
   bool recollected = false;  // again after the proximity pass moved a vertex out of its box
+  int flat_patches = 0;      // patches skipped as flat (sim/contact/flat_patches.hpp)
+  int flat_triangles = 0;    // triangles in them
 };
 
 }  // namespace clothlab

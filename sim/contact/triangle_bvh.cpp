@@ -4,24 +4,56 @@
 
 namespace clothlab {
 
-TriangleBvh::TriangleBvh(const std::vector<Eigen::Vector3d>& centroids) {
+TriangleBvh::TriangleBvh(const std::vector<Eigen::Vector3d>& centroids,
+                         const std::vector<int>& groups) {
   const std::size_t count = centroids.size();
   leaf_boxes_.assign(count, Box3{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
   if (count == 0) return;
   nodes_.reserve(2 * count - 1);
-  std::vector<int> order(count);
-  for (std::size_t t = 0; t < count; ++t) order[t] = int(t);
-  build(order, 0, count, centroids);
+  order_.resize(count);
+  for (std::size_t t = 0; t < count; ++t) order_[t] = int(t);
+  build(order_, 0, count, centroids, groups);
 }
 
 // Median split along the widest axis of the centroids' box; ties broken by triangle index, so the
 // tree depends on nothing but the rest shape.
+std::size_t TriangleBvh::group_split(std::vector<int>& order, std::size_t begin, std::size_t end,
+                                     const std::vector<int>& groups) {
+  if (groups.empty()) return 0;
+  const auto first = order.begin() + long(begin), last = order.begin() + long(end);
+  const auto by_group = [&](int a, int b) {
+    const int ga = groups[std::size_t(a)], gb = groups[std::size_t(b)];
+    return ga < gb || (ga == gb && a < b);
+  };
+  if (std::all_of(first, last,
+                  [&](int t) { return groups[std::size_t(t)] == groups[std::size_t(*first)]; }))
+    return 0;
+  std::sort(first, last, by_group);
+  // The group boundary nearest the middle.
+  const std::size_t mid = begin + (end - begin) / 2;
+  std::size_t best = 0;
+  for (std::size_t k = begin + 1; k < end; ++k)
+    if (groups[std::size_t(order[k])] != groups[std::size_t(order[k - 1])] &&
+        (best == 0 || (k > mid ? k - mid : mid - k) < (best > mid ? best - mid : mid - best)))
+      best = k;
+  return best;
+}
+
 int TriangleBvh::build(std::vector<int>& order, std::size_t begin, std::size_t end,
-                       const std::vector<Eigen::Vector3d>& centroids) {
+                       const std::vector<Eigen::Vector3d>& centroids,
+                       const std::vector<int>& groups) {
   const int index = int(nodes_.size());
   nodes_.push_back(Node{});
+  nodes_.back().begin = int(begin);
+  nodes_.back().end = int(end);
   if (end - begin == 1) {
     nodes_.back().triangle = order[begin];
+    return index;
+  }
+  if (const std::size_t split = group_split(order, begin, end, groups); split != 0) {
+    const int left = build(order, begin, split, centroids, groups);
+    const int right = build(order, split, end, centroids, groups);
+    link(index, left, right);
     return index;
   }
   Eigen::Vector3d lo = centroids[std::size_t(order[begin])], hi = lo;
@@ -38,11 +70,16 @@ int TriangleBvh::build(std::vector<int>& order, std::size_t begin, std::size_t e
                      const double cb = centroids[std::size_t(b)][axis];
                      return ca < cb || (ca == cb && a < b);
                    });
-  const int left = build(order, begin, mid, centroids);
-  const int right = build(order, mid, end, centroids);
-  nodes_[std::size_t(index)].left = left;
-  nodes_[std::size_t(index)].right = right;
+  const int left = build(order, begin, mid, centroids, groups);
+  const int right = build(order, mid, end, centroids, groups);
+  link(index, left, right);
   return index;
+}
+
+void TriangleBvh::link(int parent, int left, int right) {
+  nodes_[std::size_t(parent)].left = left;
+  nodes_[std::size_t(parent)].right = right;
+  nodes_[std::size_t(left)].parent = nodes_[std::size_t(right)].parent = parent;
 }
 
 std::vector<TriangleBvh::Task> TriangleBvh::tasks(int depth) const {

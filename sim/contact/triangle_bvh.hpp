@@ -7,7 +7,9 @@
 // The self traversal (a node against itself: its two children each against themselves and
 // against each other) reports every unordered pair of distinct triangles whose boxes meet, in an
 // order fixed by the tree, so results do not depend on the thread count; the callback returns
-// false to stop it.
+// false to stop it. A predicate may skip whole nodes, which then report no pair within them
+// (a patch that cannot touch itself, sim/contact/flat_patches.hpp); pairs between a skipped node
+// and the rest are still reported.
 #pragma once
 
 #include <Eigen/Core>
@@ -33,8 +35,11 @@ struct Box3 {
 class TriangleBvh {
  public:
   TriangleBvh() = default;
-  // centroids: one per triangle, in the shape the hierarchy is cut from.
-  explicit TriangleBvh(const std::vector<Eigen::Vector3d>& centroids);
+  // centroids: one per triangle, in the shape the hierarchy is cut from. groups (empty, or one
+  // per triangle): the nodes first split between groups (cloths), so each cloth has its own
+  // subtrees, then by centroid.
+  explicit TriangleBvh(const std::vector<Eigen::Vector3d>& centroids,
+                       const std::vector<int>& groups = {});
 
   std::size_t triangle_count() const { return leaf_boxes_.size(); }
   // The leaf boxes to fill before refit(): box(t) for triangle t.
@@ -47,8 +52,17 @@ class TriangleBvh {
   // returns false. Returns false when stopped.
   template <class Fn>
   bool self_pairs(Fn&& fn) const {
-    return nodes_.empty() || self(0, fn);
+    return nodes_.empty() || self(0, no_skip, fn);
   }
+
+  // The nodes, pre-order (the root is 0): each covers the triangles triangles(n), its children's
+  // ranges side by side.
+  std::size_t node_count() const { return nodes_.size(); }
+  int left(int n) const { return nodes_[std::size_t(n)].left; }
+  int right(int n) const { return nodes_[std::size_t(n)].right; }
+  int parent(int n) const { return nodes_[std::size_t(n)].parent; }
+  const int* triangles_begin(int n) const { return order_.data() + nodes_[std::size_t(n)].begin; }
+  const int* triangles_end(int n) const { return order_.data() + nodes_[std::size_t(n)].end; }
 
   // The same traversal cut into independent pieces for threads: the nodes `depth` levels down
   // each against themselves, and the pairs of siblings above them against each other. Run in
@@ -57,26 +71,38 @@ class TriangleBvh {
     int a = 0, b = 0;  // a == b: node a against itself
   };
   std::vector<Task> tasks(int depth) const;
-  template <class Fn>
-  bool run(const Task& t, Fn&& fn) const {
-    return t.a == t.b ? self(t.a, fn) : pair(t.a, t.b, fn);
+  // skip(n): node n reports no pair within itself (nor do the nodes under it).
+  template <class Skip, class Fn>
+  bool run(const Task& t, const Skip& skip, Fn&& fn) const {
+    // The piece lies within node a (a against itself) or within the parent of siblings a, b.
+    for (int n = t.a == t.b ? t.a : parent(t.a); n >= 0; n = parent(n))
+      if (skip(n)) return true;
+    return t.a == t.b ? self(t.a, skip, fn) : pair(t.a, t.b, fn);
   }
 
  private:
   struct Node {
     Box3 box;
     int left = -1, right = -1;  // children; -1 for a leaf
+    int parent = -1;            // -1 for the root
     int triangle = -1;          // the leaf's triangle
+    int begin = 0, end = 0;     // its triangles: order_[begin, end)
   };
+  static bool no_skip(int) { return false; }
   void split(int n, int depth, std::vector<Task>& out) const;
   int build(std::vector<int>& order, std::size_t begin, std::size_t end,
-            const std::vector<Eigen::Vector3d>& centroids);
+            const std::vector<Eigen::Vector3d>& centroids, const std::vector<int>& groups);
+  // A split of order[begin, end) between groups nearest its middle; 0 when it holds one group.
+  void link(int parent, int left, int right);
+  static std::size_t group_split(std::vector<int>& order, std::size_t begin, std::size_t end,
+                                 const std::vector<int>& groups);
 
-  template <class Fn>
-  bool self(int n, Fn& fn) const {
+  template <class Skip, class Fn>
+  bool self(int n, const Skip& skip, Fn& fn) const {
     const Node& node = nodes_[std::size_t(n)];
-    if (node.left < 0) return true;
-    return self(node.left, fn) && self(node.right, fn) && pair(node.left, node.right, fn);
+    if (node.left < 0 || skip(n)) return true;
+    return self(node.left, skip, fn) && self(node.right, skip, fn) &&
+           pair(node.left, node.right, fn);
   }
   template <class Fn>
   bool pair(int a, int b, Fn& fn) const {
@@ -91,6 +117,7 @@ class TriangleBvh {
   }
 
   std::vector<Node> nodes_;  // pre-order: the root first, a parent before its children
+  std::vector<int> order_;   // the triangles in the order the nodes' ranges cover them
   std::vector<Box3> leaf_boxes_;
 };
 

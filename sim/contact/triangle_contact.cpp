@@ -61,6 +61,19 @@ bool sides_within(bool edge_edge, const std::array<V3, 4>& lo, const std::array<
   return (lo_p.array() <= hi_q.array() + d).all() && (lo_q.array() <= hi_p.array() + d).all();
 }
 
+// The cloth of each triangle: the tree keeps the cloths in their own subtrees, so each can be one
+// flat patch.
+template <class T>
+std::vector<int> triangle_cloths(const Model<T>& m) {
+  std::vector<int> cloth(m.n, 0);
+  for (std::size_t c = 0; c < m.cloths.size(); ++c)
+    std::fill_n(cloth.begin() + m.cloths[c].offset,
+                std::size_t(m.cloths[c].nu) * std::size_t(m.cloths[c].nv), int(c));
+  std::vector<int> out(m.triangles.size());
+  for (std::size_t t = 0; t < out.size(); ++t) out[t] = cloth[std::size_t(m.triangles[t][0])];
+  return out;
+}
+
 }  // namespace
 
 template <class T>
@@ -68,7 +81,8 @@ TriangleContact<T>::TriangleContact(const Model<T>& m, const SolverSpec& spec)
     : thickness_(spec.self_thickness),
       eta_(0.01 * spec.self_thickness),
       features_(surface_features(m.triangles, m.n)),
-      bvh_(triangle_centroids(m.triangles, points_of(m.rest_positions))) {
+      bvh_(triangle_centroids(m.triangles, points_of(m.rest_positions)), triangle_cloths(m)),
+      flat_(bvh_, features_, m.rest_positions, 0.01 * spec.self_thickness) {
   cloth_of_.assign(m.n, 0);
   for (std::size_t c = 0; c < m.cloths.size(); ++c)
     std::fill_n(cloth_of_.begin() + m.cloths[c].offset,
@@ -86,27 +100,42 @@ TriangleContact<T>::TriangleContact(const Model<T>& m, const SolverSpec& spec)
   for (auto& part : task_pairs_) part.reserve(pairs_.capacity() / tasks_.size() + 64);
   returned_round_.assign(m.n, 0);
   returned_.reserve(m.n);
+  block_stray_.assign(3 * block_count(m.n), 0.0);
+  moved_.assign(m.n, 0);
+  moved_list_.reserve(m.n);
 }
 
 template <class T>
-void TriangleContact<T>::begin(const State<T>& s) {
+void TriangleContact<T>::begin(const State<T>& s, int threads) {
   x0_ = s.pos;  // same size: copies without allocating
-  // Something moved the cloth between substeps (a reset, a state set from outside).
-  if (!stale_ && strayed(x0_) > skin_) stale_ = true;
+  // Something moved the cloth between substeps (a reset, a state set from outside). With one
+  // flat patch over everything there are no pairs to keep; the patch's own test covers x0.
+  if (!stale_ && !all_flat() && strayed(x0_, threads) > skin_) stale_ = true;
 }
 
 // How far a vertex of x has strayed from where the pairs were collected, once the mean motion of
 // all vertices since then is taken away: the largest |(x_i - xc_i) - mean|. A common motion
-// changes no distance, so a falling or swinging cloth keeps its pairs. Serial, in double.
+// changes no distance, so a falling or swinging cloth keeps its pairs. In double, by blocks
+// summed in block order (the same answer for any thread count).
 template <class T>
-double TriangleContact<T>::strayed(const Vec3Array<T>& x) const {
+double TriangleContact<T>::strayed(const Vec3Array<T>& x, int threads) {
+  const std::size_t n = xc_.size(), blocks = block_count(n);
+  for_each_block_indexed(n, threads, [&](std::size_t b, std::size_t lo, std::size_t hi) {
+    V3 sum = V3::Zero();
+    for (std::size_t i = lo; i < hi; ++i) sum += load3(x, i) - load3(xc_, i);
+    for (std::size_t a = 0; a < 3; ++a) block_stray_[3 * b + a] = sum[long(a)];
+  });
   V3 mean = V3::Zero();
-  for (std::size_t i = 0; i < xc_.size(); ++i) mean += load3(x, i) - load3(xc_, i);
-  mean /= double(std::max<std::size_t>(xc_.size(), 1));
-  double most = 0.0;
-  for (std::size_t i = 0; i < xc_.size(); ++i)
-    most = std::max(most, (load3(x, i) - load3(xc_, i) - mean).squaredNorm());
-  return std::sqrt(most);
+  for (std::size_t b = 0; b < blocks; ++b)
+    mean += V3(block_stray_[3 * b], block_stray_[3 * b + 1], block_stray_[3 * b + 2]);
+  mean /= double(std::max<std::size_t>(n, 1));
+  for_each_block_indexed(n, threads, [&](std::size_t b, std::size_t lo, std::size_t hi) {
+    double most = 0.0;
+    for (std::size_t i = lo; i < hi; ++i)
+      most = std::max(most, (load3(x, i) - load3(xc_, i) - mean).squaredNorm());
+    block_stray_[b] = most;
+  });
+  return std::sqrt(*std::max_element(block_stray_.begin(), block_stray_.begin() + long(blocks)));
 }
 
 // Each triangle's and edge's box around its vertices where the pairs are collected (xc).
@@ -141,10 +170,15 @@ void TriangleContact<T>::feature_boxes(int threads) {
 template <class T>
 bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
   xc_ = s.pos;
-  skin_ = std::max(kSkin * thickness_, strayed(x0_) * (1.0 + 1e-6));
+  skin_ = std::max(kSkin * thickness_, strayed(x0_, threads) * (1.0 + 1e-6));
   gap_ = float(thickness_ + 2.0 * skin_);
-  feature_boxes(threads);
   stale_ = false;
+  // The patches that cannot touch themselves over the substep under way, skipped below.
+  flat_.choose(bvh_, features_, x0_, s.pos, threads);
+  pairs_.clear();
+  flag_.clear();
+  if (all_flat()) return true;
+  feature_boxes(threads);
   std::vector<Box3>& boxes = bvh_.leaf_boxes();
   const double pad = 0.5 * double(gap_);
   for (std::size_t t = 0; t < boxes.size(); ++t) {
@@ -162,13 +196,13 @@ bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
       std::vector<Pair>& out = task_pairs_[std::size_t(k)];
       out.clear();
       std::size_t leaves = 0;
-      task_done_[std::size_t(k)] = bvh_.run(tasks_[std::size_t(k)], [&](int ta, int tb) {
+      const auto skip = [&](int n) { return flat_.skipped(n); };
+      task_done_[std::size_t(k)] = bvh_.run(tasks_[std::size_t(k)], skip, [&](int ta, int tb) {
         add_pairs(ta, tb, out);
         return ++leaves <= bound && out.size() <= bound;
       });
     }
   });
-  pairs_.clear();
   std::size_t total = 0;
   bool done = true;
   for (std::size_t k = 0; k < task_pairs_.size(); ++k) {
@@ -177,7 +211,6 @@ bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
   }
   if (!done || total > bound) {
     stale_ = true;
-    flag_.clear();
     return false;
   }
   for (const std::vector<Pair>& part : task_pairs_)
@@ -287,8 +320,17 @@ bool TriangleContact<T>::push_apart(const Model<T>& m, State<T>& s, const Pair& 
   const double len = slide.norm();
   const V3 stop = len <= kFriction * depth ? V3(-slide) : V3(-(kFriction * depth / len) * slide);
   const V3 correction = (depth * n + stop) / W;
-  for (std::size_t k = 0; k < 4; ++k)
-    store3(s.pos, std::size_t(p.v[k]), V3(x[k] + w[k] * inv[k] * correction));
+  for (std::size_t k = 0; k < 4; ++k) {
+    const auto i = std::size_t(p.v[k]);
+    if (!moved_[i]) {  // where the integrator left it, for the velocity
+      moved_[i] = 1;
+      moved_list_.push_back(p.v[k]);
+      x_step_.x[i] = s.pos.x[i];
+      x_step_.y[i] = s.pos.y[i];
+      x_step_.z[i] = s.pos.z[i];
+    }
+    store3(s.pos, i, V3(x[k] + w[k] * inv[k] * correction));
+  }
   return true;
 }
 
@@ -396,12 +438,51 @@ int TriangleContact<T>::return_all(const Model<T>& m, State<T>& s) {
   return count;
 }
 
+// Velocities take the position change of the pushes over h (only the vertices they moved).
+template <class T>
+void TriangleContact<T>::update_velocities(State<T>& s, double h) {
+  const double inv_h = 1.0 / h;
+  for (std::int32_t v : moved_list_) {
+    const auto i = std::size_t(v);
+    store3(s.vel, i, V3(load3(s.vel, i) + inv_h * (load3(s.pos, i) - load3(x_step_, i))));
+    moved_[i] = 0;
+  }
+  moved_list_.clear();
+}
+
+template <class T>
+bool TriangleContact<T>::recollect_if_needed(const State<T>& s, int threads, bool& flag) {
+  const bool needed = stale_ || (!all_flat() && strayed(s.pos, threads) > skin_) ||
+                      !flat_.still_flat(features_, x0_, s.pos, threads);
+  if (!needed) return true;
+  flag = true;
+  return collect_pairs(s, threads);
+}
+
+// The fail-safe returns vertices to x0, which changes the motion of the flat patches' triangles
+// too: while that bends one, the pairs are collected again (without it) and the fail-safe runs
+// on them; a bounded number of times, then every free vertex returns.
+template <class T>
+bool TriangleContact<T>::guarantee(const Model<T>& m, State<T>& s, int threads) {
+  for (int retry = 0;; ++retry) {
+    stats_.rolled_back += fail_safe(m, s, threads);
+    if (stats_.rolled_back == 0 || flat_.patch_count() == 0 ||
+        flat_.still_flat(features_, x0_, s.pos, threads))
+      return true;
+    if (retry == kMaxFlatRetries) {
+      stats_.rolled_back = return_all(m, s);
+      return true;
+    }
+    stats_.recollected = true;
+    if (!collect_pairs(s, threads)) return false;
+  }
+}
+
 template <class T>
 bool TriangleContact<T>::respond(const Model<T>& m, State<T>& s, double h, int threads) {
   stats_ = {};
-  x_step_ = s.pos;
   // The pairs again when a vertex has strayed past the skin since they were collected.
-  if (stale_ || strayed(s.pos) > skin_) {
+  if (stale_ || (!all_flat() && strayed(s.pos, threads) > skin_)) {
     stats_.collected = true;
     if (!collect_pairs(s, threads)) return undo(m, s);
   }
@@ -415,18 +496,14 @@ bool TriangleContact<T>::respond(const Model<T>& m, State<T>& s, double h, int t
     for (std::size_t k = 0; k < pairs_.size(); ++k)
       if (flag_[k] && push_apart(m, s, pairs_[k])) ++contacts;
   stats_.contacts = contacts;
-  const double inv_h = 1.0 / h;
-  for (std::size_t i = 0; i < m.n; ++i) {
-    const V3 d = load3(s.pos, i) - load3(x_step_, i);
-    if (d.x() == 0.0 && d.y() == 0.0 && d.z() == 0.0) continue;
-    store3(s.vel, i, V3(load3(s.vel, i) + inv_h * d));
-  }
-  // The fail-safe needs every pair whose swept boxes meet: new ones if a push left a box.
-  if (strayed(s.pos) > skin_) {
-    stats_.recollected = true;
-    if (!collect_pairs(s, threads)) return undo(m, s);
-  }
-  stats_.rolled_back = fail_safe(m, s, threads);
+  update_velocities(s, h);
+  // The fail-safe needs every pair whose swept boxes meet: new ones if a push left a box, or if
+  // a flat patch bent in the substep.
+  if (!recollect_if_needed(s, threads, stats_.recollected)) return undo(m, s);
+  if (!guarantee(m, s, threads)) return undo(m, s);
+  stats_.candidates = int(pairs_.size());
+  stats_.flat_patches = int(flat_.patch_count());
+  stats_.flat_triangles = int(flat_.triangles_covered());
   return contacts > 0 || stats_.rolled_back > 0;
 }
 

@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "sim/contact/contact_stats.hpp"
+#include "sim/contact/flat_patches.hpp"
 #include "sim/contact/surface_features.hpp"
 #include "sim/contact/triangle_bvh.hpp"
 #include "sim/integrators/integrator.hpp"
@@ -59,11 +60,14 @@ class TriangleContact {
   static constexpr int kTaskDepth = 5;
   // The skin, in thicknesses.
   static constexpr double kSkin = 0.5;
+  // Collections of the pairs after a fail-safe whose returns bent a flat patch, before every
+  // free vertex returns.
+  static constexpr int kMaxFlatRetries = 4;
 
   TriangleContact(const Model<T>& m, const SolverSpec& spec);
 
   // Before a substep: where it starts.
-  void begin(const State<T>& s);
+  void begin(const State<T>& s, int threads);
   // After the substep of length h. Returns true when it changed some vertex.
   bool respond(const Model<T>& m, State<T>& s, double h, int threads);
 
@@ -84,11 +88,16 @@ class TriangleContact {
   };
   // Returns false when the tangle was beyond kMaxPairsPerTriangle.
   bool collect_pairs(const State<T>& s, int threads);
+  // The pairs again when a vertex strayed past the skin or a flat patch bent (with `flag` set in
+  // the stats); false when the tangle was beyond the bound.
+  bool recollect_if_needed(const State<T>& s, int threads, bool& flag);
+  // Whether the pairs need no check against the skin (one flat patch covers every triangle).
+  bool all_flat() const { return flat_.covers_all(); }
   // Every free vertex back to x0 with zero velocity; returns how many.
   int return_all(const Model<T>& m, State<T>& s);
   bool undo(const Model<T>& m, State<T>& s);
   // The farthest a vertex of x has strayed from xc, the mean motion taken away.
-  double strayed(const Vec3Array<T>& x) const;
+  double strayed(const Vec3Array<T>& x, int threads);
   FloatBox point_box(int v) const;
   void add_pairs(int ta, int tb, std::vector<Pair>& out) const;
   void keep_if_close(const Pair& p, std::vector<Pair>& out) const;
@@ -101,14 +110,19 @@ class TriangleContact {
   void return_vertex(State<T>& s, std::size_t i) const;
   bool return_vertices(const Model<T>& m, State<T>& s, const Pair& p, int round);
   int fail_safe(const Model<T>& m, State<T>& s, int threads);
+  // The fail-safe, and again while its returns bent a flat patch; false on a tangle.
+  bool guarantee(const Model<T>& m, State<T>& s, int threads);
+  // Velocities take the pushes' position change over h.
+  void update_velocities(State<T>& s, double h);
 
   double thickness_ = 0.0;
   double eta_ = 0.0;
   SurfaceFeatures features_;
   TriangleBvh bvh_;
+  FlatPatches<T> flat_;
   std::vector<std::int32_t> cloth_of_;  // per vertex
   Vec3Array<T> x0_;                     // the substep's start
-  Vec3Array<T> x_step_;                 // what the integrator made
+  Vec3Array<T> x_step_;                 // what the integrator made, of the vertices pushed
   float gap_ = 0.0f;   // m: how close two boxes at xc make a candidate pair (thickness + 2 skin)
   Vec3Array<T> xc_;    // where the pairs were collected
   double skin_ = 0.0;  // m: how far a vertex may stray from xc
@@ -119,6 +133,9 @@ class TriangleContact {
   bool stale_ = true;                              // a vertex left its box between substeps
   std::vector<Pair> pairs_;
   std::vector<std::uint8_t> flag_;   // per pair: the last parallel test's answer
+  std::vector<double> block_stray_;  // per block of vertices: partial sums, then largest strays
+  std::vector<std::uint8_t> moved_;  // per vertex: a push moved it this substep
+  std::vector<std::int32_t> moved_list_;  // those vertices; x_step_ holds where they were
   std::vector<int> returned_round_;  // per vertex: the fail-safe round that returned it (0: none)
   std::vector<int> returned_;        // the vertices returned this substep
   ClothContactStats stats_;

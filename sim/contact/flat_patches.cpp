@@ -1,0 +1,208 @@
+#include "sim/contact/flat_patches.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+#include "sim/core/parallel.hpp"
+#include "sim/core/vec3_eigen.hpp"
+
+namespace clothlab {
+namespace {
+
+using V3 = Eigen::Vector3d;
+using V2 = Eigen::Vector2d;
+
+template <class T>
+V3 normal_at(const std::array<int, 3>& t, const Vec3Array<T>& x) {
+  const V3 a = load3(x, std::size_t(t[0]));
+  return (load3(x, std::size_t(t[1])) - a).cross(load3(x, std::size_t(t[2])) - a);
+}
+
+}  // namespace
+
+template <class T>
+FlatPatches<T>::FlatPatches(const TriangleBvh& bvh, const SurfaceFeatures& f,
+                            const Vec3Array<T>& rest, double margin)
+    : topology_(patch_topology(bvh, f, rest.size())), margin_(margin) {
+  rest_area2_.resize(f.triangles.size());
+  for (std::size_t t = 0; t < f.triangles.size(); ++t)
+    rest_area2_[t] = normal_at(f.triangles[t], rest).norm();
+  chosen_.assign(bvh.node_count(), 0);
+  node_normal_.assign(bvh.node_count(), V3::Zero());
+  patches_.reserve(bvh.node_count());
+  work_.reserve(f.triangles.size());
+  block_ok_.assign(block_count(f.triangles.size()), 1);
+  rim_.reserve(
+      std::size_t(*std::max_element(topology_.rim_begin.begin(), topology_.rim_begin.end())));
+}
+
+template <class T>
+void FlatPatches<T>::clear() {
+  for (const Patch& p : patches_) chosen_[std::size_t(p.node)] = 0;
+  patches_.clear();
+  work_.clear();
+}
+
+// Each node's normals summed at x (its axis), bottom-up: children come after their parents.
+template <class T>
+void FlatPatches<T>::node_normals(const TriangleBvh& bvh, const SurfaceFeatures& f,
+                                  const Vec3Array<T>& x, int threads) {
+  const std::size_t nodes = bvh.node_count();
+  for_each_block(nodes, threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t n = begin; n < end; ++n)
+      if (bvh.left(int(n)) < 0)
+        node_normal_[n] = normal_at(f.triangles[std::size_t(*bvh.triangles_begin(int(n)))], x);
+  });
+  for (std::size_t n = nodes; n-- > 0;)
+    if (bvh.left(int(n)) >= 0)
+      node_normal_[n] = node_normal_[std::size_t(bvh.left(int(n)))] +
+                        node_normal_[std::size_t(bvh.right(int(n)))];
+}
+
+template <class T>
+void FlatPatches<T>::choose(const TriangleBvh& bvh, const SurfaceFeatures& f,
+                            const Vec3Array<T>& x0, const Vec3Array<T>& x1, int threads) {
+  clear();
+  if (bvh.node_count() == 0) return;
+  node_normals(bvh, f, x1, threads);
+  visit(0, bvh, f, x0, x1, threads);
+}
+
+// Top-down: a node flat over the motion is chosen (and nothing under it); otherwise its children
+// are tried.
+template <class T>
+void FlatPatches<T>::visit(int node, const TriangleBvh& bvh, const SurfaceFeatures& f,
+                           const Vec3Array<T>& x0, const Vec3Array<T>& x1, int threads) {
+  const int* begin = bvh.triangles_begin(node);
+  const std::size_t size = std::size_t(bvh.triangles_end(node) - begin);
+  if (size < kMinTriangles) return;
+  const V3 sum = node_normal_[std::size_t(node)];
+  if (topology_.disk[std::size_t(node)] && sum.squaredNorm() > 0.0) {
+    const V3 axis = sum.normalized();
+    for_each_block_indexed(size, threads, [&](std::size_t b, std::size_t lo, std::size_t hi) {
+      std::uint8_t ok = 1;
+      for (std::size_t k = lo; k < hi && ok; ++k)
+        ok = clears(f.triangles[std::size_t(begin[k])], axis,
+                    kChooseBound * rest_area2_[std::size_t(begin[k])], x0, x1);
+      block_ok_[b] = ok;
+    });
+    const bool flat = std::all_of(block_ok_.begin(), block_ok_.begin() + long(block_count(size)),
+                                  [](std::uint8_t ok) { return ok != 0; });
+    if (flat && rim_simple(node, axis, x0, x1)) {
+      chosen_[std::size_t(node)] = 1;
+      const auto patch = std::int32_t(patches_.size());
+      patches_.push_back({node, axis});
+      for (std::size_t k = 0; k < size; ++k) work_.push_back({begin[k], patch});
+      return;
+    }
+  }
+  if (bvh.left(node) < 0) return;
+  visit(bvh.left(node), bvh, f, x0, x1, threads);
+  visit(bvh.right(node), bvh, f, x0, x1, threads);
+}
+
+template <class T>
+bool FlatPatches<T>::still_flat(const SurfaceFeatures& f, const Vec3Array<T>& x0,
+                                const Vec3Array<T>& x1, int threads) {
+  if (patches_.empty()) return true;
+  for_each_block_indexed(work_.size(), threads, [&](std::size_t b, std::size_t lo, std::size_t hi) {
+    std::uint8_t ok = 1;
+    for (std::size_t k = lo; k < hi && ok; ++k) {
+      const auto t = std::size_t(work_[k].triangle);
+      ok = clears(f.triangles[t], patches_[std::size_t(work_[k].patch)].axis,
+                  kKeepBound * rest_area2_[t], x0, x1);
+    }
+    block_ok_[b] = ok;
+  });
+  if (!std::all_of(block_ok_.begin(), block_ok_.begin() + long(block_count(work_.size())),
+                   [](std::uint8_t ok) { return ok != 0; }))
+    return false;
+  return std::all_of(patches_.begin(), patches_.end(),
+                     [&](const Patch& p) { return rim_simple(p.node, p.axis, x0, x1); });
+}
+
+// The three Bernstein coefficients of the triangle's normal along the axis over the motion
+// x0 -> x1 (its normal at time s is n0 (1-s)^2 + 2 m s (1-s) + n1 s^2): each must clear the bound.
+template <class T>
+bool FlatPatches<T>::clears(const std::array<int, 3>& t, const V3& axis, double bound,
+                            const Vec3Array<T>& x0, const Vec3Array<T>& x1) const {
+  const V3 a0 = load3(x0, std::size_t(t[0])), a1 = load3(x1, std::size_t(t[0]));
+  const V3 e0 = load3(x0, std::size_t(t[1])) - a0, f0 = load3(x0, std::size_t(t[2])) - a0;
+  const V3 e1 = load3(x1, std::size_t(t[1])) - a1, f1 = load3(x1, std::size_t(t[2])) - a1;
+  return axis.dot(e0.cross(f0)) >= bound && axis.dot(e1.cross(f1)) >= bound &&
+         0.5 * (axis.dot(e0.cross(f1)) + axis.dot(e1.cross(f0))) >= bound;
+}
+
+// Whether the node's rim, projected onto the plane across the axis, stays clear of itself over
+// the motion: rim edges that share no vertex and whose boxes meet are tested for a separating
+// line (sort and sweep along the plane's first axis).
+template <class T>
+bool FlatPatches<T>::rim_simple(int node, const V3& axis, const Vec3Array<T>& x0,
+                                const Vec3Array<T>& x1) {
+  const std::size_t begin = std::size_t(topology_.rim_begin[std::size_t(node)]);
+  const std::size_t end = std::size_t(topology_.rim_begin[std::size_t(node) + 1]);
+  const V3 u = axis.unitOrthogonal(), w = axis.cross(u);
+  V3 motion = V3::Zero();
+  for (std::size_t k = begin; k < end; ++k)
+    for (std::int32_t v : topology_.rim[k])
+      motion += load3(x1, std::size_t(v)) - load3(x0, std::size_t(v));
+  motion /= double(2 * (end - begin));
+  const auto plane = [&](const V3& x) { return V2(u.dot(x), w.dot(x)); };
+  rim_.clear();
+  for (std::size_t k = begin; k < end; ++k) {
+    RimEdge e;
+    e.v = topology_.rim[k];
+    for (std::size_t j = 0; j < 2; ++j) {
+      e.p[j] = plane(load3(x0, std::size_t(e.v[j])));
+      e.p[2 + j] = plane(load3(x1, std::size_t(e.v[j])) - motion);
+    }
+    e.lo = {e.p[0].x(), e.p[0].y()};
+    e.hi = e.lo;
+    for (const V2& p : e.p)
+      for (std::size_t a = 0; a < 2; ++a) {
+        e.lo[a] = std::min(e.lo[a], p[long(a)]);
+        e.hi[a] = std::max(e.hi[a], p[long(a)]);
+      }
+    rim_.push_back(e);
+  }
+  std::sort(rim_.begin(), rim_.end(),
+            [](const RimEdge& a, const RimEdge& b) { return a.lo[0] < b.lo[0]; });
+  for (std::size_t i = 0; i < rim_.size(); ++i)
+    for (std::size_t j = i + 1; j < rim_.size() && rim_[j].lo[0] <= rim_[i].hi[0] + margin_; ++j) {
+      const RimEdge &a = rim_[i], &b = rim_[j];
+      const bool touch =
+          a.v[0] == b.v[0] || a.v[0] == b.v[1] || a.v[1] == b.v[0] || a.v[1] == b.v[1];
+      if (touch || a.lo[1] > b.hi[1] + margin_ || b.lo[1] > a.hi[1] + margin_) continue;
+      if (!apart(a, b)) return false;
+    }
+  return true;
+}
+
+// Whether the hulls of two rim edges' end positions are separated, by the margin, along one of the
+// edges at x0 or at x1 or across it (the edges of a straight rim are apart along it).
+template <class T>
+bool FlatPatches<T>::apart(const RimEdge& a, const RimEdge& b) const {
+  const std::array<V2, 4> directions = {a.p[1] - a.p[0], a.p[3] - a.p[2], b.p[1] - b.p[0],
+                                        b.p[3] - b.p[2]};
+  for (std::size_t k = 0; k < 8; ++k) {
+    const V2& d = directions[k / 2];
+    const double len = d.norm();
+    if (len == 0.0) continue;
+    const V2 n = k % 2 == 0 ? V2(d / len) : V2(-d.y() / len, d.x() / len);
+    double a_lo = n.dot(a.p[0]), a_hi = a_lo, b_lo = n.dot(b.p[0]), b_hi = b_lo;
+    for (std::size_t j = 1; j < 4; ++j) {
+      a_lo = std::min(a_lo, n.dot(a.p[j]));
+      a_hi = std::max(a_hi, n.dot(a.p[j]));
+      b_lo = std::min(b_lo, n.dot(b.p[j]));
+      b_hi = std::max(b_hi, n.dot(b.p[j]));
+    }
+    if (a_hi + margin_ < b_lo || b_hi + margin_ < a_lo) return true;
+  }
+  return false;
+}
+
+template class FlatPatches<float>;
+template class FlatPatches<double>;
+
+}  // namespace clothlab

@@ -1,0 +1,182 @@
+// Normal-cone culling for cloth contact (sim/contact/flat_patches.hpp, patch_topology.hpp): which
+// nodes of the tree are disks, a flat or gently bent sheet skipped as one patch, and the three
+// ways a patch can touch itself that the test must catch: a fold (normals beyond the cone), a
+// strip wound over itself (normals fine, the rim crosses in projection) and a turn within one
+// substep (the ends fine, the motion between them collapses every triangle).
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "load/scene_load.hpp"
+#include "sim/contact/flat_patches.hpp"
+#include "sim/contact/intersections.hpp"
+#include "sim/solver.hpp"
+
+namespace clothlab {
+namespace {
+
+using V3 = Eigen::Vector3d;
+
+// An nu x nv grid of vertices placed by place(i, j), two triangles a square, wound alike.
+struct Mesh {
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<V3> x;
+  std::vector<int> groups;
+};
+template <class Place>
+void add_grid(Mesh& m, int nu, int nv, int group, Place place) {
+  const int offset = int(m.x.size());
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) m.x.push_back(place(i, j));
+  for (int j = 0; j + 1 < nv; ++j)
+    for (int i = 0; i + 1 < nu; ++i) {
+      const int v = offset + i + j * nu;
+      m.triangles.push_back({v, v + 1, v + nu + 1});
+      m.triangles.push_back({v, v + nu + 1, v + nu});
+      m.groups.insert(m.groups.end(), 2, group);
+    }
+}
+Vec3Array<double> soa(const std::vector<V3>& x) {
+  Vec3Array<double> a;
+  a.resize(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) a.set(i, x[i].x(), x[i].y(), x[i].z());
+  return a;
+}
+
+struct Culling {
+  TriangleBvh bvh;
+  SurfaceFeatures features;
+  FlatPatches<double> flat;
+  Culling(const Mesh& m, const std::vector<V3>& rest)
+      : bvh(triangle_centroids(m.triangles, rest), m.groups),
+        features(surface_features(m.triangles, rest.size())),
+        flat(bvh, features, soa(rest), 1e-5) {}
+  void choose(const std::vector<V3>& x0, const std::vector<V3>& x1) {
+    flat.choose(bvh, features, soa(x0), soa(x1), 2);
+  }
+};
+
+V3 plane(int i, int j) {
+  return V3(0.05 * i, 0.0, 0.05 * j);
+}
+
+TEST(PatchTopology, GridNodesAreDisksAndEachClothHasItsOwnSubtree) {
+  Mesh one;
+  add_grid(one, 12, 12, 0, plane);
+  const TriangleBvh bvh(triangle_centroids(one.triangles, one.x));
+  const PatchTopology t =
+      patch_topology(bvh, surface_features(one.triangles, one.x.size()), one.x.size());
+  ASSERT_TRUE(t.disk[0]);
+  EXPECT_EQ(t.rim_begin[1] - t.rim_begin[0], 4 * 11);  // the grid's border
+  // Two sheets one above the other: the root is two disks, split between the cloths first.
+  Mesh two = one;
+  add_grid(two, 12, 12, 1, [](int i, int j) { return V3(plane(i, j) + V3(0, 0.01, 0)); });
+  const TriangleBvh by_cloth(triangle_centroids(two.triangles, two.x), two.groups);
+  const PatchTopology u =
+      patch_topology(by_cloth, surface_features(two.triangles, two.x.size()), two.x.size());
+  EXPECT_FALSE(u.disk[0]);
+  EXPECT_TRUE(u.disk[std::size_t(by_cloth.left(0))]);
+  EXPECT_TRUE(u.disk[std::size_t(by_cloth.right(0))]);
+  // Without the groups the median splits cut across both sheets: the root's children are not
+  // disks (each holds pieces of both).
+  const TriangleBvh mixed(triangle_centroids(two.triangles, two.x));
+  const PatchTopology w =
+      patch_topology(mixed, surface_features(two.triangles, two.x.size()), two.x.size());
+  EXPECT_FALSE(w.disk[std::size_t(mixed.left(0))]);
+}
+
+// A flat sheet moving as one, and the same sheet bent into a gentle arc (45 degrees end to end),
+// are one patch; the sheet folded over onto itself is not, but patches of each half are (at least
+// a third of the sheet: the tree's median splits do not follow the fold).
+TEST(FlatPatches, FlatAndGentlyBentSheetsAreOnePatchAFoldIsNot) {
+  Mesh m;
+  add_grid(m, 16, 16, 0, plane);
+  Culling c(m, m.x);
+  std::vector<V3> moved = m.x;
+  for (V3& p : moved) p += V3(0.01, -0.02, 0.003);
+  c.choose(m.x, moved);
+  EXPECT_TRUE(c.flat.covers_all());
+  EXPECT_EQ(c.flat.triangles_covered(), m.triangles.size());
+  std::vector<V3> arc = m.x;
+  const double radius = 0.75 / (std::numbers::pi / 4);
+  for (V3& p : arc) {
+    const double a = p.x() / radius;
+    p = V3(radius * std::sin(a), radius * (1 - std::cos(a)), p.z());
+  }
+  c.choose(arc, arc);
+  EXPECT_TRUE(c.flat.covers_all());
+  // Folded along x = 0.375: the right half turned over onto the left, 1 cm above it.
+  std::vector<V3> folded = m.x;
+  for (V3& p : folded)
+    if (p.x() > 0.375) p = V3(0.75 - p.x(), 0.01, p.z());
+  c.choose(folded, folded);
+  EXPECT_FALSE(c.flat.covers_all());
+  EXPECT_GE(c.flat.patch_count(), 2u);
+  EXPECT_GT(c.flat.triangles_covered(), m.triangles.size() / 3);
+}
+
+// A strip lying flat (every normal straight up) wound round 1.3 times, rising 1 cm a turn: its
+// own rim crosses in plan, so it is not a patch; wound 0.8 times it is.
+TEST(FlatPatches, AStripWoundOverItselfIsCaughtByItsRim) {
+  const auto wound = [](double turns) {
+    Mesh m;
+    add_grid(m, 80, 2, 0, [turns](int i, int j) {
+      const double a = 2 * std::numbers::pi * turns * i / 79.0, r = 0.2 + 0.03 * j;
+      return V3(r * std::cos(a), 0.01 * a / (2 * std::numbers::pi), r * std::sin(a));
+    });
+    return m;
+  };
+  for (const double turns : {0.8, 1.3}) {
+    const Mesh m = wound(turns);
+    Culling c(m, m.x);
+    c.choose(m.x, m.x);
+    // Every triangle faces straight up or down alike (the cone test passes).
+    EXPECT_EQ(c.flat.covers_all(), turns < 1.0) << turns << " turns";
+  }
+}
+
+// The sheet turned half round about its normal within one substep: flat at both ends, but the
+// straight-line motion between them passes every triangle through a point (the middle Bernstein
+// coefficient of its normal points the other way), so nothing is a patch.
+TEST(FlatPatches, AHalfTurnWithinOneSubstepIsNotFlat) {
+  Mesh m;
+  add_grid(m, 16, 16, 0, plane);
+  Culling c(m, m.x);
+  std::vector<V3> turned = m.x;
+  const V3 centre(0.375, 0.0, 0.375);
+  for (V3& p : turned) p = centre - (p - centre);
+  c.choose(m.x, turned);
+  EXPECT_EQ(c.flat.patch_count(), 0u);
+  // A chosen patch is kept while it stays flat, and not once it turns.
+  c.choose(m.x, m.x);
+  ASSERT_TRUE(c.flat.covers_all());
+  EXPECT_TRUE(c.flat.still_flat(c.features, soa(m.x), soa(m.x), 2));
+  EXPECT_FALSE(c.flat.still_flat(c.features, soa(m.x), soa(turned), 2));
+}
+
+// A 64 x 64 sheet falling flat with triangle contact on: one patch, no candidate pair at all.
+TEST(FlatPatches, AFallingFlatSheetHasNoCandidatePairs) {
+  const std::string toml = R"(
+[[cloth]]
+size = [1.0, 1.0]
+resolution = [64, 64]
+[solver]
+integrator = "xpbd"
+dt = 0.0166667
+cloth_contact = true
+self_thickness = 0.004
+)";
+  std::unique_ptr<Solver> s = make_solver(read_scene_string(toml, "flat.toml"));
+  ASSERT_TRUE(s->advance(0.2).ok());
+  const ClothContactStats c = *s->last_cloth_contact();
+  EXPECT_EQ(c.candidates, 0);
+  EXPECT_EQ(c.flat_patches, 1);
+  EXPECT_EQ(c.flat_triangles, 2 * 63 * 63);
+}
+
+}  // namespace
+}  // namespace clothlab
