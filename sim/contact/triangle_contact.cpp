@@ -110,7 +110,8 @@ void TriangleContact<T>::begin(const State<T>& s, int threads) {
   x0_ = s.pos;  // same size: copies without allocating
   // Something moved the cloth between substeps (a reset, a state set from outside). With one
   // flat patch over everything there are no pairs to keep; the patch's own test covers x0.
-  if (!stale_ && !all_flat() && strayed(x0_, threads) > skin_) stale_ = true;
+  stray0_ = stale_ || all_flat() ? 0.0 : strayed(x0_, threads);
+  if (stray0_ > skin_) stale_ = true;
 }
 
 // How far a vertex of x has strayed from where the pairs were collected, once the mean motion of
@@ -170,7 +171,9 @@ void TriangleContact<T>::feature_boxes(int threads) {
 template <class T>
 bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
   xc_ = s.pos;
-  skin_ = std::max(kSkin * thickness_, strayed(x0_, threads) * (1.0 + 1e-6));
+  stray0_ = strayed(x0_, threads);
+  stray1_ = 0.0;
+  skin_ = std::max(kSkin * thickness_, stray0_ * (1.0 + 1e-6));
   gap_ = float(thickness_ + 2.0 * skin_);
   stale_ = false;
   // The patches that cannot touch themselves over the substep under way, skipped below.
@@ -259,7 +262,9 @@ void TriangleContact<T>::keep_if_close(const Pair& p, std::vector<Pair>& out) co
   const double d = thickness_ + 2.0 * skin_;
   const double dist2 = pair_dist2(
       p.edge_edge ? PrimitivePair::edge_edge : PrimitivePair::point_triangle, gather(xc_, p.v));
-  if (dist2 <= d * d) out.push_back(p);
+  if (dist2 > d * d) return;
+  out.push_back(p);
+  out.back().dist = float(std::sqrt(dist2) * (1.0 - 1e-6));
 }
 
 template <class T>
@@ -391,7 +396,8 @@ template <class T>
 int TriangleContact<T>::fail_safe(const Model<T>& m, State<T>& s, int threads) {
   returned_.clear();
   int unresolved = 0;
-  flag_pairs(threads, [&](const Pair& p) { return meets(p, s.pos); });
+  // Every vertex is at x1 (this round only): the distance bound holds over the substep.
+  flag_pairs(threads, [&](const Pair& p) { return !clear_by(p, 2.0 * eta_) && meets(p, s.pos); });
   for (int round = 1;; ++round) {
     if (round > kMaxRounds) {
       for (std::int32_t v : returned_) returned_round_[std::size_t(v)] = 0;
@@ -452,8 +458,9 @@ void TriangleContact<T>::update_velocities(State<T>& s, double h) {
 
 template <class T>
 bool TriangleContact<T>::recollect_if_needed(const State<T>& s, int threads, bool& flag) {
-  const bool needed = stale_ || (!all_flat() && strayed(s.pos, threads) > skin_) ||
-                      !flat_.still_flat(features_, x0_, s.pos, threads);
+  stray1_ = stale_ || all_flat() ? 0.0 : strayed(s.pos, threads);
+  const bool needed =
+      stale_ || stray1_ > skin_ || !flat_.still_flat(features_, x0_, s.pos, threads);
   if (!needed) return true;
   flag = true;
   return collect_pairs(s, threads);
@@ -482,7 +489,8 @@ template <class T>
 bool TriangleContact<T>::respond(const Model<T>& m, State<T>& s, double h, int threads) {
   stats_ = {};
   // The pairs again when a vertex has strayed past the skin since they were collected.
-  if (stale_ || (!all_flat() && strayed(s.pos, threads) > skin_)) {
+  stray1_ = stale_ || all_flat() ? 0.0 : strayed(s.pos, threads);
+  if (stale_ || stray1_ > skin_) {
     stats_.collected = true;
     if (!collect_pairs(s, threads)) return undo(m, s);
   }
@@ -491,7 +499,8 @@ bool TriangleContact<T>::respond(const Model<T>& m, State<T>& s, double h, int t
   // order (a pair that a neighbour's push brings within the thickness waits for the next
   // substep; the fail-safe holds meanwhile).
   int contacts = 0;
-  flag_pairs(threads, [&](const Pair& p) { return needs_push(p, s.pos); });
+  flag_pairs(threads,
+             [&](const Pair& p) { return !clear_by(p, thickness_) && needs_push(p, s.pos); });
   for (int it = 0; it < kProximityIterations; ++it)
     for (std::size_t k = 0; k < pairs_.size(); ++k)
       if (flag_[k] && push_apart(m, s, pairs_[k])) ++contacts;

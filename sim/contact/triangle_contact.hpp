@@ -31,6 +31,7 @@
 // in the pairs' fixed order: the same bytes for any thread count.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -79,6 +80,7 @@ class TriangleContact {
   struct Pair {
     std::array<std::int32_t, 4> v{};  // point, triangle; or edge, edge
     bool edge_edge = false;
+    float dist = 0.0f;  // m: at the collection positions xc (rounded down)
   };
   const std::vector<Pair>& pairs() const { return pairs_; }
 
@@ -126,6 +128,15 @@ class TriangleContact {
   float gap_ = 0.0f;   // m: how close two boxes at xc make a candidate pair (thickness + 2 skin)
   Vec3Array<T> xc_;    // where the pairs were collected
   double skin_ = 0.0;  // m: how far a vertex may stray from xc
+  // m: how far the substep's start x0 and its end x1 have strayed from xc (each from its own
+  // mean motion). A pair's distance differs from its distance at xc by at most twice the larger
+  // anywhere on the straight motion between them, so a pair farther apart at xc than the
+  // thickness (or eta) and twice that needs neither a push nor a collision test.
+  double stray0_ = 0.0, stray1_ = 0.0;
+  // Whether the pair is certainly more than d apart over the whole substep.
+  bool clear_by(const Pair& p, double d) const {
+    return double(p.dist) - 2.0 * std::max(stray0_, stray1_) > d;
+  }
   std::vector<FloatBox> triangle_box_, edge_box_;  // around their vertices at xc
   std::vector<TriangleBvh::Task> tasks_;           // the broad phase's pieces for threads
   std::vector<std::vector<Pair>> task_pairs_;      // per piece: the pairs it found
