@@ -27,12 +27,14 @@ FlatPatches<T>::FlatPatches(const TriangleBvh& bvh, const SurfaceFeatures& f,
     : topology_(patch_topology(bvh, f, rest.size())), margin_(margin) {
   rest_area2_.resize(f.triangles.size());
   for (std::size_t t = 0; t < f.triangles.size(); ++t)
-    rest_area2_[t] = normal_at(f.triangles[t], rest).norm();
+    rest_area2_[t] = T(normal_at(f.triangles[t], rest).norm());
   chosen_.assign(bvh.node_count(), 0);
   node_normal_.assign(bvh.node_count(), V3::Zero());
   patches_.reserve(bvh.node_count());
   work_.reserve(f.triangles.size());
+  patch_of_.assign(f.triangles.size(), -1);
   block_ok_.assign(block_count(f.triangles.size()), 1);
+  block_failure_.assign(block_count(f.triangles.size()), 0);
   rim_.reserve(
       std::size_t(*std::max_element(topology_.rim_begin.begin(), topology_.rim_begin.end())));
 }
@@ -40,6 +42,7 @@ FlatPatches<T>::FlatPatches(const TriangleBvh& bvh, const SurfaceFeatures& f,
 template <class T>
 void FlatPatches<T>::clear() {
   for (const Patch& p : patches_) chosen_[std::size_t(p.node)] = 0;
+  for (const Work& w : work_) patch_of_[std::size_t(w.triangle)] = -1;
   patches_.clear();
   work_.clear();
 }
@@ -49,7 +52,7 @@ template <class T>
 void FlatPatches<T>::node_normals(const TriangleBvh& bvh, const SurfaceFeatures& f,
                                   const Vec3Array<T>& x, int threads) {
   const std::size_t nodes = bvh.node_count();
-  for_each_block(nodes, threads, [&](std::size_t begin, std::size_t end) {
+  for_each_block(nodes, threads_for(nodes, threads), [&](std::size_t begin, std::size_t end) {
     for (std::size_t n = begin; n < end; ++n)
       if (bvh.left(int(n)) < 0)
         node_normal_[n] = normal_at(f.triangles[std::size_t(*bvh.triangles_begin(int(n)))], x);
@@ -66,55 +69,85 @@ void FlatPatches<T>::choose(const TriangleBvh& bvh, const SurfaceFeatures& f,
   clear();
   if (bvh.node_count() == 0) return;
   node_normals(bvh, f, x1, threads);
-  visit(0, bvh, f, x0, x1, threads);
+  visit(0, std::size_t(-1), bvh, f, x0, x1, threads);
 }
 
 // Top-down: a node flat over the motion is chosen (and nothing under it); otherwise its children
-// are tried.
+// are tried. `hint` is the position (in the tree's triangle order) of a triangle that failed the
+// parent: tested first, it usually fails the child that holds it at once (a crease stays where
+// it is), so a node that is not flat rarely costs a pass over its triangles.
 template <class T>
-void FlatPatches<T>::visit(int node, const TriangleBvh& bvh, const SurfaceFeatures& f,
-                           const Vec3Array<T>& x0, const Vec3Array<T>& x1, int threads) {
+void FlatPatches<T>::visit(int node, std::size_t hint, const TriangleBvh& bvh,
+                           const SurfaceFeatures& f, const Vec3Array<T>& x0, const Vec3Array<T>& x1,
+                           int threads) {
   const int* begin = bvh.triangles_begin(node);
   const std::size_t size = std::size_t(bvh.triangles_end(node) - begin);
   if (size < kMinTriangles) return;
+  const std::size_t first = std::size_t(begin - bvh.triangles_begin(0));
   const V3 sum = node_normal_[std::size_t(node)];
+  std::size_t failed = hint;
   if (topology_.disk[std::size_t(node)] && sum.squaredNorm() > 0.0) {
     const V3 axis = sum.normalized();
-    for_each_block_indexed(size, threads, [&](std::size_t b, std::size_t lo, std::size_t hi) {
-      std::uint8_t ok = 1;
-      for (std::size_t k = lo; k < hi && ok; ++k)
-        ok = clears(f.triangles[std::size_t(begin[k])], axis,
-                    kChooseBound * rest_area2_[std::size_t(begin[k])], x0, x1);
-      block_ok_[b] = ok;
-    });
-    const bool flat = std::all_of(block_ok_.begin(), block_ok_.begin() + long(block_count(size)),
-                                  [](std::uint8_t ok) { return ok != 0; });
-    if (flat && rim_simple(node, axis, x0, x1)) {
-      chosen_[std::size_t(node)] = 1;
-      const auto patch = std::int32_t(patches_.size());
-      patches_.push_back({node, axis});
-      for (std::size_t k = 0; k < size; ++k) work_.push_back({begin[k], patch});
-      return;
+    const Axis axis_t = axis.cast<T>();
+    const auto fails = [&](std::size_t k) {
+      return !clears(f.triangles[std::size_t(begin[k])], axis_t,
+                     T(kChooseBound) * rest_area2_[std::size_t(begin[k])], x0, x1);
+    };
+    if (hint >= first && hint < first + size && fails(hint - first)) {
+      failed = hint;
+    } else {
+      failed = first + first_failure(size, threads, fails);
+      if (failed == first + size && rim_simple(node, axis, x0, x1)) {
+        choose_node(node, axis, begin, size);
+        return;
+      }
     }
   }
   if (bvh.left(node) < 0) return;
-  visit(bvh.left(node), bvh, f, x0, x1, threads);
-  visit(bvh.right(node), bvh, f, x0, x1, threads);
+  visit(bvh.left(node), failed, bvh, f, x0, x1, threads);
+  visit(bvh.right(node), failed, bvh, f, x0, x1, threads);
+}
+
+// The first k in [0, size) with fails(k), or size: blocks in parallel, each to its first failure.
+template <class T>
+template <class Fails>
+std::size_t FlatPatches<T>::first_failure(std::size_t size, int threads, const Fails& fails) {
+  for_each_block_indexed(size, threads_for(size, threads),
+                         [&](std::size_t b, std::size_t lo, std::size_t hi) {
+                           std::size_t k = lo;
+                           while (k < hi && !fails(k)) ++k;
+                           block_failure_[b] = k < hi ? k : size;
+                         });
+  return *std::min_element(block_failure_.begin(),
+                           block_failure_.begin() + long(block_count(size)));
+}
+
+template <class T>
+void FlatPatches<T>::choose_node(int node, const V3& axis, const int* begin, std::size_t size) {
+  chosen_[std::size_t(node)] = 1;
+  const auto patch = std::int32_t(patches_.size());
+  patches_.push_back({node, axis, axis.cast<T>()});
+  for (std::size_t k = 0; k < size; ++k) {
+    work_.push_back({begin[k], patch});
+    patch_of_[std::size_t(begin[k])] = patch;
+  }
 }
 
 template <class T>
 bool FlatPatches<T>::still_flat(const SurfaceFeatures& f, const Vec3Array<T>& x0,
                                 const Vec3Array<T>& x1, int threads) {
   if (patches_.empty()) return true;
-  for_each_block_indexed(work_.size(), threads, [&](std::size_t b, std::size_t lo, std::size_t hi) {
-    std::uint8_t ok = 1;
-    for (std::size_t k = lo; k < hi && ok; ++k) {
-      const auto t = std::size_t(work_[k].triangle);
-      ok = clears(f.triangles[t], patches_[std::size_t(work_[k].patch)].axis,
-                  kKeepBound * rest_area2_[t], x0, x1);
-    }
-    block_ok_[b] = ok;
-  });
+  for_each_block_indexed(work_.size(), threads_for(work_.size(), threads),
+                         [&](std::size_t b, std::size_t lo, std::size_t hi) {
+                           std::uint8_t ok = 1;
+                           for (std::size_t k = lo; k < hi && ok; ++k) {
+                             const auto t = std::size_t(work_[k].triangle);
+                             ok = clears(f.triangles[t],
+                                         patches_[std::size_t(work_[k].patch)].axis_t,
+                                         T(kKeepBound) * rest_area2_[t], x0, x1);
+                           }
+                           block_ok_[b] = ok;
+                         });
   if (!std::all_of(block_ok_.begin(), block_ok_.begin() + long(block_count(work_.size())),
                    [](std::uint8_t ok) { return ok != 0; }))
     return false;
@@ -125,13 +158,17 @@ bool FlatPatches<T>::still_flat(const SurfaceFeatures& f, const Vec3Array<T>& x0
 // The three Bernstein coefficients of the triangle's normal along the axis over the motion
 // x0 -> x1 (its normal at time s is n0 (1-s)^2 + 2 m s (1-s) + n1 s^2): each must clear the bound.
 template <class T>
-bool FlatPatches<T>::clears(const std::array<int, 3>& t, const V3& axis, double bound,
+bool FlatPatches<T>::clears(const std::array<int, 3>& t, const Axis& axis, T bound,
                             const Vec3Array<T>& x0, const Vec3Array<T>& x1) const {
-  const V3 a0 = load3(x0, std::size_t(t[0])), a1 = load3(x1, std::size_t(t[0]));
-  const V3 e0 = load3(x0, std::size_t(t[1])) - a0, f0 = load3(x0, std::size_t(t[2])) - a0;
-  const V3 e1 = load3(x1, std::size_t(t[1])) - a1, f1 = load3(x1, std::size_t(t[2])) - a1;
-  return axis.dot(e0.cross(f0)) >= bound && axis.dot(e1.cross(f1)) >= bound &&
-         0.5 * (axis.dot(e0.cross(f1)) + axis.dot(e1.cross(f0))) >= bound;
+  const auto at = [](const Vec3Array<T>& x, int i) {
+    return Axis(x.x[std::size_t(i)], x.y[std::size_t(i)], x.z[std::size_t(i)]);
+  };
+  const Axis a0 = at(x0, t[0]), a1 = at(x1, t[0]);
+  const Axis e0 = at(x0, t[1]) - a0, f0 = at(x0, t[2]) - a0;
+  const Axis e1 = at(x1, t[1]) - a1, f1 = at(x1, t[2]) - a1;
+  // axis . (e x f) = e . (f x axis)
+  const Axis g0 = f0.cross(axis), g1 = f1.cross(axis);
+  return e0.dot(g0) >= bound && e1.dot(g1) >= bound && T(0.5) * (e0.dot(g1) + e1.dot(g0)) >= bound;
 }
 
 // Whether the node's rim, projected onto the plane across the axis, stays clear of itself over

@@ -51,14 +51,21 @@ class FlatPatches {
                   int threads);
 
   bool skipped(int node) const { return chosen_[std::size_t(node)] != 0; }
+  // Whether two triangles lie in one chosen patch (then they cannot touch).
+  bool same_patch(int ta, int tb) const {
+    const std::int32_t p = patch_of_[std::size_t(ta)];
+    return p >= 0 && p == patch_of_[std::size_t(tb)];
+  }
   bool covers_all() const { return !chosen_.empty() && chosen_.front() != 0; }
   std::size_t patch_count() const { return patches_.size(); }
   std::size_t triangles_covered() const { return work_.size(); }
 
  private:
+  using Axis = Eigen::Matrix<T, 3, 1>;
   struct Patch {
     int node = 0;
     Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+    Axis axis_t = Axis::UnitZ();  // in the solver's scalar, for the test every substep
   };
   struct RimEdge {
     std::array<double, 2> lo{}, hi{};
@@ -69,25 +76,30 @@ class FlatPatches {
   struct Work {
     std::int32_t triangle = 0, patch = 0;
   };
-  void visit(int node, const TriangleBvh& bvh, const SurfaceFeatures& f, const Vec3Array<T>& x0,
-             const Vec3Array<T>& x1, int threads);
+  void visit(int node, std::size_t hint, const TriangleBvh& bvh, const SurfaceFeatures& f,
+             const Vec3Array<T>& x0, const Vec3Array<T>& x1, int threads);
+  template <class Fails>
+  std::size_t first_failure(std::size_t size, int threads, const Fails& fails);
+  void choose_node(int node, const Eigen::Vector3d& axis, const int* begin, std::size_t size);
   void node_normals(const TriangleBvh& bvh, const SurfaceFeatures& f, const Vec3Array<T>& x,
                     int threads);
-  bool clears(const std::array<int, 3>& t, const Eigen::Vector3d& axis, double bound,
-              const Vec3Array<T>& x0, const Vec3Array<T>& x1) const;
+  bool clears(const std::array<int, 3>& t, const Axis& axis, T bound, const Vec3Array<T>& x0,
+              const Vec3Array<T>& x1) const;
   bool rim_simple(int node, const Eigen::Vector3d& axis, const Vec3Array<T>& x0,
                   const Vec3Array<T>& x1);
   bool apart(const RimEdge& a, const RimEdge& b) const;
 
   PatchTopology topology_;
-  std::vector<double> rest_area2_;  // per triangle: |n| at rest (twice its area)
+  std::vector<T> rest_area2_;  // per triangle: |n| at rest (twice its area)
   double margin_ = 0.0;
   std::vector<std::uint8_t> chosen_;          // per node
   std::vector<Eigen::Vector3d> node_normal_;  // per node: its triangles' normals summed (x1)
   std::vector<Patch> patches_;
-  std::vector<Work> work_;              // the chosen patches' triangles
-  std::vector<std::uint8_t> block_ok_;  // per block of a parallel test
-  std::vector<RimEdge> rim_;            // scratch for one rim
+  std::vector<Work> work_;                  // the chosen patches' triangles
+  std::vector<std::int32_t> patch_of_;      // per triangle: its chosen patch, or -1
+  std::vector<std::uint8_t> block_ok_;      // per block of a parallel test
+  std::vector<std::size_t> block_failure_;  // per block: its first failing triangle
+  std::vector<RimEdge> rim_;                // scratch for one rim
 };
 
 extern template class FlatPatches<float>;

@@ -74,6 +74,28 @@ std::vector<int> triangle_cloths(const Model<T>& m) {
   return out;
 }
 
+// Each cloth's centroids moved a third of its extent along every axis, those past the far side
+// wrapped round to the near one: a tree cut from them by median splits has its cuts where the
+// first tree's are not (the first tree's at dyadic fractions of the extent, these a third off).
+std::vector<V3> shifted_round(std::vector<V3> c, const std::vector<int>& cloth) {
+  const int cloths = c.empty() ? 0 : *std::max_element(cloth.begin(), cloth.end()) + 1;
+  std::vector<V3> lo(std::size_t(cloths), V3::Constant(INFINITY));
+  std::vector<V3> hi(std::size_t(cloths), V3::Constant(-INFINITY));
+  for (std::size_t t = 0; t < c.size(); ++t) {
+    lo[std::size_t(cloth[t])] = lo[std::size_t(cloth[t])].cwiseMin(c[t]);
+    hi[std::size_t(cloth[t])] = hi[std::size_t(cloth[t])].cwiseMax(c[t]);
+  }
+  for (std::size_t t = 0; t < c.size(); ++t) {
+    const V3 extent = hi[std::size_t(cloth[t])] - lo[std::size_t(cloth[t])];
+    for (long a = 0; a < 3; ++a) {
+      if (!(extent[a] > 0.0)) continue;
+      const double u = c[t][a] - lo[std::size_t(cloth[t])][a] + extent[a] / 3.0;
+      c[t][a] = lo[std::size_t(cloth[t])][a] + (u > extent[a] ? u - extent[a] : u);
+    }
+  }
+  return c;
+}
+
 }  // namespace
 
 template <class T>
@@ -82,7 +104,11 @@ TriangleContact<T>::TriangleContact(const Model<T>& m, const SolverSpec& spec)
       eta_(0.01 * spec.self_thickness),
       features_(surface_features(m.triangles, m.n)),
       bvh_(triangle_centroids(m.triangles, points_of(m.rest_positions)), triangle_cloths(m)),
-      flat_(bvh_, features_, m.rest_positions, 0.01 * spec.self_thickness) {
+      flat_(bvh_, features_, m.rest_positions, 0.01 * spec.self_thickness),
+      shifted_bvh_(shifted_round(triangle_centroids(m.triangles, points_of(m.rest_positions)),
+                                 triangle_cloths(m)),
+                   triangle_cloths(m)),
+      shifted_flat_(shifted_bvh_, features_, m.rest_positions, 0.01 * spec.self_thickness) {
   cloth_of_.assign(m.n, 0);
   for (std::size_t c = 0; c < m.cloths.size(); ++c)
     std::fill_n(cloth_of_.begin() + m.cloths[c].offset,
@@ -101,6 +127,8 @@ TriangleContact<T>::TriangleContact(const Model<T>& m, const SolverSpec& spec)
   returned_round_.assign(m.n, 0);
   returned_.reserve(m.n);
   block_stray_.assign(3 * block_count(m.n), 0.0);
+  dev0_.assign(m.n, 0.0f);
+  dev1_.assign(m.n, 0.0f);
   moved_.assign(m.n, 0);
   moved_list_.reserve(m.n);
 }
@@ -110,7 +138,7 @@ void TriangleContact<T>::begin(const State<T>& s, int threads) {
   x0_ = s.pos;  // same size: copies without allocating
   // Something moved the cloth between substeps (a reset, a state set from outside). With one
   // flat patch over everything there are no pairs to keep; the patch's own test covers x0.
-  stray0_ = stale_ || all_flat() ? 0.0 : strayed(x0_, threads);
+  stray0_ = stale_ || all_flat() ? 0.0 : strayed(x0_, dev0_, threads);
   if (stray0_ > skin_) stale_ = true;
 }
 
@@ -119,24 +147,30 @@ void TriangleContact<T>::begin(const State<T>& s, int threads) {
 // changes no distance, so a falling or swinging cloth keeps its pairs. In double, by blocks
 // summed in block order (the same answer for any thread count).
 template <class T>
-double TriangleContact<T>::strayed(const Vec3Array<T>& x, int threads) {
+double TriangleContact<T>::strayed(const Vec3Array<T>& x, std::vector<float>& dev, int threads) {
   const std::size_t n = xc_.size(), blocks = block_count(n);
-  for_each_block_indexed(n, threads, [&](std::size_t b, std::size_t lo, std::size_t hi) {
-    V3 sum = V3::Zero();
-    for (std::size_t i = lo; i < hi; ++i) sum += load3(x, i) - load3(xc_, i);
-    for (std::size_t a = 0; a < 3; ++a) block_stray_[3 * b + a] = sum[long(a)];
-  });
+  for_each_block_indexed(n, threads_for(n, threads),
+                         [&](std::size_t b, std::size_t lo, std::size_t hi) {
+                           V3 sum = V3::Zero();
+                           for (std::size_t i = lo; i < hi; ++i) sum += load3(x, i) - load3(xc_, i);
+                           for (std::size_t a = 0; a < 3; ++a)
+                             block_stray_[3 * b + a] = sum[long(a)];
+                         });
   V3 mean = V3::Zero();
   for (std::size_t b = 0; b < blocks; ++b)
     mean += V3(block_stray_[3 * b], block_stray_[3 * b + 1], block_stray_[3 * b + 2]);
   mean /= double(std::max<std::size_t>(n, 1));
-  for_each_block_indexed(n, threads, [&](std::size_t b, std::size_t lo, std::size_t hi) {
-    double most = 0.0;
-    for (std::size_t i = lo; i < hi; ++i)
-      most = std::max(most, (load3(x, i) - load3(xc_, i) - mean).squaredNorm());
-    block_stray_[b] = most;
-  });
-  return std::sqrt(*std::max_element(block_stray_.begin(), block_stray_.begin() + long(blocks)));
+  for_each_block_indexed(n, threads_for(n, threads),
+                         [&](std::size_t b, std::size_t lo, std::size_t hi) {
+                           double most = 0.0;
+                           for (std::size_t i = lo; i < hi; ++i) {
+                             const double d = (load3(x, i) - load3(xc_, i) - mean).norm();
+                             dev[i] = float(d * (1.0 + 1e-6));  // rounded up
+                             most = std::max(most, d);
+                           }
+                           block_stray_[b] = most;
+                         });
+  return *std::max_element(block_stray_.begin(), block_stray_.begin() + long(blocks));
 }
 
 // Each triangle's and edge's box around its vertices where the pairs are collected (xc).
@@ -154,12 +188,16 @@ void TriangleContact<T>::feature_boxes(int threads) {
     }
     return b;
   };
-  for_each_block(triangle_box_.size(), threads, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t t = begin; t < end; ++t) triangle_box_[t] = box_of(features_.triangles[t]);
-  });
-  for_each_block(edge_box_.size(), threads, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t e = begin; e < end; ++e) edge_box_[e] = box_of(features_.edges[e]);
-  });
+  for_each_block(triangle_box_.size(), threads_for(triangle_box_.size(), threads),
+                 [&](std::size_t begin, std::size_t end) {
+                   for (std::size_t t = begin; t < end; ++t)
+                     triangle_box_[t] = box_of(features_.triangles[t]);
+                 });
+  for_each_block(edge_box_.size(), threads_for(edge_box_.size(), threads),
+                 [&](std::size_t begin, std::size_t end) {
+                   for (std::size_t e = begin; e < end; ++e)
+                     edge_box_[e] = box_of(features_.edges[e]);
+                 });
 }
 
 // The pairs are collected at the positions now (xc). A pair is kept when it is within the
@@ -171,13 +209,15 @@ void TriangleContact<T>::feature_boxes(int threads) {
 template <class T>
 bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
   xc_ = s.pos;
-  stray0_ = strayed(x0_, threads);
+  stray0_ = strayed(x0_, dev0_, threads);
   stray1_ = 0.0;
-  skin_ = std::max(kSkin * thickness_, stray0_ * (1.0 + 1e-6));
+  std::fill(dev1_.begin(), dev1_.end(), 0.0f);
+  skin_ = std::max(kSkin * thickness_, kSkinGrowth * stray0_ * (1.0 + 1e-6));
   gap_ = float(thickness_ + 2.0 * skin_);
   stale_ = false;
   // The patches that cannot touch themselves over the substep under way, skipped below.
   flat_.choose(bvh_, features_, x0_, s.pos, threads);
+  shifted_flat_.choose(shifted_bvh_, features_, x0_, s.pos, threads);
   pairs_.clear();
   flag_.clear();
   if (all_flat()) return true;
@@ -224,6 +264,7 @@ bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
 
 template <class T>
 void TriangleContact<T>::add_pairs(int ta, int tb, std::vector<Pair>& out) const {
+  if (shifted_flat_.same_patch(ta, tb)) return;
   const auto& A = features_.triangles[std::size_t(ta)];
   const auto& B = features_.triangles[std::size_t(tb)];
   const auto points_on = [&](int owner, const std::array<int, 3>& P, int face) {
@@ -361,9 +402,10 @@ bool TriangleContact<T>::meets(const Pair& p, const Vec3Array<T>& x) const {
 template <class T>
 template <class Test>
 void TriangleContact<T>::flag_pairs(int threads, Test&& test) {
-  for_each_block(pairs_.size(), threads, [&](std::size_t b, std::size_t e) {
-    for (std::size_t k = b; k < e; ++k) flag_[k] = test(pairs_[k]) ? 1 : 0;
-  });
+  for_each_block(pairs_.size(), threads_for(pairs_.size(), threads),
+                 [&](std::size_t b, std::size_t e) {
+                   for (std::size_t k = b; k < e; ++k) flag_[k] = test(pairs_[k]) ? 1 : 0;
+                 });
 }
 
 // Vertex i back where the substep started, at rest.
@@ -457,10 +499,15 @@ void TriangleContact<T>::update_velocities(State<T>& s, double h) {
 }
 
 template <class T>
+bool TriangleContact<T>::still_flat(const Vec3Array<T>& x, int threads) {
+  return flat_.still_flat(features_, x0_, x, threads) &&
+         shifted_flat_.still_flat(features_, x0_, x, threads);
+}
+
+template <class T>
 bool TriangleContact<T>::recollect_if_needed(const State<T>& s, int threads, bool& flag) {
-  stray1_ = stale_ || all_flat() ? 0.0 : strayed(s.pos, threads);
-  const bool needed =
-      stale_ || stray1_ > skin_ || !flat_.still_flat(features_, x0_, s.pos, threads);
+  stray1_ = stale_ || all_flat() ? 0.0 : strayed(s.pos, dev1_, threads);
+  const bool needed = stale_ || stray1_ > skin_ || !still_flat(s.pos, threads);
   if (!needed) return true;
   flag = true;
   return collect_pairs(s, threads);
@@ -473,9 +520,7 @@ template <class T>
 bool TriangleContact<T>::guarantee(const Model<T>& m, State<T>& s, int threads) {
   for (int retry = 0;; ++retry) {
     stats_.rolled_back += fail_safe(m, s, threads);
-    if (stats_.rolled_back == 0 || flat_.patch_count() == 0 ||
-        flat_.still_flat(features_, x0_, s.pos, threads))
-      return true;
+    if (stats_.rolled_back == 0 || still_flat(s.pos, threads)) return true;
     if (retry == kMaxFlatRetries) {
       stats_.rolled_back = return_all(m, s);
       return true;
@@ -489,7 +534,7 @@ template <class T>
 bool TriangleContact<T>::respond(const Model<T>& m, State<T>& s, double h, int threads) {
   stats_ = {};
   // The pairs again when a vertex has strayed past the skin since they were collected.
-  stray1_ = stale_ || all_flat() ? 0.0 : strayed(s.pos, threads);
+  stray1_ = stale_ || all_flat() ? 0.0 : strayed(s.pos, dev1_, threads);
   if (stale_ || stray1_ > skin_) {
     stats_.collected = true;
     if (!collect_pairs(s, threads)) return undo(m, s);

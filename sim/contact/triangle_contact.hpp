@@ -61,6 +61,9 @@ class TriangleContact {
   static constexpr int kTaskDepth = 5;
   // The skin, in thicknesses.
   static constexpr double kSkin = 0.5;
+  // At least this many times the stray of the substep that needed the pairs again, so that a
+  // cloth deforming fast keeps its pairs for a few substeps.
+  static constexpr double kSkinGrowth = 2.0;
   // Collections of the pairs after a fail-safe whose returns bent a flat patch, before every
   // free vertex returns.
   static constexpr int kMaxFlatRetries = 4;
@@ -93,13 +96,16 @@ class TriangleContact {
   // The pairs again when a vertex strayed past the skin or a flat patch bent (with `flag` set in
   // the stats); false when the tangle was beyond the bound.
   bool recollect_if_needed(const State<T>& s, int threads, bool& flag);
+  // Whether every flat patch of both trees is still flat over the motion x0_ -> x.
+  bool still_flat(const Vec3Array<T>& x, int threads);
   // Whether the pairs need no check against the skin (one flat patch covers every triangle).
   bool all_flat() const { return flat_.covers_all(); }
   // Every free vertex back to x0 with zero velocity; returns how many.
   int return_all(const Model<T>& m, State<T>& s);
   bool undo(const Model<T>& m, State<T>& s);
   // The farthest a vertex of x has strayed from xc, the mean motion taken away.
-  double strayed(const Vec3Array<T>& x, int threads);
+  // Also each vertex's own stray, rounded up, into dev.
+  double strayed(const Vec3Array<T>& x, std::vector<float>& dev, int threads);
   FloatBox point_box(int v) const;
   void add_pairs(int ta, int tb, std::vector<Pair>& out) const;
   void keep_if_close(const Pair& p, std::vector<Pair>& out) const;
@@ -122,6 +128,11 @@ class TriangleContact {
   SurfaceFeatures features_;
   TriangleBvh bvh_;
   FlatPatches<T> flat_;
+  // A second tree cut a third of the way across each cloth from the first (its material
+  // coordinates shifted round), whose flat patches cover the seams between the first tree's:
+  // a pair of triangles inside one of them cannot touch either.
+  TriangleBvh shifted_bvh_;
+  FlatPatches<T> shifted_flat_;
   std::vector<std::int32_t> cloth_of_;  // per vertex
   Vec3Array<T> x0_;                     // the substep's start
   Vec3Array<T> x_step_;                 // what the integrator made, of the vertices pushed
@@ -129,13 +140,24 @@ class TriangleContact {
   Vec3Array<T> xc_;    // where the pairs were collected
   double skin_ = 0.0;  // m: how far a vertex may stray from xc
   // m: how far the substep's start x0 and its end x1 have strayed from xc (each from its own
-  // mean motion). A pair's distance differs from its distance at xc by at most twice the larger
-  // anywhere on the straight motion between them, so a pair farther apart at xc than the
-  // thickness (or eta) and twice that needs neither a push nor a collision test.
+  // mean motion), the largest and each vertex's. On the straight motion between them a vertex
+  // strays no farther than the larger of its two, so a pair's distance differs from its distance
+  // at xc by at most the largest of that over its first side plus the same over its other: a pair
+  // farther apart at xc than the thickness (or eta) and that needs neither a push nor a
+  // collision test in the substep.
   double stray0_ = 0.0, stray1_ = 0.0;
+  std::vector<float> dev0_, dev1_;
+  float moved_by(std::int32_t v) const {
+    return std::max(dev0_[std::size_t(v)], dev1_[std::size_t(v)]);
+  }
   // Whether the pair is certainly more than d apart over the whole substep.
   bool clear_by(const Pair& p, double d) const {
-    return double(p.dist) - 2.0 * std::max(stray0_, stray1_) > d;
+    const float first =
+        p.edge_edge ? std::max(moved_by(p.v[0]), moved_by(p.v[1])) : moved_by(p.v[0]);
+    const float other =
+        std::max(moved_by(p.v[2]),
+                 p.edge_edge ? moved_by(p.v[3]) : std::max(moved_by(p.v[1]), moved_by(p.v[3])));
+    return double(p.dist) - double(first) - double(other) > d;
   }
   std::vector<FloatBox> triangle_box_, edge_box_;  // around their vertices at xc
   std::vector<TriangleBvh::Task> tasks_;           // the broad phase's pieces for threads

@@ -20,6 +20,12 @@ inline constexpr std::size_t kParallelMinVertices = 8192;
 // vertices: the 48 x 48 pile's frame takes 0.61x the one-thread time on two.
 inline constexpr std::size_t kParallelMinContactVertices = 1024;
 
+// The threads for a loop over n cheap items: one below min_items, where waking a second thread
+// costs more than it saves (a wake-up is tens of microseconds with a passive wait policy).
+inline int threads_for(std::size_t n, int threads, std::size_t min_items = kParallelMinVertices) {
+  return n >= min_items ? threads : 1;
+}
+
 inline std::size_t block_count(std::size_t n) {
   return (n + kBlockSize - 1) / kBlockSize;
 }
