@@ -51,11 +51,8 @@ class FlatPatches {
                   int threads);
 
   bool skipped(int node) const { return chosen_[std::size_t(node)] != 0; }
-  // Whether two triangles lie in one chosen patch (then they cannot touch).
-  bool same_patch(int ta, int tb) const {
-    const std::int32_t p = patch_of_[std::size_t(ta)];
-    return p >= 0 && p == patch_of_[std::size_t(tb)];
-  }
+  // The chosen patch that holds the triangle, or -1.
+  std::int32_t patch_of(int t) const { return patch_of_[std::size_t(t)]; }
   bool covers_all() const { return !chosen_.empty() && chosen_.front() != 0; }
   std::size_t patch_count() const { return patches_.size(); }
   std::size_t triangles_covered() const { return work_.size(); }

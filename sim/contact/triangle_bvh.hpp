@@ -7,9 +7,9 @@
 // The self traversal (a node against itself: its two children each against themselves and
 // against each other) reports every unordered pair of distinct triangles whose boxes meet, in an
 // order fixed by the tree, so results do not depend on the thread count; the callback returns
-// false to stop it. A predicate may skip whole nodes, which then report no pair within them
-// (a patch that cannot touch itself, sim/contact/flat_patches.hpp); pairs between a skipped node
-// and the rest are still reported.
+// false to stop it. A cull may skip whole nodes, which then report no pair within them (a patch
+// that cannot touch itself, sim/contact/flat_patches.hpp), and pairs of nodes, which then report
+// no pair between them; pairs between a skipped node and the rest are still reported.
 #pragma once
 
 #include <Eigen/Core>
@@ -52,7 +52,7 @@ class TriangleBvh {
   // returns false. Returns false when stopped.
   template <class Fn>
   bool self_pairs(Fn&& fn) const {
-    return nodes_.empty() || self(0, no_skip, fn);
+    return nodes_.empty() || self(0, NoCull{}, fn);
   }
 
   // The nodes, pre-order (the root is 0): each covers the triangles triangles(n), its children's
@@ -71,13 +71,18 @@ class TriangleBvh {
     int a = 0, b = 0;  // a == b: node a against itself
   };
   std::vector<Task> tasks(int depth) const;
-  // skip(n): node n reports no pair within itself (nor do the nodes under it).
-  template <class Skip, class Fn>
-  bool run(const Task& t, const Skip& skip, Fn&& fn) const {
+  // cull.self(n): node n reports no pair within itself (nor do the nodes under it);
+  // cull.pair(a, b): nodes a and b report no pair between them (nor do the nodes under them).
+  struct NoCull {
+    bool self(int) const { return false; }
+    bool pair(int, int) const { return false; }
+  };
+  template <class Cull, class Fn>
+  bool run(const Task& t, const Cull& cull, Fn&& fn) const {
     // The piece lies within node a (a against itself) or within the parent of siblings a, b.
     for (int n = t.a == t.b ? t.a : parent(t.a); n >= 0; n = parent(n))
-      if (skip(n)) return true;
-    return t.a == t.b ? self(t.a, skip, fn) : pair(t.a, t.b, fn);
+      if (cull.self(n)) return true;
+    return t.a == t.b ? self(t.a, cull, fn) : pair(t.a, t.b, cull, fn);
   }
 
  private:
@@ -88,7 +93,6 @@ class TriangleBvh {
     int triangle = -1;          // the leaf's triangle
     int begin = 0, end = 0;     // its triangles: order_[begin, end)
   };
-  static bool no_skip(int) { return false; }
   void split(int n, int depth, std::vector<Task>& out) const;
   int build(std::vector<int>& order, std::size_t begin, std::size_t end,
             const std::vector<Eigen::Vector3d>& centroids, const std::vector<int>& groups);
@@ -97,23 +101,23 @@ class TriangleBvh {
   static std::size_t group_split(std::vector<int>& order, std::size_t begin, std::size_t end,
                                  const std::vector<int>& groups);
 
-  template <class Skip, class Fn>
-  bool self(int n, const Skip& skip, Fn& fn) const {
+  template <class Cull, class Fn>
+  bool self(int n, const Cull& cull, Fn& fn) const {
     const Node& node = nodes_[std::size_t(n)];
-    if (node.left < 0 || skip(n)) return true;
-    return self(node.left, skip, fn) && self(node.right, skip, fn) &&
-           pair(node.left, node.right, fn);
+    if (node.left < 0 || cull.self(n)) return true;
+    return self(node.left, cull, fn) && self(node.right, cull, fn) &&
+           pair(node.left, node.right, cull, fn);
   }
-  template <class Fn>
-  bool pair(int a, int b, Fn& fn) const {
+  template <class Cull, class Fn>
+  bool pair(int a, int b, const Cull& cull, Fn& fn) const {
     const Node& na = nodes_[std::size_t(a)];
     const Node& nb = nodes_[std::size_t(b)];
-    if (!na.box.overlaps(nb.box)) return true;
+    if (!na.box.overlaps(nb.box) || cull.pair(a, b)) return true;
     const bool leaf_a = na.left < 0, leaf_b = nb.left < 0;
     if (leaf_a && leaf_b) return fn(na.triangle, nb.triangle);
     if (leaf_a || (!leaf_b && nb.box.half_area() > na.box.half_area()))
-      return pair(a, nb.left, fn) && pair(a, nb.right, fn);
-    return pair(na.left, b, fn) && pair(na.right, b, fn);
+      return pair(a, nb.left, cull, fn) && pair(a, nb.right, cull, fn);
+    return pair(na.left, b, cull, fn) && pair(na.right, b, cull, fn);
   }
 
   std::vector<Node> nodes_;  // pre-order: the root first, a parent before its children

@@ -128,6 +128,7 @@ TriangleContact<T>::TriangleContact(const Model<T>& m, const SolverSpec& spec)
   returned_.reserve(m.n);
   block_stray_.assign(3 * block_count(m.n), 0.0);
   dev0_.assign(m.n, 0.0f);
+  seam_patch_.assign(bvh_.node_count(), -1);
   dev1_.assign(m.n, 0.0f);
   moved_.assign(m.n, 0);
   moved_list_.reserve(m.n);
@@ -218,6 +219,7 @@ bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
   // The patches that cannot touch themselves over the substep under way, skipped below.
   flat_.choose(bvh_, features_, x0_, s.pos, threads);
   shifted_flat_.choose(shifted_bvh_, features_, x0_, s.pos, threads);
+  seam_patches();
   pairs_.clear();
   flag_.clear();
   if (all_flat()) return true;
@@ -233,14 +235,14 @@ bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
   // Each piece stops at the bound on its own (the same decision for any thread count).
   const std::size_t bound = kMaxPairsPerTriangle * boxes.size();
   const long count = long(tasks_.size());
+  const Cull cull{flat_, seam_patch_};
   run_team(threads, [&] {
 #pragma omp for schedule(dynamic, 1)
     for (long k = 0; k < count; ++k) {
       std::vector<Pair>& out = task_pairs_[std::size_t(k)];
       out.clear();
       std::size_t leaves = 0;
-      const auto skip = [&](int n) { return flat_.skipped(n); };
-      task_done_[std::size_t(k)] = bvh_.run(tasks_[std::size_t(k)], skip, [&](int ta, int tb) {
+      task_done_[std::size_t(k)] = bvh_.run(tasks_[std::size_t(k)], cull, [&](int ta, int tb) {
         add_pairs(ta, tb, out);
         return ++leaves <= bound && out.size() <= bound;
       });
@@ -262,9 +264,23 @@ bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
   return true;
 }
 
+// For each node of the first tree, the second tree's flat patch that holds all its triangles, or
+// -1 (bottom-up: children come after their parents).
+template <class T>
+void TriangleContact<T>::seam_patches() {
+  for (std::size_t n = bvh_.node_count(); n-- > 0;) {
+    const int l = bvh_.left(int(n)), r = bvh_.right(int(n));
+    if (l < 0) {
+      seam_patch_[n] = shifted_flat_.patch_of(*bvh_.triangles_begin(int(n)));
+    } else {
+      const std::int32_t a = seam_patch_[std::size_t(l)];
+      seam_patch_[n] = a == seam_patch_[std::size_t(r)] ? a : -1;
+    }
+  }
+}
+
 template <class T>
 void TriangleContact<T>::add_pairs(int ta, int tb, std::vector<Pair>& out) const {
-  if (shifted_flat_.same_patch(ta, tb)) return;
   const auto& A = features_.triangles[std::size_t(ta)];
   const auto& B = features_.triangles[std::size_t(tb)];
   const auto points_on = [&](int owner, const std::array<int, 3>& P, int face) {

@@ -107,6 +107,7 @@ class TriangleContact {
   // Also each vertex's own stray, rounded up, into dev.
   double strayed(const Vec3Array<T>& x, std::vector<float>& dev, int threads);
   FloatBox point_box(int v) const;
+  void seam_patches();
   void add_pairs(int ta, int tb, std::vector<Pair>& out) const;
   void keep_if_close(const Pair& p, std::vector<Pair>& out) const;
   void feature_boxes(int threads);
@@ -133,6 +134,18 @@ class TriangleContact {
   // a pair of triangles inside one of them cannot touch either.
   TriangleBvh shifted_bvh_;
   FlatPatches<T> shifted_flat_;
+  std::vector<std::int32_t> seam_patch_;  // per node of the first tree: see seam_patches()
+  // What the first tree's traversal skips: its own flat patches within themselves, and pairs of
+  // nodes inside one flat patch of the second tree.
+  struct Cull {
+    const FlatPatches<T>& flat;
+    const std::vector<std::int32_t>& seam_patch;
+    bool self(int n) const { return flat.skipped(n); }
+    bool pair(int a, int b) const {
+      const std::int32_t p = seam_patch[std::size_t(a)];
+      return p >= 0 && p == seam_patch[std::size_t(b)];
+    }
+  };
   std::vector<std::int32_t> cloth_of_;  // per vertex
   Vec3Array<T> x0_;                     // the substep's start
   Vec3Array<T> x_step_;                 // what the integrator made, of the vertices pushed
