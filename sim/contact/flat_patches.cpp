@@ -35,8 +35,10 @@ FlatPatches<T>::FlatPatches(const TriangleBvh& bvh, const SurfaceFeatures& f,
   patch_of_.assign(f.triangles.size(), -1);
   block_ok_.assign(block_count(f.triangles.size()), 1);
   block_failure_.assign(block_count(f.triangles.size()), 0);
-  rim_.reserve(
-      std::size_t(*std::max_element(topology_.rim_begin.begin(), topology_.rim_begin.end())));
+  std::size_t longest = 0;  // the longest rim
+  for (std::size_t n = 0; n + 1 < topology_.rim_begin.size(); ++n)
+    longest = std::max(longest, std::size_t(topology_.rim_begin[n + 1] - topology_.rim_begin[n]));
+  rim_.reserve(longest);
 }
 
 template <class T>
