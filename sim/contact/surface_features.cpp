@@ -32,7 +32,9 @@ SurfaceFeatures surface_features(const std::vector<std::array<int, 3>>& triangle
     const auto [a, b, t, k] = sides[i];
     const bool first = i == 0 || std::get<0>(sides[i - 1]) != a || std::get<1>(sides[i - 1]) != b;
     if (first) {
-      f.edges.push_back({a, b});
+      // Oriented as its owner's side, not by vertex number: a renumbering changes nothing.
+      const auto& tri = triangles[std::size_t(t)];
+      f.edges.push_back({tri[std::size_t(k)], tri[std::size_t((k + 1) % 3)]});
       f.owned_edges[std::size_t(t)] |= std::uint8_t(1u << k);
     }
     f.triangle_edges[std::size_t(t)][std::size_t(k)] = int(f.edges.size()) - 1;

@@ -13,7 +13,7 @@ namespace clothlab {
 
 struct SurfaceFeatures {
   std::vector<std::array<int, 3>> triangles;
-  std::vector<std::array<int, 2>> edges;           // (a, b) with a < b, each edge once
+  std::vector<std::array<int, 2>> edges;  // each edge once, oriented as its owner triangle's side
   std::vector<std::array<int, 3>> triangle_edges;  // sides (t0 t1), (t1 t2), (t2 t0) as edges
   std::vector<std::uint8_t> owned_vertices;        // per triangle: bit k = it owns vertex t[k]
   std::vector<std::uint8_t> owned_edges;           // per triangle: bit k = it owns side k

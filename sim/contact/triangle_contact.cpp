@@ -6,6 +6,7 @@
 #include "sim/contact/ccd.hpp"
 #include "sim/contact/intersections.hpp"
 #include "sim/contact/primitive_distance.hpp"
+#include "sim/contact/rigid_fit.hpp"
 #include "sim/core/parallel.hpp"
 #include "sim/core/vec3_eigen.hpp"
 
@@ -35,11 +36,11 @@ V3 combine(const std::array<double, 4>& w, const std::array<V3, 4>& x) {
   return w[0] * x[0] + w[1] * x[1] + w[2] * x[2] + w[3] * x[3];
 }
 
-// Whether two boxes come within `gap` of each other along every axis.
+// Whether two boxes meet.
 template <class Box>
-bool near(const Box& a, const Box& b, float gap) {
+bool near(const Box& a, const Box& b) {
   for (std::size_t k = 0; k < 3; ++k)
-    if (a.lo[k] > b.hi[k] + gap || b.lo[k] > a.hi[k] + gap) return false;
+    if (a.lo[k] > b.hi[k] || b.lo[k] > a.hi[k]) return false;
   return true;
 }
 
@@ -126,7 +127,8 @@ TriangleContact<T>::TriangleContact(const Model<T>& m, const SolverSpec& spec)
   for (auto& part : task_pairs_) part.reserve(pairs_.capacity() / tasks_.size() + 64);
   returned_round_.assign(m.n, 0);
   returned_.reserve(m.n);
-  block_stray_.assign(3 * block_count(m.n), 0.0);
+  block_sums_.assign(kBlockSums * block_count(m.n), 0.0);
+  allow_.assign(m.n, 0.0f);
   dev0_.assign(m.n, 0.0f);
   seam_patch_.assign(bvh_.node_count(), -1);
   dev1_.assign(m.n, 0.0f);
@@ -139,45 +141,113 @@ void TriangleContact<T>::begin(const State<T>& s, int threads) {
   x0_ = s.pos;  // same size: copies without allocating
   // Something moved the cloth between substeps (a reset, a state set from outside). With one
   // flat patch over everything there are no pairs to keep; the patch's own test covers x0.
-  stray0_ = stale_ || all_flat() ? 0.0 : strayed(x0_, dev0_, threads);
-  if (stray0_ > skin_) stale_ = true;
+  if (stale_ || all_flat()) return;
+  const RigidFit fit = fit_rigid(x0_, threads);
+  rotation0_ = fit.rotation;
+  shrink_ = 1.0;
+  const Stray stray = deviations(x0_, fit, dev0_, nullptr, threads);
+  stray0_ = stray.most;
+  if (stray.excess > 0.0) stale_ = true;
 }
 
-// How far a vertex of x has strayed from where the pairs were collected, once the mean motion of
-// all vertices since then is taken away: the largest |(x_i - xc_i) - mean|. A common motion
+// The best rigid motion of all vertices from xc to x (sim/contact/rigid_fit.hpp). A rigid motion
 // changes no distance, so a falling or swinging cloth keeps its pairs. In double, by blocks
 // summed in block order (the same answer for any thread count).
 template <class T>
-double TriangleContact<T>::strayed(const Vec3Array<T>& x, std::vector<float>& dev, int threads) {
+typename TriangleContact<T>::RigidFit TriangleContact<T>::fit_rigid(const Vec3Array<T>& x,
+                                                                    int threads) {
   const std::size_t n = xc_.size(), blocks = block_count(n);
   for_each_block_indexed(n, threads_for(n, threads),
                          [&](std::size_t b, std::size_t lo, std::size_t hi) {
-                           V3 sum = V3::Zero();
-                           for (std::size_t i = lo; i < hi; ++i) sum += load3(x, i) - load3(xc_, i);
-                           for (std::size_t a = 0; a < 3; ++a)
-                             block_stray_[3 * b + a] = sum[long(a)];
-                         });
-  V3 mean = V3::Zero();
-  for (std::size_t b = 0; b < blocks; ++b)
-    mean += V3(block_stray_[3 * b], block_stray_[3 * b + 1], block_stray_[3 * b + 2]);
-  mean /= double(std::max<std::size_t>(n, 1));
-  for_each_block_indexed(n, threads_for(n, threads),
-                         [&](std::size_t b, std::size_t lo, std::size_t hi) {
-                           double most = 0.0;
+                           V3 sum_c = V3::Zero(), sum_x = V3::Zero();
+                           Eigen::Matrix3d cross = Eigen::Matrix3d::Zero();
                            for (std::size_t i = lo; i < hi; ++i) {
-                             const double d = (load3(x, i) - load3(xc_, i) - mean).norm();
-                             dev[i] = float(d * (1.0 + 1e-6));  // rounded up
-                             most = std::max(most, d);
+                             const V3 c = load3(xc_, i), p = load3(x, i);
+                             sum_c += c;
+                             sum_x += p;
+                             cross.noalias() += c * p.transpose();
                            }
-                           block_stray_[b] = most;
+                           double* out = &block_sums_[kBlockSums * b];
+                           for (long a = 0; a < 3; ++a) out[a] = sum_c[a], out[3 + a] = sum_x[a];
+                           for (long a = 0; a < 9; ++a) out[6 + a] = cross.data()[a];
                          });
-  return *std::max_element(block_stray_.begin(), block_stray_.begin() + long(blocks));
+  RigidFit fit;
+  Eigen::Matrix3d cross = Eigen::Matrix3d::Zero();
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const double* in = &block_sums_[kBlockSums * b];
+    fit.from += V3(in[0], in[1], in[2]);
+    fit.to += V3(in[3], in[4], in[5]);
+    cross += Eigen::Map<const Eigen::Matrix3d>(in + 6);
+  }
+  const double count = double(std::max<std::size_t>(n, 1));
+  fit.from /= count;
+  fit.to /= count;
+  fit.rotation = kabsch_rotation(cross - count * fit.from * fit.to.transpose());
+  return fit;
 }
 
-// Each triangle's and edge's box around its vertices where the pairs are collected (xc).
+// Each vertex's stray from the fit, |x_i - to - R (xc_i - from)| rounded up, into dev; the
+// largest, and the largest excess of max(dev_i, also_i) over what vertex i may stray (its
+// allowance less the shrink's share, see allow_).
+template <class T>
+typename TriangleContact<T>::Stray TriangleContact<T>::deviations(const Vec3Array<T>& x,
+                                                                  const RigidFit& fit,
+                                                                  std::vector<float>& dev,
+                                                                  const std::vector<float>* also,
+                                                                  int threads) {
+  const std::size_t n = xc_.size(), blocks = block_count(n);
+  const double slack = (1.0 - shrink_) * 0.5 * thickness_;
+  for_each_block_indexed(
+      n, threads_for(n, threads), [&](std::size_t b, std::size_t lo, std::size_t hi) {
+        double most = 0.0, excess = -INFINITY;
+        for (std::size_t i = lo; i < hi; ++i) {
+          const double d =
+              (load3(x, i) - fit.to - fit.rotation * (load3(xc_, i) - fit.from)).norm();
+          dev[i] = float(d * (1.0 + 1e-6) + 1e-12);  // rounded up
+          most = std::max(most, d);
+          const float moved = also ? std::max(dev[i], (*also)[i]) : dev[i];
+          excess = std::max(excess, double(moved) + slack - shrink_ * double(allow_[i]));
+        }
+        block_sums_[2 * b] = most;
+        block_sums_[2 * b + 1] = excess;
+      });
+  Stray out{0.0, -INFINITY};
+  for (std::size_t b = 0; b < blocks; ++b) {
+    out.most = std::max(out.most, block_sums_[2 * b]);
+    out.excess = std::max(out.excess, block_sums_[2 * b + 1]);
+  }
+  return out;
+}
+
+// What each vertex may stray from xc before a pair left out could come within the thickness:
+// kSkin thicknesses, or `growth` times its stray in the substep that needed the pairs but no more
+// than kSkinExtra thicknesses beyond that stray (a cloth deforming fast keeps its pairs for a
+// few substeps, without gathering pairs from afar), and at least what covers that substep itself
+// (its stray, and the shrink's share, below the allowance less that share).
+template <class T>
+void TriangleContact<T>::set_allowances(double growth, int threads) {
+  const double base = kSkin * thickness_, extra = kSkinExtra * thickness_;
+  const double slack = (1.0 - shrink_) * 0.5 * thickness_;
+  for_each_block(
+      allow_.size(), threads_for(allow_.size(), threads), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+          const double d = double(dev0_[i]);
+          allow_[i] =
+              float(std::max({base, std::min(growth * d, d + extra), (d + slack) / shrink_}) *
+                    (1.0 + 1e-6));
+        }
+      });
+}
+
+// Each triangle's and edge's box around its vertices where the pairs are collected (xc), padded
+// by half the thickness and the largest allowance of its vertices (and kBoxSlack for the floats'
+// rounding): two features within the thickness and their allowances have boxes that meet.
 template <class T>
 void TriangleContact<T>::feature_boxes(int threads) {
   const auto box_of = [&](const auto& vertices) {
+    float allow = 0.0f;
+    for (int v : vertices) allow = std::max(allow, allow_[std::size_t(v)]);
+    const float pad = float(0.5 * thickness_ + kBoxSlack) + allow;
     FloatBox b;
     for (std::size_t a = 0; a < 3; ++a) {
       const AlignedVector<T>& axis = xc_.axis(int(a));
@@ -186,6 +256,8 @@ void TriangleContact<T>::feature_boxes(int threads) {
         b.lo[a] = std::min(b.lo[a], float(axis[std::size_t(vertices[k])]));
         b.hi[a] = std::max(b.hi[a], float(axis[std::size_t(vertices[k])]));
       }
+      b.lo[a] -= pad;
+      b.hi[a] += pad;
     }
     return b;
   };
@@ -202,19 +274,19 @@ void TriangleContact<T>::feature_boxes(int threads) {
 }
 
 // The pairs are collected at the positions now (xc). A pair is kept when it is within the
-// thickness plus twice the skin there: while no vertex strays more than the skin from xc (beyond
-// the mean motion), no other pair can come within the thickness. The skin is kSkin thicknesses,
-// or more when the substep's start x0 has already strayed farther, so that the substep under way
-// is covered too. The pairs of triangles whose boxes (half the gap wider) meet give their owned
-// features' pairs; the tree's pieces run in parallel, each into its own list, joined in order.
+// thickness plus the allowances of its two sides there (allow_, each side's largest): while no
+// vertex strays beyond its allowance from xc (after the best rigid motion, less the shrink's
+// share), no other pair can come within the thickness.
 template <class T>
 bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
   xc_ = s.pos;
-  stray0_ = strayed(x0_, dev0_, threads);
+  const RigidFit fit = fit_rigid(x0_, threads);
+  rotation0_ = fit.rotation;
+  rotation1_.setIdentity();
+  shrink_ = interpolated_rotation_shrink(rotation0_, rotation1_);
+  stray0_ = deviations(x0_, fit, dev0_, nullptr, threads).most;
   stray1_ = 0.0;
   std::fill(dev1_.begin(), dev1_.end(), 0.0f);
-  skin_ = std::max(kSkin * thickness_, kSkinGrowth * stray0_ * (1.0 + 1e-6));
-  gap_ = float(thickness_ + 2.0 * skin_);
   stale_ = false;
   // The patches that cannot touch themselves over the substep under way, skipped below.
   flat_.choose(bvh_, features_, x0_, s.pos, threads);
@@ -223,13 +295,25 @@ bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
   pairs_.clear();
   flag_.clear();
   if (all_flat()) return true;
+  // Grown skins first; when they gather more pairs than the bound (a sudden fast motion), the
+  // least skins that cover the substep under way, before the substep is undone.
+  for (const double growth : {kSkinGrowth, 1.0}) {
+    set_allowances(growth, threads);
+    if (gather_pairs(threads)) return true;
+  }
+  stale_ = true;
+  return false;
+}
+
+// The pairs of triangles whose padded boxes meet give their owned features' pairs; the tree's
+// pieces run in parallel, each into its own list, joined in order. False beyond the bound.
+template <class T>
+bool TriangleContact<T>::gather_pairs(int threads) {
   feature_boxes(threads);
   std::vector<Box3>& boxes = bvh_.leaf_boxes();
-  const double pad = 0.5 * double(gap_);
   for (std::size_t t = 0; t < boxes.size(); ++t) {
     const FloatBox& b = triangle_box_[t];
-    boxes[t] = {V3(b.lo[0] - pad, b.lo[1] - pad, b.lo[2] - pad),
-                V3(b.hi[0] + pad, b.hi[1] + pad, b.hi[2] + pad)};
+    boxes[t] = {V3(b.lo[0], b.lo[1], b.lo[2]), V3(b.hi[0], b.hi[1], b.hi[2])};
   }
   bvh_.refit();
   // Each piece stops at the bound on its own (the same decision for any thread count).
@@ -254,10 +338,7 @@ bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
     total += task_pairs_[k].size();
     done = done && task_done_[k];
   }
-  if (!done || total > bound) {
-    stale_ = true;
-    return false;
-  }
+  if (!done || total > bound) return false;
   for (const std::vector<Pair>& part : task_pairs_)
     pairs_.insert(pairs_.end(), part.begin(), part.end());
   flag_.resize(pairs_.size());
@@ -289,7 +370,7 @@ void TriangleContact<T>::add_pairs(int ta, int tb, std::vector<Pair>& out) const
     for (int k = 0; k < 3; ++k) {
       const int v = P[std::size_t(k)];
       if ((mask & (1u << k)) && !shares_vertex(F, v) &&
-          near(point_box(v), triangle_box_[std::size_t(face)], gap_))
+          near(point_box(v), triangle_box_[std::size_t(face)]))
         keep_if_close({{v, F[0], F[1], F[2]}, false}, out);
     }
   };
@@ -306,17 +387,20 @@ void TriangleContact<T>::add_pairs(int ta, int tb, std::vector<Pair>& out) const
       if (!(mb & (1u << j))) continue;
       const auto fj = std::size_t(features_.triangle_edges[std::size_t(tb)][std::size_t(j)]);
       const auto& f = features_.edges[fj];
-      if (!shares_vertex(e, f) && near(edge_box_[ei], edge_box_[fj], gap_))
+      if (!shares_vertex(e, f) && near(edge_box_[ei], edge_box_[fj]))
         keep_if_close({{e[0], e[1], f[0], f[1]}, true}, out);
     }
   }
 }
 
-// A pair is kept when its distance at xc is within the thickness and twice the skin (a point of a
-// triangle or an edge strays no farther than its farthest vertex).
+// A pair is kept when its distance at xc is within the thickness and the allowances of its two
+// sides (a point of a triangle or an edge strays no farther than its farthest vertex).
 template <class T>
 void TriangleContact<T>::keep_if_close(const Pair& p, std::vector<Pair>& out) const {
-  const double d = thickness_ + 2.0 * skin_;
+  const auto a = [&](int k) { return allow_[std::size_t(p.v[std::size_t(k)])]; };
+  const float first = p.edge_edge ? std::max(a(0), a(1)) : a(0);
+  const float other = std::max({a(2), a(3), p.edge_edge ? a(2) : a(1)});
+  const double d = thickness_ + double(first) + double(other);
   const double dist2 = pair_dist2(
       p.edge_edge ? PrimitivePair::edge_edge : PrimitivePair::point_triangle, gather(xc_, p.v));
   if (dist2 > d * d) return;
@@ -326,8 +410,13 @@ void TriangleContact<T>::keep_if_close(const Pair& p, std::vector<Pair>& out) co
 
 template <class T>
 typename TriangleContact<T>::FloatBox TriangleContact<T>::point_box(int v) const {
+  const float pad = float(0.5 * thickness_ + kBoxSlack) + allow_[std::size_t(v)];
   FloatBox b;
-  for (std::size_t a = 0; a < 3; ++a) b.lo[a] = b.hi[a] = float(xc_.axis(int(a))[std::size_t(v)]);
+  for (std::size_t a = 0; a < 3; ++a) {
+    const float c = float(xc_.axis(int(a))[std::size_t(v)]);
+    b.lo[a] = c - pad;
+    b.hi[a] = c + pad;
+  }
   return b;
 }
 
@@ -520,10 +609,26 @@ bool TriangleContact<T>::still_flat(const Vec3Array<T>& x, int threads) {
          shifted_flat_.still_flat(features_, x0_, x, threads);
 }
 
+// The substep's end x1 against xc, and the shrink factor of the straight motion from x0.
+template <class T>
+void TriangleContact<T>::measure_stray1(const State<T>& s, int threads) {
+  if (stale_ || all_flat()) {
+    stray1_ = 0.0;
+    excess1_ = -INFINITY;
+    return;
+  }
+  const RigidFit fit = fit_rigid(s.pos, threads);
+  rotation1_ = fit.rotation;
+  shrink_ = interpolated_rotation_shrink(rotation0_, rotation1_);
+  const Stray stray = deviations(s.pos, fit, dev1_, &dev0_, threads);
+  stray1_ = stray.most;
+  excess1_ = stray.excess;
+}
+
 template <class T>
 bool TriangleContact<T>::recollect_if_needed(const State<T>& s, int threads, bool& flag) {
-  stray1_ = stale_ || all_flat() ? 0.0 : strayed(s.pos, dev1_, threads);
-  const bool needed = stale_ || stray1_ > skin_ || !still_flat(s.pos, threads);
+  measure_stray1(s, threads);
+  const bool needed = stale_ || excess1_ > 0.0 || !still_flat(s.pos, threads);
   if (!needed) return true;
   flag = true;
   return collect_pairs(s, threads);
@@ -549,9 +654,9 @@ bool TriangleContact<T>::guarantee(const Model<T>& m, State<T>& s, int threads) 
 template <class T>
 bool TriangleContact<T>::respond(const Model<T>& m, State<T>& s, double h, int threads) {
   stats_ = {};
-  // The pairs again when a vertex has strayed past the skin since they were collected.
-  stray1_ = stale_ || all_flat() ? 0.0 : strayed(s.pos, dev1_, threads);
-  if (stale_ || stray1_ > skin_) {
+  // The pairs again when a vertex has strayed past its skin since they were collected.
+  measure_stray1(s, threads);
+  if (stale_ || excess1_ > 0.0) {
     stats_.collected = true;
     if (!collect_pairs(s, threads)) return undo(m, s);
   }

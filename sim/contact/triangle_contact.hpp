@@ -4,11 +4,12 @@
 //  1. Broad phase: a material-space tree over the triangles (sim/contact/triangle_bvh.hpp)
 //     refitted to each triangle's box swept from x0 to x1 yields the pairs of triangles within
 //     a thickness, and of those the vertex-triangle and edge-edge pairs (each once,
-//     sim/contact/surface_features.hpp) whose distance there is within the thickness and twice a
-//     skin (a Verlet list, Verlet 1967): the pairs stay valid, and the broad phase is skipped, for
-//     as long as no vertex strays more than the skin from where they were collected once the mean
-//     motion of all vertices is taken away (a common motion changes no distance), so a pile at
-//     rest and a sheet falling as one are collected once in many substeps.
+//     sim/contact/surface_features.hpp) whose distance there is within the thickness and a skin
+//     on each side (a Verlet list, Verlet 1967; each vertex its own skin, allow_): the pairs stay
+//     valid, and the broad phase is skipped, for as long as no vertex strays beyond its skin from
+//     where they were collected once the best rigid motion of all vertices is taken away (a rigid
+//     motion changes no distance), so a pile at rest and a sheet falling or swinging as one are
+//     collected once in many substeps.
 //  2. Proximity (Bridson, Fedkiw & Anderson 2002, section 7.1; as position constraints, Mueller
 //     et al. 2007 section 4.4): a pair closer than the thickness is pushed apart to it along the
 //     direction between its closest points, taken on the side the pair was at x0 when it has
@@ -36,6 +37,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "sim/contact/contact_stats.hpp"
 #include "sim/contact/flat_patches.hpp"
 #include "sim/contact/surface_features.hpp"
@@ -53,17 +56,24 @@ class TriangleContact {
   // Candidate pairs reserved per triangle when built: the pair list grows past it only in a
   // tangle denser than that, once.
   static constexpr std::size_t kPairsPerTriangle = 16;
-  // Broad-phase leaf pairs and candidate pairs per triangle beyond which the substep is undone.
+  // Broad-phase leaf pairs and candidate pairs per triangle beyond which the skins shrink to the
+  // least that covers the substep, and beyond which again the substep is undone.
   static constexpr std::size_t kMaxPairsPerTriangle = 64;
   // Rounds of the fail-safe before every free vertex returns.
   static constexpr int kMaxRounds = 16;
   // Levels of the tree unrolled into pieces for threads (2^kTaskDepth nodes against themselves).
   static constexpr int kTaskDepth = 5;
-  // The skin, in thicknesses.
-  static constexpr double kSkin = 0.5;
-  // At least this many times the stray of the substep that needed the pairs again, so that a
-  // cloth deforming fast keeps its pairs for a few substeps.
-  static constexpr double kSkinGrowth = 2.0;
+  // The least a vertex may stray before the pairs are collected again, in thicknesses.
+  static constexpr double kSkin = 1.0;
+  // At least this many times the vertex's stray in the substep that needed the pairs again, so
+  // that a cloth deforming fast keeps its pairs for several substeps (each vertex its own: only
+  // the fast ones gather more pairs), but no more than kSkinExtra thicknesses beyond that stray.
+  // Measured (docs/contact.md section 7): the pile and the stack on the ball cost about 0.7x of
+  // kSkin 0.5 and growth 2; without the cap the swinging large sheet gathers 2.9x the pairs.
+  static constexpr double kSkinGrowth = 8.0;
+  static constexpr double kSkinExtra = 1.0;
+  // m: added to every box's pad for the rounding of its float coordinates.
+  static constexpr double kBoxSlack = 1e-5;
   // Collections of the pairs after a fail-safe whose returns bent a flat patch, before every
   // free vertex returns.
   static constexpr int kMaxFlatRetries = 4;
@@ -93,7 +103,7 @@ class TriangleContact {
   };
   // Returns false when the tangle was beyond kMaxPairsPerTriangle.
   bool collect_pairs(const State<T>& s, int threads);
-  // The pairs again when a vertex strayed past the skin or a flat patch bent (with `flag` set in
+  // The pairs again when a vertex strayed past its skin or a flat patch bent (with `flag` set in
   // the stats); false when the tangle was beyond the bound.
   bool recollect_if_needed(const State<T>& s, int threads, bool& flag);
   // Whether every flat patch of both trees is still flat over the motion x0_ -> x.
@@ -103,9 +113,22 @@ class TriangleContact {
   // Every free vertex back to x0 with zero velocity; returns how many.
   int return_all(const Model<T>& m, State<T>& s);
   bool undo(const Model<T>& m, State<T>& s);
-  // The farthest a vertex of x has strayed from xc, the mean motion taken away.
-  // Also each vertex's own stray, rounded up, into dev.
-  double strayed(const Vec3Array<T>& x, std::vector<float>& dev, int threads);
+  // x is near to + rotation (xc - from).
+  struct RigidFit {
+    Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+    Eigen::Vector3d from = Eigen::Vector3d::Zero(), to = Eigen::Vector3d::Zero();
+  };
+  struct Stray {
+    double most = 0.0;    // m: the largest stray
+    double excess = 0.0;  // m: the largest stray beyond its vertex's allowance (> 0: collect)
+  };
+  RigidFit fit_rigid(const Vec3Array<T>& x, int threads);
+  Stray deviations(const Vec3Array<T>& x, const RigidFit& fit, std::vector<float>& dev,
+                   const std::vector<float>* also, int threads);
+  void set_allowances(double growth, int threads);
+  bool gather_pairs(int threads);
+  // The substep's end against xc: stray1_, dev1_, excess1_ and the shrink factor.
+  void measure_stray1(const State<T>& s, int threads);
   FloatBox point_box(int v) const;
   void seam_patches();
   void add_pairs(int ta, int tb, std::vector<Pair>& out) const;
@@ -149,17 +172,26 @@ class TriangleContact {
   std::vector<std::int32_t> cloth_of_;  // per vertex
   Vec3Array<T> x0_;                     // the substep's start
   Vec3Array<T> x_step_;                 // what the integrator made, of the vertices pushed
-  float gap_ = 0.0f;   // m: how close two boxes at xc make a candidate pair (thickness + 2 skin)
-  Vec3Array<T> xc_;    // where the pairs were collected
-  double skin_ = 0.0;  // m: how far a vertex may stray from xc
+  Vec3Array<T> xc_;                     // where the pairs were collected
+  // m, per vertex: how far it may stray from xc (after the rigid fit) while the pairs hold: a
+  // pair left out was farther apart at xc than the thickness plus its two sides' largest
+  // allowances, so while every vertex strays less than shrink_ times its allowance less
+  // (1 - shrink_) half thicknesses, no pair left out comes within the thickness.
+  std::vector<float> allow_;
   // m: how far the substep's start x0 and its end x1 have strayed from xc (each from its own
-  // mean motion), the largest and each vertex's. On the straight motion between them a vertex
-  // strays no farther than the larger of its two, so a pair's distance differs from its distance
-  // at xc by at most the largest of that over its first side plus the same over its other: a pair
-  // farther apart at xc than the thickness (or eta) and that needs neither a push nor a
+  // rigid fit), the largest and each vertex's. On the straight motion between them a vertex
+  // strays no farther than the larger of its two, so a pair's distance is at least shrink_ times
+  // its distance at xc less the largest of that over its first side and the same over its
+  // other: a pair farther apart than the thickness (or eta) that way needs neither a push nor a
   // collision test in the substep.
   double stray0_ = 0.0, stray1_ = 0.0;
+  double excess1_ = 0.0;  // m: see Stray
   std::vector<float> dev0_, dev1_;
+  // The rigid fits' rotations from xc to x0 and to x1, and the factor by which the straight
+  // motion between them can shrink a distance at xc (sim/contact/rigid_fit.hpp).
+  Eigen::Matrix3d rotation0_ = Eigen::Matrix3d::Identity();
+  Eigen::Matrix3d rotation1_ = Eigen::Matrix3d::Identity();
+  double shrink_ = 1.0;
   float moved_by(std::int32_t v) const {
     return std::max(dev0_[std::size_t(v)], dev1_[std::size_t(v)]);
   }
@@ -170,7 +202,7 @@ class TriangleContact {
     const float other =
         std::max(moved_by(p.v[2]),
                  p.edge_edge ? moved_by(p.v[3]) : std::max(moved_by(p.v[1]), moved_by(p.v[3])));
-    return double(p.dist) - double(first) - double(other) > d;
+    return shrink_ * double(p.dist) - double(first) - double(other) > d;
   }
   std::vector<FloatBox> triangle_box_, edge_box_;  // around their vertices at xc
   std::vector<TriangleBvh::Task> tasks_;           // the broad phase's pieces for threads
@@ -178,9 +210,12 @@ class TriangleContact {
   std::vector<std::uint8_t> task_done_;            // per piece: it ran to the end
   bool stale_ = true;                              // a vertex left its box between substeps
   std::vector<Pair> pairs_;
-  std::vector<std::uint8_t> flag_;   // per pair: the last parallel test's answer
-  std::vector<double> block_stray_;  // per block of vertices: partial sums, then largest strays
-  std::vector<std::uint8_t> moved_;  // per vertex: a push moved it this substep
+  std::vector<std::uint8_t> flag_;  // per pair: the last parallel test's answer
+  // Per block of vertices: kBlockSums partial sums for the rigid fit, or the largest stray and
+  // excess.
+  static constexpr std::size_t kBlockSums = 15;
+  std::vector<double> block_sums_;
+  std::vector<std::uint8_t> moved_;       // per vertex: a push moved it this substep
   std::vector<std::int32_t> moved_list_;  // those vertices; x_step_ holds where they were
   std::vector<int> returned_round_;  // per vertex: the fail-safe round that returned it (0: none)
   std::vector<int> returned_;        // the vertices returned this substep
