@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "grid_mesh.hpp"
 #include "load/scene_load.hpp"
 #include "sim/contact/flat_patches.hpp"
 #include "sim/contact/intersections.hpp"
@@ -21,25 +22,8 @@ namespace {
 
 using V3 = Eigen::Vector3d;
 
-// An nu x nv grid of vertices placed by place(i, j), two triangles a square, wound alike.
-struct Mesh {
-  std::vector<std::array<int, 3>> triangles;
-  std::vector<V3> x;
-  std::vector<int> groups;
-};
-template <class Place>
-void add_grid(Mesh& m, int nu, int nv, int group, Place place) {
-  const int offset = int(m.x.size());
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) m.x.push_back(place(i, j));
-  for (int j = 0; j + 1 < nv; ++j)
-    for (int i = 0; i + 1 < nu; ++i) {
-      const int v = offset + i + j * nu;
-      m.triangles.push_back({v, v + 1, v + nu + 1});
-      m.triangles.push_back({v, v + nu + 1, v + nu});
-      m.groups.insert(m.groups.end(), 2, group);
-    }
-}
+using Mesh = GridMesh;
+
 Vec3Array<double> soa(const std::vector<V3>& x) {
   Vec3Array<double> a;
   a.resize(x.size());

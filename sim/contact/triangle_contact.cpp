@@ -62,16 +62,19 @@ bool sides_within(bool edge_edge, const std::array<V3, 4>& lo, const std::array<
   return (lo_p.array() <= hi_q.array() + d).all() && (lo_q.array() <= hi_p.array() + d).all();
 }
 
-// The cloth of each triangle: the tree keeps the cloths in their own subtrees, so each can be one
-// flat patch.
+// The cloth of each vertex and of each triangle (the tree keeps the cloths in their own subtrees,
+// so each can be one flat patch) and the triangles' centroids at rest.
 template <class T>
-std::vector<int> triangle_cloths(const Model<T>& m) {
-  std::vector<int> cloth(m.n, 0);
+typename TriangleContact<T>::RestLayout rest_layout(const Model<T>& m) {
+  typename TriangleContact<T>::RestLayout out;
+  out.vertex_cloth.assign(m.n, 0);
   for (std::size_t c = 0; c < m.cloths.size(); ++c)
-    std::fill_n(cloth.begin() + m.cloths[c].offset,
-                std::size_t(m.cloths[c].nu) * std::size_t(m.cloths[c].nv), int(c));
-  std::vector<int> out(m.triangles.size());
-  for (std::size_t t = 0; t < out.size(); ++t) out[t] = cloth[std::size_t(m.triangles[t][0])];
+    std::fill_n(out.vertex_cloth.begin() + m.cloths[c].offset,
+                std::size_t(m.cloths[c].nu) * std::size_t(m.cloths[c].nv), std::int32_t(c));
+  out.triangle_cloth.resize(m.triangles.size());
+  for (std::size_t t = 0; t < m.triangles.size(); ++t)
+    out.triangle_cloth[t] = out.vertex_cloth[std::size_t(m.triangles[t][0])];
+  out.centroids = triangle_centroids(m.triangles, points_of(m.rest_positions));
   return out;
 }
 
@@ -101,19 +104,19 @@ std::vector<V3> shifted_round(std::vector<V3> c, const std::vector<int>& cloth) 
 
 template <class T>
 TriangleContact<T>::TriangleContact(const Model<T>& m, const SolverSpec& spec)
+    : TriangleContact(m, spec, rest_layout(m)) {}
+
+template <class T>
+TriangleContact<T>::TriangleContact(const Model<T>& m, const SolverSpec& spec,
+                                    const RestLayout& rest)
     : thickness_(spec.self_thickness),
       eta_(0.01 * spec.self_thickness),
       features_(surface_features(m.triangles, m.n)),
-      bvh_(triangle_centroids(m.triangles, points_of(m.rest_positions)), triangle_cloths(m)),
-      flat_(bvh_, features_, m.rest_positions, 0.01 * spec.self_thickness),
-      shifted_bvh_(shifted_round(triangle_centroids(m.triangles, points_of(m.rest_positions)),
-                                 triangle_cloths(m)),
-                   triangle_cloths(m)),
-      shifted_flat_(shifted_bvh_, features_, m.rest_positions, 0.01 * spec.self_thickness) {
-  cloth_of_.assign(m.n, 0);
-  for (std::size_t c = 0; c < m.cloths.size(); ++c)
-    std::fill_n(cloth_of_.begin() + m.cloths[c].offset,
-                std::size_t(m.cloths[c].nu) * std::size_t(m.cloths[c].nv), std::int32_t(c));
+      bvh_(rest.centroids, rest.triangle_cloth),
+      flat_(bvh_, features_, m.rest_positions, eta_),
+      shifted_bvh_(shifted_round(rest.centroids, rest.triangle_cloth), rest.triangle_cloth),
+      shifted_flat_(shifted_bvh_, features_, m.rest_positions, eta_),
+      cloth_of_(rest.vertex_cloth) {
   x0_.resize(m.n);
   x_step_.resize(m.n);
   xc_.resize(m.n);
@@ -660,7 +663,6 @@ bool TriangleContact<T>::respond(const Model<T>& m, State<T>& s, double h, int t
     stats_.collected = true;
     if (!collect_pairs(s, threads)) return undo(m, s);
   }
-  stats_.candidates = int(pairs_.size());
   // Which pairs need a push, in parallel; then sweeps of pushes over those, serially in pair
   // order (a pair that a neighbour's push brings within the thickness waits for the next
   // substep; the fail-safe holds meanwhile).

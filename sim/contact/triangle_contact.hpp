@@ -51,7 +51,7 @@ namespace clothlab {
 template <class T>
 class TriangleContact {
  public:
-  static constexpr int kProximityIterations = 2;
+  static constexpr int kProximityIterations = 1;
   static constexpr double kFriction = 0.3;  // cloth on cloth (cotton on cotton 0.3 to 0.5)
   // Candidate pairs reserved per triangle when built: the pair list grows past it only in a
   // tangle denser than that, once.
@@ -79,6 +79,15 @@ class TriangleContact {
   static constexpr int kMaxFlatRetries = 4;
 
   TriangleContact(const Model<T>& m, const SolverSpec& spec);
+
+  // What the constructor reads from the rest shape once: each vertex's and triangle's cloth and
+  // the triangles' centroids.
+  struct RestLayout {
+    std::vector<std::int32_t> vertex_cloth;
+    std::vector<int> triangle_cloth;
+    std::vector<Eigen::Vector3d> centroids;
+  };
+  TriangleContact(const Model<T>& m, const SolverSpec& spec, const RestLayout& rest);
 
   // Before a substep: where it starts.
   void begin(const State<T>& s, int threads);
