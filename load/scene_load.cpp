@@ -137,24 +137,27 @@ class Loader {
 
   // pins_follow = "pelvis": the mannequin part's collider, once the mannequin is built.
   void resolve_follow_names() const {
+    for (ClothSpec& cloth : scene_.cloths)
+      for (std::size_t n = 0; n < cloth.pins_follow_names.size(); ++n)
+        if (!cloth.pins_follow_names[n].empty()) resolve_follow_name(cloth, n);
+  }
+  void resolve_follow_name(ClothSpec& cloth, std::size_t n) const {
     const std::string prefix = std::string(key_of<&Scene::mannequin>()) + ".";
-    for (ClothSpec& cloth : scene_.cloths) {
-      if (cloth.pins_follow_name.empty()) continue;
-      const std::string k = cloth.key + "." + std::string(key_of<&ClothSpec::pins_follow>());
-      if (!scene_.mannequin)
-        fail(k, "names a mannequin part (\"" + cloth.pins_follow_name +
-                    "\"), but the scene has no [mannequin]");
-      std::string parts;
-      for (std::size_t c = 0; c < scene_.colliders.size(); ++c) {
-        const ColliderSpec& spec = scene_.colliders[c];
-        if (!spec.body) continue;
-        const std::string part = spec.key.substr(prefix.size());
-        if (part == cloth.pins_follow_name) cloth.pins_follow = static_cast<int>(c);
-        parts += (parts.empty() ? "" : ", ") + part;
-      }
-      if (!cloth.pins_follow)
-        fail(k, "no mannequin part \"" + cloth.pins_follow_name + "\" (parts: " + parts + ")");
+    const std::string& name = cloth.pins_follow_names[n];
+    std::string k = cloth.key + "." + std::string(key_of<&ClothSpec::pins_follow>());
+    if (cloth.pins_follow_names.size() > 1) k += "[" + std::to_string(n) + "]";
+    if (!scene_.mannequin)
+      fail(k, "names a mannequin part (\"" + name + "\"), but the scene has no [mannequin]");
+    std::string parts;
+    for (std::size_t c = 0; c < scene_.colliders.size(); ++c) {
+      const ColliderSpec& spec = scene_.colliders[c];
+      if (!spec.body) continue;
+      const std::string part = spec.key.substr(prefix.size());
+      if (part == name) cloth.pins_follow[n] = static_cast<int>(c);
+      parts += (parts.empty() ? "" : ", ") + part;
     }
+    if (cloth.pins_follow[n] < 0)
+      fail(k, "no mannequin part \"" + name + "\" (parts: " + parts + ")");
   }
 
   Scene& scene_;

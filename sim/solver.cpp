@@ -124,7 +124,7 @@ SolverT<T>::SolverT(const Scene& scene, SpringKernel kernel)
   check_contact_thickness(model_, scene);
   if (spec_.cloth_contact) cloth_contact_ = std::make_unique<TriangleContact<T>>(model_, spec_);
   const bool pins_move = std::any_of(scene.cloths.begin(), scene.cloths.end(),
-                                     [](const ClothSpec& c) { return c.pins_follow.has_value(); });
+                                     [](const ClothSpec& c) { return !c.pins_follow.empty(); });
   if (pins_move) moving_pins_ = std::make_unique<KinematicPins<T>>(scene, model_);
   for (const ClothSpec& c : scene.cloths) release_at_.push_back(c.release_at);
   built_release_at_ = release_at_;

@@ -407,7 +407,7 @@ TEST(MovingCollider, PinsFollowATurningBody) {
     c.mass = 0.1;
     c.key = "cloth";
     for (int i = 0; i < 16; ++i) c.pins.push_back({i, 0});
-    c.pins_follow = 0;
+    c.pins_follow = {0};
     scene.cloths = {c};
     scene.springs.stiffness = 300.0;
     scene.springs.damping = 0.02;
@@ -443,6 +443,32 @@ TEST(MovingCollider, PinsFollowATurningBody) {
     }
     EXPECT_NEAR(spin, 3.0, 0.45);
   }
+}
+
+// The twist (scenes/twist.toml): pins_follow names both bars, and each edge's pins follow the
+// nearer one, turning opposite ways about the line through the sheet while the bars close in:
+// after 0.5 s every pin is exactly where its own bar's motion carries it.
+TEST(MovingCollider, EachPinFollowsTheNearestListedBar) {
+  const Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/twist.toml",
+                                      {"solver.cloth_contact=false"});
+  ASSERT_EQ(scene.cloths[0].pins_follow, (std::vector<int>{0, 1}));
+  std::unique_ptr<Solver> s = make_solver(scene);
+  std::vector<Vec3d> rest;
+  for (int i = 0; i < 64 * 64; ++i) rest.push_back(s->position(i));
+  ASSERT_TRUE(s->advance(0.5).ok());
+  const double t = s->time();
+  for (int j = 0; j < 64; ++j)
+    for (const int side : {0, 1}) {
+      const int v = (side ? 63 : 0) + 64 * j;
+      const double sign = side ? -1.0 : 1.0;  // bar 0 turns about +x, bar 1 about -x
+      const V3 centre(sign * -0.262, 1.0, 0.0),
+          x0(rest[std::size_t(v)][0], rest[std::size_t(v)][1], rest[std::size_t(v)][2]);
+      const V3 expect =
+          Eigen::AngleAxisd(sign * 1.2566370614359172 * t, V3::UnitX()) * (x0 - centre) + centre +
+          V3(sign * 0.03 * t, 0.0, 0.0);
+      const Vec3d p = s->position(v);
+      EXPECT_LT((V3(p[0], p[1], p[2]) - expect).norm(), 1e-5) << "pin " << v;
+    }
 }
 
 // --- pins that let go -------------------------------------------------------------------------

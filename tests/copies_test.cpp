@@ -146,7 +146,7 @@ TEST(Copies, ScenesThatCannotBeCopiedSayWhy) {
   EXPECT_THROW(with_copies(s, 2, 2.0), std::invalid_argument);
   EXPECT_EQ(with_copies(s, 1, 2.0).cloths.size(), 1u);
   Scene follow = drop(IntegratorKind::symplectic_euler);
-  follow.cloths[0].pins_follow = 0;
+  follow.cloths[0].pins_follow = {0};
   EXPECT_NE(copies_unsupported_reason(follow).find("pins_follow"), std::string::npos);
 }
 

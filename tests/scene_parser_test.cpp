@@ -239,6 +239,14 @@ TEST(SceneParser, UnknownKeys) {
                "no [mannequin]");
   expect_error("[cloth]\npins = [[0, 0]]\npins_follow = \"tail\"\n[mannequin]\n",
                "cloth.pins_follow", 3, "no mannequin part \"tail\" (parts: pelvis, chest");
+  expect_error("[cloth]\npins = [[0, 0]]\npins_follow = []\n", "cloth.pins_follow", 3,
+               "name at least one collider");
+  expect_error("[cloth]\npins = [[0, 0]]\npins_follow = [0, 1.5]\n[[colliders]]\n",
+               "cloth.pins_follow[1]", 3, "integer");
+  expect_error("[cloth]\npins = [[0, 0]]\npins_follow = [0, 3]\n[[colliders]]\ntype = \"sphere\"\n",
+               "cloth.pins_follow[1]", 3, "names collider 3, but the scene has 1");
+  expect_error("[cloth]\npins = [[0, 0]]\npins_follow = [0, \"tail\"]\n[mannequin]\n",
+               "cloth.pins_follow[1]", 3, "no mannequin part \"tail\"");
   expect_error(kMinimal + "[render]\nshade = 3\n", "render.shade", 10, "unknown key");
   expect_error(kMinimal + "[render.light]\nkind = \"spot\"\n", "render.light.kind", 10,
                "unknown key");

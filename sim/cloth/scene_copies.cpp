@@ -20,7 +20,7 @@ Vec3d plus(const Vec3d& a, const Vec3d& b) {
 std::string copies_unsupported_reason(const Scene& scene) {
   if (scene.mannequin) return "the mannequin is one body: a scene with a mannequin is not copied";
   for (const ClothSpec& c : scene.cloths)
-    if (c.pins_follow)
+    if (!c.pins_follow.empty())
       return c.key + "." + std::string(key_of<&ClothSpec::pins_follow>()) +
              ": a cloth whose pins follow a collider";
   return {};

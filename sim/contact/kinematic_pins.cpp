@@ -1,5 +1,7 @@
 #include "sim/contact/kinematic_pins.hpp"
 
+#include <cmath>
+
 namespace clothlab {
 
 template <class T>
@@ -7,16 +9,21 @@ KinematicPins<T>::KinematicPins(const Scene& scene, const Model<T>& m) {
   for (const ColliderSpec& spec : scene.colliders) colliders_.push_back(pose_only_collider(spec));
   for (std::size_t c = 0; c < scene.cloths.size() && c < m.cloths.size(); ++c) {
     const ClothSpec& cloth = scene.cloths[c];
-    if (!cloth.pins_follow) continue;
-    const int collider = *cloth.pins_follow;
-    const ColliderPose start = colliders_[static_cast<std::size_t>(collider)].pose(0.0);
     const ClothRange& r = m.cloths[c];
     for (const auto& pin : cloth.pins) {
       const int v = r.offset + pin[0] + pin[1] * r.nu;
       const auto i = static_cast<std::size_t>(v);
       const Eigen::Vector3d x(double(m.rest_positions.x[i]), double(m.rest_positions.y[i]),
                               double(m.rest_positions.z[i]));
-      pins_.push_back({v, collider, start.to_local(x)});
+      // The listed collider whose centre is nearest (the first of equals).
+      int collider = -1;
+      double nearest = INFINITY;
+      for (const int k : cloth.pins_follow) {
+        const double d = (colliders_[std::size_t(k)].pose(0.0).centre - x).norm();
+        if (d < nearest) nearest = d, collider = k;
+      }
+      if (collider < 0) continue;
+      pins_.push_back({v, collider, colliders_[std::size_t(collider)].pose(0.0).to_local(x)});
     }
   }
 }

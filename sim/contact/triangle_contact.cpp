@@ -1,6 +1,7 @@
 #include "sim/contact/triangle_contact.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "sim/contact/ccd.hpp"
@@ -303,6 +304,8 @@ bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
   for (const double growth : {kSkinGrowth, 1.0}) {
     set_allowances(growth, threads);
     if (gather_pairs(threads)) return true;
+    // No vertex strayed enough for the growth to matter: the least skins are these.
+    if (kSkinGrowth * stray0_ <= kSkin * thickness_) break;
   }
   stale_ = true;
   return false;
@@ -319,19 +322,33 @@ bool TriangleContact<T>::gather_pairs(int threads) {
     boxes[t] = {V3(b.lo[0], b.lo[1], b.lo[2]), V3(b.hi[0], b.hi[1], b.hi[2])};
   }
   bvh_.refit();
-  // Each piece stops at the bound on its own (the same decision for any thread count).
+  // Each piece stops at the bound for its own triangles (the same decision for any thread count;
+  // each level of pieces covers every triangle once, so their bounds add up to kTaskDepth + 1
+  // times the whole's and a tangle is found in time proportional to the bound).
   const std::size_t bound = kMaxPairsPerTriangle * boxes.size();
   const long count = long(tasks_.size());
   const Cull cull{flat_, seam_patch_};
+  const auto size = [&](int n) {
+    return std::size_t(bvh_.triangles_end(n) - bvh_.triangles_begin(n));
+  };
+  // A piece past its bound decides the outcome (a tangle) whenever it runs, so it stops the
+  // others: the same outcome for any thread count, in less time.
+  std::atomic<bool> tangle{false};
   run_team(threads, [&] {
 #pragma omp for schedule(dynamic, 1)
     for (long k = 0; k < count; ++k) {
+      const TriangleBvh::Task& task = tasks_[std::size_t(k)];
+      const std::size_t own =
+          kMaxPairsPerTriangle * (size(task.a) + (task.a == task.b ? 0 : size(task.b)));
       std::vector<Pair>& out = task_pairs_[std::size_t(k)];
       out.clear();
       std::size_t leaves = 0;
-      task_done_[std::size_t(k)] = bvh_.run(tasks_[std::size_t(k)], cull, [&](int ta, int tb) {
+      task_done_[std::size_t(k)] = bvh_.run(task, cull, [&](int ta, int tb) {
+        if (tangle.load(std::memory_order_relaxed)) return false;
         add_pairs(ta, tb, out);
-        return ++leaves <= bound && out.size() <= bound;
+        if (++leaves <= own && out.size() <= own) return true;
+        tangle.store(true, std::memory_order_relaxed);
+        return false;
       });
     }
   });

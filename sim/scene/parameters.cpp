@@ -135,8 +135,9 @@ std::vector<Parameter> cloth_more() {
       special_row<&ClothSpec::pins_follow>(
           &special::read_pins_follow,
           {.name = "pins_follow",
-           .form = "collider index or mannequin part name",
-           .description = "the pins move with that collider (\"pelvis\", \"chest\", ...)"}),
+           .form = "collider index or mannequin part name, or an array of them",
+           .description = "the pins move with that collider (\"pelvis\", \"chest\", ...); with "
+                          "several, each pin with the one whose centre is nearest at t = 0"}),
       special_row<&ClothSpec::springs>(
           &special::read_cloth_springs,
           {.name = "springs",

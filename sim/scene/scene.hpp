@@ -44,10 +44,13 @@ struct ClothSpec {
   std::vector<std::array<int, 2>> pins;   // (i, j) vertices held fixed
   std::optional<SpringSpec> springs;      // per-cloth springs; else Scene::springs applies
   std::optional<double> release_at;       // s: the pins let go at this time (a drop)
-  // Index into [[colliders]]: the pins move with that collider (a waistband on a turning body),
-  // keeping their place in its frame; absent: pins stay where they are.
-  std::optional<int> pins_follow;
-  std::string pins_follow_name;  // as written, when a mannequin part was named (e.g. "pelvis")
+  // Indices into [[colliders]]: the pins move with that collider (a waistband on a turning body),
+  // keeping their place in its frame; with several, each pin with the one whose centre is
+  // nearest at t = 0 (a sheet twisted between two bars); empty: pins stay where they are.
+  std::vector<int> pins_follow;
+  // As written, per entry: a mannequin part's name (e.g. "pelvis"), resolved once the mannequin
+  // is built; empty where an index was written.
+  std::vector<std::string> pins_follow_names;
   // Tube (a cylinder or frustum: skirt, sleeve): ring j is centred at origin + j * length /
   // (nv - 1) along v_axis, with radius from radius[0] (first ring) to radius[1] (last ring);
   // vertex i of a ring lies at angle 2 pi i / nu from u_axis, turning towards v_axis x u_axis.

@@ -122,13 +122,24 @@ int radius_values(const void* object, double* out) {
   return 2;
 }
 
-// A collider's index, or a mannequin part's name (resolved once the mannequin is read).
+// A collider's index, or a mannequin part's name (resolved once the mannequin is read); or an
+// array of them.
 void read_pins_follow(TomlReader& in, void* object) {
   ClothSpec& cloth = *static_cast<ClothSpec*>(object);
-  if (in.node().is_string())
-    cloth.pins_follow_name = in.text(in.node(), in.key());
-  else
-    cloth.pins_follow = in.small_integer(in.node(), in.key());
+  const auto one = [&](const toml::node& node, const std::string& key) {
+    if (node.is_string()) {
+      cloth.pins_follow_names.push_back(in.text(node, key));
+      cloth.pins_follow.push_back(-1);
+    } else {
+      cloth.pins_follow_names.emplace_back();
+      cloth.pins_follow.push_back(in.small_integer(node, key));
+    }
+  };
+  const toml::array* list = in.node().as_array();
+  if (!list) return one(in.node(), in.key());
+  if (list->empty()) in.fail(in.key(), in.node(), "name at least one collider");
+  for (std::size_t n = 0; n < list->size(); ++n)
+    one(*list->get(n), in.key() + "[" + std::to_string(n) + "]");
 }
 
 // A cloth's own springs start from the top-level [springs], so they need name only what

@@ -377,12 +377,15 @@ class Validator {
   }
 
   void check_pins_follow(const ClothSpec& cloth) const {
-    if (!cloth.pins_follow) return;
-    const int c = *cloth.pins_follow;
+    if (cloth.pins_follow.empty()) return;
     const std::string key = at(cloth.key, key_of<&ClothSpec::pins_follow>());
-    if (c < 0 || c >= static_cast<int>(scene_.colliders.size()))
-      fail(key, "names collider " + std::to_string(c) + ", but the scene has " +
-                    std::to_string(scene_.colliders.size()) + " ([[colliders]] count from 0)");
+    for (std::size_t n = 0; n < cloth.pins_follow.size(); ++n) {
+      const int c = cloth.pins_follow[n];
+      if (c < 0 || c >= static_cast<int>(scene_.colliders.size()))
+        fail(cloth.pins_follow.size() > 1 ? key + "[" + std::to_string(n) + "]" : key,
+             "names collider " + std::to_string(c) + ", but the scene has " +
+                 std::to_string(scene_.colliders.size()) + " ([[colliders]] count from 0)");
+    }
     if (cloth.pins.empty()) fail(key, "the cloth has no pins to move");
   }
 
