@@ -322,34 +322,35 @@ bool TriangleContact<T>::gather_pairs(int threads) {
     boxes[t] = {V3(b.lo[0], b.lo[1], b.lo[2]), V3(b.hi[0], b.hi[1], b.hi[2])};
   }
   bvh_.refit();
-  // Each piece stops at the bound for its own triangles (the same decision for any thread count;
-  // each level of pieces covers every triangle once, so their bounds add up to kTaskDepth + 1
-  // times the whole's and a tangle is found in time proportional to the bound).
+  // The pieces add their leaf pairs and pairs to shared totals every kFlush leaves; once a total
+  // passes the bound every piece stops. The true totals alone decide whether they pass it, so
+  // the outcome (a tangle or the full list) is the same for any thread count, and a tangle is
+  // found after about the bound's worth of work.
   const std::size_t bound = kMaxPairsPerTriangle * boxes.size();
   const long count = long(tasks_.size());
   const Cull cull{flat_, seam_patch_};
-  const auto size = [&](int n) {
-    return std::size_t(bvh_.triangles_end(n) - bvh_.triangles_begin(n));
-  };
-  // A piece past its bound decides the outcome (a tangle) whenever it runs, so it stops the
-  // others: the same outcome for any thread count, in less time.
+  std::atomic<std::size_t> all_leaves{0}, all_pairs{0};
   std::atomic<bool> tangle{false};
   run_team(threads, [&] {
 #pragma omp for schedule(dynamic, 1)
     for (long k = 0; k < count; ++k) {
-      const TriangleBvh::Task& task = tasks_[std::size_t(k)];
-      const std::size_t own =
-          kMaxPairsPerTriangle * (size(task.a) + (task.a == task.b ? 0 : size(task.b)));
       std::vector<Pair>& out = task_pairs_[std::size_t(k)];
       out.clear();
-      std::size_t leaves = 0;
-      task_done_[std::size_t(k)] = bvh_.run(task, cull, [&](int ta, int tb) {
-        if (tangle.load(std::memory_order_relaxed)) return false;
+      std::size_t leaves = 0, flushed = 0;
+      const auto flush = [&] {
+        const bool past =
+            all_leaves.fetch_add(leaves) + leaves > bound ||
+            all_pairs.fetch_add(out.size() - flushed) + (out.size() - flushed) > bound;
+        leaves = 0;
+        flushed = out.size();
+        if (past) tangle.store(true, std::memory_order_relaxed);
+        return !past && !tangle.load(std::memory_order_relaxed);
+      };
+      const bool ran = bvh_.run(tasks_[std::size_t(k)], cull, [&](int ta, int tb) {
         add_pairs(ta, tb, out);
-        if (++leaves <= own && out.size() <= own) return true;
-        tangle.store(true, std::memory_order_relaxed);
-        return false;
+        return ++leaves < kFlush || flush();
       });
+      task_done_[std::size_t(k)] = ran && flush();
     }
   });
   std::size_t total = 0;

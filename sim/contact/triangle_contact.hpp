@@ -57,12 +57,13 @@ class TriangleContact {
   // Candidate pairs reserved per triangle when built: the pair list grows past it only in a
   // tangle denser than that, once.
   static constexpr std::size_t kPairsPerTriangle = 16;
-  // Broad-phase leaf pairs and candidate pairs per triangle (of the whole, or of any piece of the
-  // tree) beyond which the skins shrink to the least that covers the substep, and beyond which
-  // again the substep is undone.
+  // Broad-phase leaf pairs and candidate pairs per triangle beyond which the skins shrink to the
+  // least that covers the substep, and beyond which again the substep is undone.
   static constexpr std::size_t kMaxPairsPerTriangle = 64;
   // Rounds of the fail-safe before every free vertex returns.
   static constexpr int kMaxRounds = 16;
+  // Leaf pairs a broad-phase piece visits between adding its counts to the shared totals.
+  static constexpr std::size_t kFlush = 256;
   // Levels of the tree unrolled into pieces for threads (2^kTaskDepth nodes against themselves).
   static constexpr int kTaskDepth = 5;
   // The least a vertex may stray before the pairs are collected again, in thicknesses.
