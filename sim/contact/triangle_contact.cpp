@@ -284,6 +284,7 @@ void TriangleContact<T>::feature_boxes(int threads) {
 template <class T>
 bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
   xc_ = s.pos;
+  tangled_ = false;
   const RigidFit fit = fit_rigid(x0_, threads);
   rotation0_ = fit.rotation;
   rotation1_.setIdentity();
@@ -308,7 +309,30 @@ bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
     if (kSkinGrowth * stray0_ <= kSkin * thickness_) break;
   }
   stale_ = true;
+  tangled_ = true;  // at xc
   return false;
+}
+
+// After a tangle: whether the cloth is still where it was (within kSkin thicknesses of xc after
+// the rigid fit), so that a new collection would find the same tangle. The undo returns every
+// free vertex, so a tangle that stays is undone again without walking the tree each substep.
+template <class T>
+bool TriangleContact<T>::still_tangled(const State<T>& s, int threads) {
+  if (!tangled_) return false;
+  const RigidFit fit = fit_rigid(s.pos, threads);
+  double most = 0.0;
+  for_each_block_indexed(
+      xc_.size(), threads_for(xc_.size(), threads),
+      [&](std::size_t b, std::size_t lo, std::size_t hi) {
+        double block = 0.0;
+        for (std::size_t i = lo; i < hi; ++i)
+          block = std::max(
+              block, (load3(s.pos, i) - fit.to - fit.rotation * (load3(xc_, i) - fit.from)).norm());
+        block_sums_[b] = block;
+      });
+  for (std::size_t b = 0; b < block_count(xc_.size()); ++b) most = std::max(most, block_sums_[b]);
+  tangled_ = most <= kSkin * thickness_;
+  return tangled_;
 }
 
 // The pairs of triangles whose padded boxes meet give their owned features' pairs; the tree's
@@ -326,7 +350,7 @@ bool TriangleContact<T>::gather_pairs(int threads) {
   // passes the bound every piece stops. The true totals alone decide whether they pass it, so
   // the outcome (a tangle or the full list) is the same for any thread count, and a tangle is
   // found after about the bound's worth of work.
-  const std::size_t bound = kMaxPairsPerTriangle * boxes.size();
+  const std::size_t bound = std::min(kMaxPairsPerTriangle * boxes.size(), kMaxPairs);
   const long count = long(tasks_.size());
   const Cull cull{flat_, seam_patch_};
   std::atomic<std::size_t> all_leaves{0}, all_pairs{0};
@@ -676,6 +700,7 @@ template <class T>
 bool TriangleContact<T>::respond(const Model<T>& m, State<T>& s, double h, int threads) {
   stats_ = {};
   // The pairs again when a vertex has strayed past its skin since they were collected.
+  if (still_tangled(s, threads)) return undo(m, s);
   measure_stray1(s, threads);
   if (stale_ || excess1_ > 0.0) {
     stats_.collected = true;

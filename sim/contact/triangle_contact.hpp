@@ -16,8 +16,9 @@
 //     passed through since, split by inverse mass with the closest points' weights, with Coulomb
 //     friction on the pair's relative tangential motion. Gauss-Seidel over the pairs in their
 //     fixed order, kProximityIterations sweeps. Velocities take the position change over h.
-//     A tangle beyond kMaxPairsPerTriangle (an exploding cloth) undoes the whole substep: every
-//     free vertex returns to x0 with zero velocity, which keeps the guarantee at a bounded cost.
+//     A tangle beyond kMaxPairsPerTriangle or kMaxPairs (an exploding cloth) undoes the whole
+//     substep (after a try with the least skins): every free vertex returns to x0 with zero
+//     velocity, which keeps the guarantee at a bounded cost.
 //  3. Fail-safe (the no-crossing guarantee): each pair's straight motion from x0 to its final
 //     x1 is tested with conservative continuous collision detection (sim/contact/ccd.hpp: does it
 //     come within eta of contact, give or take eta, with eta a hundredth of the thickness); the
@@ -57,9 +58,12 @@ class TriangleContact {
   // Candidate pairs reserved per triangle when built: the pair list grows past it only in a
   // tangle denser than that, once.
   static constexpr std::size_t kPairsPerTriangle = 16;
-  // Broad-phase leaf pairs and candidate pairs per triangle beyond which the skins shrink to the
-  // least that covers the substep, and beyond which again the substep is undone.
-  static constexpr std::size_t kMaxPairsPerTriangle = 64;
+  // Broad-phase leaf pairs and candidate pairs per triangle, and in all, beyond which the skins
+  // shrink to the least that covers the substep, and beyond which again the substep is undone.
+  // The twist (scenes/twist.toml) wrung into a rope holds 170 pairs a triangle at 2 s; the cap
+  // keeps an exploding large cloth's list under 100 MB.
+  static constexpr std::size_t kMaxPairsPerTriangle = 256;
+  static constexpr std::size_t kMaxPairs = std::size_t(1) << 22;
   // Rounds of the fail-safe before every free vertex returns.
   static constexpr int kMaxRounds = 16;
   // Leaf pairs a broad-phase piece visits between adding its counts to the shared totals.
@@ -113,7 +117,7 @@ class TriangleContact {
   struct FloatBox {
     std::array<float, 3> lo{}, hi{};
   };
-  // Returns false when the tangle was beyond kMaxPairsPerTriangle.
+  // Returns false when the tangle was beyond the bound.
   bool collect_pairs(const State<T>& s, int threads);
   // The pairs again when a vertex strayed past its skin or a flat patch bent (with `flag` set in
   // the stats); false when the tangle was beyond the bound.
@@ -139,6 +143,7 @@ class TriangleContact {
                    const std::vector<float>* also, int threads);
   void set_allowances(double growth, int threads);
   bool gather_pairs(int threads);
+  bool still_tangled(const State<T>& s, int threads);
   // The substep's end against xc: stray1_, dev1_, excess1_ and the shrink factor.
   void measure_stray1(const State<T>& s, int threads);
   FloatBox point_box(int v) const;
@@ -221,6 +226,7 @@ class TriangleContact {
   std::vector<std::vector<Pair>> task_pairs_;      // per piece: the pairs it found
   std::vector<std::uint8_t> task_done_;            // per piece: it ran to the end
   bool stale_ = true;                              // a vertex left its box between substeps
+  bool tangled_ = false;                           // the last collection, at xc, was a tangle
   std::vector<Pair> pairs_;
   std::vector<std::uint8_t> flag_;  // per pair: the last parallel test's answer
   // Per block of vertices: kBlockSums partial sums for the rigid fit, or the largest stray and
