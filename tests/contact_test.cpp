@@ -445,12 +445,13 @@ TEST(MovingCollider, PinsFollowATurningBody) {
   }
 }
 
-// The twist (scenes/twist.toml): pins_follow names both bars, and each edge's pins follow the
-// nearer one, turning opposite ways about the line through the sheet while the bars close in:
-// after 0.5 s every pin is exactly where its own bar's motion carries it.
+// The twist (tests/stress_scenes/twist.toml): pins_follow names both bars, and each edge's pins
+// follow the nearer one, turning opposite ways about the line through the sheet while the bars
+// close in: after 0.5 s every pin is exactly where its own bar's motion carries it.
 TEST(MovingCollider, EachPinFollowsTheNearestListedBar) {
-  const Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/twist.toml",
-                                      {"solver.cloth_contact=false"});
+  const Scene scene =
+      read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/tests/stress_scenes/twist.toml",
+                      {"solver.cloth_contact=false"});
   ASSERT_EQ(scene.cloths[0].pins_follow, (std::vector<int>{0, 1}));
   std::unique_ptr<Solver> s = make_solver(scene);
   std::vector<Vec3d> rest;

@@ -60,8 +60,8 @@ class TriangleContact {
   static constexpr std::size_t kPairsPerTriangle = 16;
   // Broad-phase leaf pairs and candidate pairs per triangle, and in all, beyond which the skins
   // shrink to the least that covers the substep, and beyond which again the substep is undone.
-  // The twist (scenes/twist.toml) wrung into a rope holds 170 pairs a triangle at 2 s; the cap
-  // keeps an exploding large cloth's list under 100 MB.
+  // The twist (tests/stress_scenes/twist.toml) wrung into a rope holds 170 pairs a triangle at 2 s;
+  // the cap keeps an exploding large cloth's list under 100 MB.
   static constexpr std::size_t kMaxPairsPerTriangle = 256;
   static constexpr std::size_t kMaxPairs = std::size_t(1) << 22;
   // Rounds of the fail-safe before every free vertex returns.
