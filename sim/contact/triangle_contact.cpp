@@ -319,18 +319,8 @@ bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
 template <class T>
 bool TriangleContact<T>::still_tangled(const State<T>& s, int threads) {
   if (!tangled_) return false;
-  const RigidFit fit = fit_rigid(s.pos, threads);
-  double most = 0.0;
-  for_each_block_indexed(
-      xc_.size(), threads_for(xc_.size(), threads),
-      [&](std::size_t b, std::size_t lo, std::size_t hi) {
-        double block = 0.0;
-        for (std::size_t i = lo; i < hi; ++i)
-          block = std::max(
-              block, (load3(s.pos, i) - fit.to - fit.rotation * (load3(xc_, i) - fit.from)).norm());
-        block_sums_[b] = block;
-      });
-  for (std::size_t b = 0; b < block_count(xc_.size()); ++b) most = std::max(most, block_sums_[b]);
+  // dev1_ as scratch: after a tangle the pairs are stale and a collection resets it.
+  const double most = deviations(s.pos, fit_rigid(s.pos, threads), dev1_, nullptr, threads).most;
   tangled_ = most <= kSkin * thickness_;
   return tangled_;
 }
