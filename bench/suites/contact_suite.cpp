@@ -57,8 +57,10 @@ ContactRun run_case(const std::string& path, bool contact, double seconds, int t
 
 std::vector<Table> contact_suite(const SuiteOptions& o) {
   const std::filesystem::path scenes = std::filesystem::path(CLOTHLAB_DEFAULT_SCENE).parent_path();
-  const std::vector<ContactCase> cases = {
-      {"pile.toml", 5.0, 2.5}, {"stack_on_ball.toml", 3.0, 0.5}, {"large_sheet.toml", 1.0, 0.0}};
+  const std::vector<ContactCase> cases = {{"pile.toml", 5.0, 2.5},
+                                          {"stack_on_ball.toml", 3.0, 0.5},
+                                          {"thin_table.toml", 5.0, 1.0},
+                                          {"large_sheet.toml", 1.0, 0.0}};
   Table t{
       "",
       "Cloth against cloth: crossing edge/triangle pairs over the 60 Hz frames and the cost "
