@@ -107,6 +107,8 @@ class SolverState {
   virtual std::optional<ClothContactStats> last_cloth_contact() const = 0;
   // Crossing (edge, triangle) pairs of the cloth surfaces now (sim/contact/intersections.hpp).
   virtual long intersections() const = 0;
+  // solver.self_thickness: how far apart layers of cloth stay (m), with contact on or off.
+  virtual double self_thickness() const = 0;
   // Where the state lives in device buffers (the GPU backend): the renderer draws from them.
   // Null on the CPU.
   virtual DeviceCloth* device_cloth() const = 0;

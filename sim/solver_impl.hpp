@@ -100,6 +100,7 @@ class SolverT : public Solver {
     return cloth_contact_ ? std::optional<ClothContactStats>(cloth_contact_->last()) : std::nullopt;
   }
   long intersections() const override;
+  double self_thickness() const override { return spec_.self_thickness; }
   DeviceCloth* device_cloth() const override {
     return backend_ ? backend_->device_cloth() : nullptr;
   }

@@ -153,6 +153,39 @@ TEST_F(DiagnosticsTest, ColourBarMatchesTheCloth) {
   EXPECT_TRUE(renderer_->legends().empty());
 }
 
+// The contact view (key C): a second sheet 3 mm above the first, both pinned flat, shows the
+// map at 3 mm of its range, twice the 5 mm self_thickness (0.3; within 2/255), and the bar spans
+// [0, 10 mm]; tilted so that it passes through the first sheet along the middle, the crossing
+// triangles show the warning colour, magenta, and the sheet near its edge, 8 mm apart, does not.
+TEST_F(DiagnosticsTest, ContactViewShowsTheGapAndCrossingsInMagenta) {
+  Scene scene = flat_sheet(0.0);
+  scene.cloths.push_back(scene.cloths[0]);
+  scene.cloths[1].origin = {-0.5, 1.003, -0.5};
+  const auto layered = make_solver(scene);
+  renderer_->set_cloth(*layered);
+  vis::ViewSettings view = top_view(*layered);
+  view.color.field = vis::ScalarField::contact;
+  view.color.map = vis::ColorMap::turbo;
+  const std::vector<std::uint8_t> image = test::render_frame(*renderer_, *layered, view);
+  const vis::ScalarRange range = *renderer_->diagnostics().color_range();
+  EXPECT_EQ(range.min, 0.0);
+  EXPECT_NEAR(range.max, 0.01, 1e-12);
+  const auto [px, py] = pixel_of(view, {0.03f, 1.003f, 0.03f});
+  EXPECT_LE(off_by(pixel(image, px, py), vis::colormap_sample(view.color.map, 0.3)), 2);
+
+  // Through the first at z = 0, between its rows and columns (a vertex on the other sheet touches
+  // it; it does not cross).
+  scene.cloths[1].origin = {-0.44, 0.991, -0.45};
+  scene.cloths[1].v_axis = {0.0, 0.02, std::sqrt(1.0 - 0.02 * 0.02)};
+  const auto crossing = make_solver(scene);
+  renderer_->set_cloth(*crossing);
+  const std::vector<std::uint8_t> crossed = test::render_frame(*renderer_, *crossing, view);
+  const auto [cx, cy] = pixel_of(view, {0.03f, 1.0f, 0.0f});
+  EXPECT_LE(off_by(pixel(crossed, cx, cy), {1.0f, 0.0f, 1.0f}), 2);
+  const auto [fx, fy] = pixel_of(view, {0.03f, 1.0f, -0.42f});  // 8 mm apart: not crossed
+  EXPECT_GT(off_by(pixel(crossed, fx, fy), {1.0f, 0.0f, 1.0f}), 100);
+}
+
 // Gravity arrows all have magnitude m g: with the range fixed at [0, 2 m g] each shows the
 // map's middle colour on the side facing the camera, one arrow per shown vertex.
 TEST_F(DiagnosticsTest, ArrowsComeOnePerShownVertexInTheMapsColour) {

@@ -23,6 +23,7 @@ enum class Action {
   probe_position,        // 0
   toggle_force_arrows,   // F
   toggle_normal_arrows,  // N
+  toggle_contact_view,   // C: colour by the gap to other cloth, crossings in magenta
   push,                  // P
   toggle_wind,           // W
   release_pins,          // D: drop the cloth (onto the colliders); R pins it again

@@ -317,6 +317,10 @@ bool ViewApp::dispatch_view(Action action) {
     case Action::toggle_normal_arrows:
       view_.arrows.normals = !view_.arrows.normals;
       return true;
+    case Action::toggle_contact_view:
+      view_.color.field =
+          view_.color.field == ScalarField::contact ? ScalarField::none : ScalarField::contact;
+      return true;
     case Action::toggle_help:
       panel_.show_help = !panel_.show_help;
       return true;

@@ -37,7 +37,7 @@ void draw_view_editors(ViewSettings& view) {
   const ScalarField before = c.field;
   enum_combo("colour by", c.field,
              {ScalarField::none, ScalarField::force, ScalarField::speed, ScalarField::strain,
-              ScalarField::height},
+              ScalarField::height, ScalarField::contact},
              scalar_field_name);
   // A signed field starts on the diverging map with a symmetric range; the user may change it.
   if (c.field != before && scalar_field_signed(c.field)) {

@@ -58,6 +58,8 @@ std::vector<Variant> view_variants() {
       {"all off", [](vis::ViewSettings&) {}},
       {"colour by |force|", [](vis::ViewSettings& v) { v.color.field = vis::ScalarField::force; }},
       {"colour by strain", [](vis::ViewSettings& v) { v.color.field = vis::ScalarField::strain; }},
+      {"colour by contact gap",
+       [](vis::ViewSettings& v) { v.color.field = vis::ScalarField::contact; }},
       {"force arrows", [](vis::ViewSettings& v) { v.arrows.force = true; }},
       {"normal arrows", [](vis::ViewSettings& v) { v.arrows.normals = true; }},
       {"force + normal arrows",

@@ -30,7 +30,7 @@ bool crosses(const std::array<int, 2>& e, const std::array<int, 3>& t, const std
 
 }  // namespace
 
-long IntersectionCounter::count(const std::vector<V3>& x) {
+long IntersectionCounter::count(const std::vector<V3>& x, std::vector<Crossing>* crossings) {
   const auto& tris = features_.triangles;
   std::vector<Box3>& boxes = bvh_.leaf_boxes();
   for (std::size_t t = 0; t < tris.size(); ++t) {
@@ -39,16 +39,17 @@ long IntersectionCounter::count(const std::vector<V3>& x) {
     boxes[t] = {a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c)};
   }
   bvh_.refit();
-  long crossings = 0;
+  if (crossings) crossings->clear();
+  long count = 0;
   // Each side a triangle owns against the other triangle, both ways.
   const auto owned_sides_through = [&](int owner, int other) {
     const std::uint8_t mask = features_.owned_edges[std::size_t(owner)];
     for (int k = 0; k < 3; ++k)
       if (mask & (1u << k)) {
-        const auto& e =
-            features_
-                .edges[std::size_t(features_.triangle_edges[std::size_t(owner)][std::size_t(k)])];
-        if (crosses(e, tris[std::size_t(other)], x)) ++crossings;
+        const int edge = features_.triangle_edges[std::size_t(owner)][std::size_t(k)];
+        if (!crosses(features_.edges[std::size_t(edge)], tris[std::size_t(other)], x)) continue;
+        ++count;
+        if (crossings) crossings->push_back({edge, other});
       }
   };
   bvh_.self_pairs([&](int ta, int tb) {
@@ -56,7 +57,7 @@ long IntersectionCounter::count(const std::vector<V3>& x) {
     owned_sides_through(tb, ta);
     return true;
   });
-  return crossings;
+  return count;
 }
 
 long count_crossings_brute_force(const std::vector<std::array<int, 3>>& triangles,

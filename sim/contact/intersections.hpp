@@ -14,14 +14,21 @@
 
 namespace clothlab {
 
+// One crossing: edge `edge` of features().edges passes through triangle `triangle`.
+struct Crossing {
+  int edge = 0, triangle = 0;
+};
+
 class IntersectionCounter {
  public:
   // triangles over the vertices of `rest` (the shape the tree is cut from).
   IntersectionCounter(const std::vector<std::array<int, 3>>& triangles,
                       const std::vector<Eigen::Vector3d>& rest);
 
-  // Crossing pairs at positions x (one per vertex).
-  long count(const std::vector<Eigen::Vector3d>& x);
+  // Crossing pairs at positions x (one per vertex); each one into `crossings` when given
+  // (cleared first; it grows only past its capacity).
+  long count(const std::vector<Eigen::Vector3d>& x, std::vector<Crossing>* crossings = nullptr);
+  const SurfaceFeatures& features() const { return features_; }
 
  private:
   SurfaceFeatures features_;

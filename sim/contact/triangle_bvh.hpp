@@ -47,6 +47,7 @@ class TriangleBvh {
   // Every inner node's box as the union of its children's (children come after their parent).
   void refit();
   const Box3& root_box() const { return nodes_.front().box; }
+  const Box3& node_box(int n) const { return nodes_[std::size_t(n)].box; }
 
   // fn(ta, tb) for every pair of distinct triangles whose boxes meet, each once, until fn
   // returns false. Returns false when stopped.

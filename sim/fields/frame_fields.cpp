@@ -50,7 +50,21 @@ const FrameFields& FieldSnapshot::take(Solver& solver, const FieldRequest& reque
       f.forces[s].clear();
   }
   take_strain(solver, request);
+  take_contact_gaps(solver, request);
   return f;
+}
+
+void FieldSnapshot::take_contact_gaps(const Solver& solver, const FieldRequest& request) {
+  FrameFields& f = fields_;
+  if (!request.contact_gaps) {
+    f.contact_gap.clear();
+    f.contact_range = 0.0;
+    return;
+  }
+  if (!gaps_ || gaps_->vertex_count() != solver.vertex_count()) gaps_.emplace(solver);
+  // Twice the thickness: layers that rest on each other at it show the map's middle.
+  f.contact_range = 2.0 * solver.self_thickness();
+  gaps_->per_vertex(f.positions, f.contact_range, solver.threads(), f.contact_gap);
 }
 
 void FieldSnapshot::take_strain(const SolverState& solver, const FieldRequest& request) {

@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "sim/fields/contact_gaps.hpp"
 #include "sim/fields/spring_strain.hpp"
 #include "sim/forces/force_source.hpp"
 
@@ -26,6 +27,7 @@ struct FieldRequest {
   bool normals = false;        // on the CPU (always there for a CPU solver: the cloth draws them)
   bool spring_strain = false;  // each spring's strain
   bool vertex_strain = false;  // the mean strain of the springs at each vertex
+  bool contact_gaps = false;   // how near each vertex comes to other cloth (ContactGaps)
 
   void add_force(ForceSource source) { forces[static_cast<std::size_t>(source)] = true; }
 };
@@ -39,6 +41,10 @@ struct FrameFields {
   std::array<std::vector<float>, kAllForceSources.size()> forces;  // 3 per vertex, requested ones
   std::vector<float> spring_strain;  // per spring (SolverState::spring_pairs() order)
   std::vector<float> vertex_strain;  // per vertex
+  // Per vertex, when requested: its gap to other cloth (m), at most contact_range (twice the
+  // solver's self_thickness); NaN where an edge crosses a triangle (sim/fields/contact_gaps.hpp).
+  std::vector<float> contact_gap;
+  double contact_range = 0.0;
   // The GPU backend's buffers, whose normals are up to date with `positions`; null on the CPU.
   const DeviceCloth* device = nullptr;
 
@@ -61,13 +67,18 @@ class FieldSnapshot {
   const FrameFields& take(Solver& solver, const FieldRequest& request);
   const FrameFields& fields() const { return fields_; }
   // Forgets the springs' topology: call when the solver was rebuilt with other springs.
-  void forget_topology() { strain_.reset(); }
+  void forget_topology() {
+    strain_.reset();
+    gaps_.reset();
+  }
 
  private:
   void take_strain(const SolverState& solver, const FieldRequest& request);
+  void take_contact_gaps(const Solver& solver, const FieldRequest& request);
 
   FrameFields fields_;
   std::optional<SpringStrain> strain_;  // built on the first strain request
+  std::optional<ContactGaps> gaps_;     // built on the first contact-gap request
   std::vector<float> spring_scratch_;   // per-spring strain when only the vertex mean is asked
 };
 

@@ -33,7 +33,9 @@ void Diagnostics::update(const SolverState& solver, const FrameFields& fields,
     scalars_ = {};
   } else {
     scalar_values(fields, view.color.field, view.force_source, scalars_);
-    color_range_ = choose_range(view.color.range, scalars_, view.color.fixed);
+    color_range_ = view.color.field == ScalarField::contact && view.color.range != RangeMode::fixed
+                       ? ScalarRange{0.0, fields.contact_range}  // from touching to out of reach
+                       : choose_range(view.color.range, scalars_, view.color.fixed);
     renderer.set_scalars(scalars_, *color_range_);
   }
 

@@ -20,6 +20,9 @@ void add_color_field(const ViewSettings& view, FieldRequest& r) {
     case ScalarField::strain:
       r.vertex_strain = true;
       return;
+    case ScalarField::contact:
+      r.contact_gaps = true;
+      return;
     case ScalarField::none:
     case ScalarField::height:  // from the positions
       return;

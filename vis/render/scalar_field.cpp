@@ -13,12 +13,13 @@ struct FieldInfo {
   ScalarField field;
   std::string_view name, unit, title;
 };
-constexpr std::array<FieldInfo, 5> kFields{{
+constexpr std::array<FieldInfo, 6> kFields{{
     {ScalarField::none, "none", "", ""},
     {ScalarField::force, "force", "N", "|force|"},
     {ScalarField::speed, "speed", "m/s", "|velocity|"},
     {ScalarField::strain, "strain", "", "strain (l-l0)/l0"},
     {ScalarField::height, "height", "m", "height"},
+    {ScalarField::contact, "contact", "m", "gap to cloth (magenta: crossed)"},
 }};
 
 const FieldInfo& info(ScalarField field) {
@@ -72,6 +73,10 @@ void scalar_values(const FrameFields& fields, ScalarField field, ForceSource sou
     case ScalarField::strain:
       require_field(fields.vertex_strain, n, "the vertices' strain");
       std::copy(fields.vertex_strain.begin(), fields.vertex_strain.end(), out.begin());
+      return;
+    case ScalarField::contact:
+      require_field(fields.contact_gap, n, "the contact gaps");
+      std::copy(fields.contact_gap.begin(), fields.contact_gap.end(), out.begin());
       return;
   }
 }

@@ -59,7 +59,7 @@ struct OrbitCamera {
 // What the cloth is coloured by in modes 2 and 3 (none: the mode's own colours). Each scalar is
 // computed per vertex on the CPU only while it is shown (vis/render/scalar_field.hpp) and mapped
 // through the colour map per fragment.
-enum class ScalarField { none, force, speed, strain, height };
+enum class ScalarField { none, force, speed, strain, height, contact };
 
 struct ColorSettings {
   ScalarField field = ScalarField::none;
@@ -84,8 +84,9 @@ struct ArrowSettings {
 };
 
 // The scalars the cloth can be coloured by (ScalarField::none aside).
-inline constexpr std::array<ScalarField, 4> kColourScalars{
-    ScalarField::force, ScalarField::speed, ScalarField::strain, ScalarField::height};
+inline constexpr std::array<ScalarField, 5> kColourScalars{ScalarField::force, ScalarField::speed,
+                                                           ScalarField::strain, ScalarField::height,
+                                                           ScalarField::contact};
 
 // The scientific views: what the colours and arrows show. A scene file leaves them at these
 // defaults; the window's keys and panel and `render`'s options (--color-by, --arrows, ...) set
