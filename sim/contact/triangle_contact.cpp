@@ -293,10 +293,18 @@ bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
   stray1_ = 0.0;
   std::fill(dev1_.begin(), dev1_.end(), 0.0f);
   stale_ = false;
-  // The patches that cannot touch themselves over the substep under way, skipped below.
-  flat_.choose(bvh_, features_, x0_, s.pos, threads);
-  shifted_flat_.choose(shifted_bvh_, features_, x0_, s.pos, threads);
-  seam_patches();
+  // The patches that cannot touch themselves over the substep under way, skipped below: those
+  // chosen before while they stay flat over it (a collection for strayed vertices alone), but
+  // chosen afresh at least every kChooseEvery collections, so that they grow as cloth flattens.
+  const bool keep = ++kept_choices_ < kChooseEvery &&
+                    flat_.patch_count() + shifted_flat_.patch_count() > 0 &&
+                    still_flat(s.pos, threads);
+  if (!keep) {
+    kept_choices_ = 0;
+    flat_.choose(bvh_, features_, x0_, s.pos, threads);
+    shifted_flat_.choose(shifted_bvh_, features_, x0_, s.pos, threads);
+    seam_patches();
+  }
   pairs_.clear();
   flag_.clear();
   if (all_flat()) return true;
