@@ -18,6 +18,33 @@ VertexRef vertex_ref_of(const std::vector<ClothRange>& cloths, int index) {
   return {};
 }
 
+namespace {
+
+// The spring holding the most elastic energy, 1/2 k (l - L)^2, and the vertex at its first end.
+struct MostStretched {
+  double energy = -1.0;
+  VertexRef vertex;
+};
+template <class T>
+MostStretched most_stretched(const Model<T>& m, const State<T>& s) {
+  const SpringList<T> springs = spring_list(m);
+  MostStretched out;
+  for (std::size_t k = 0; k < springs.size(); ++k) {
+    const auto [a, b] = springs.ends[k];
+    double l2 = 0.0;
+    for (int d = 0; d < 3; ++d) {
+      const double x = double(s.pos.axis(d)[b]) - double(s.pos.axis(d)[a]);
+      l2 += x * x;
+    }
+    const double stretch = std::sqrt(l2) - double(springs.rest_length[k]);
+    const double energy = 0.5 * double(springs.stiffness[k]) * stretch * stretch;
+    if (energy > out.energy) out = {energy, vertex_ref_of(m.cloths, springs.ends[k][0])};
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string Divergence::message() const {
   char buf[256];
   std::snprintf(buf, sizeof buf,
@@ -126,32 +153,27 @@ bool DivergenceMonitor<T>::check_energy(const Model<T>& m, const State<T>& s, co
                                         long step, double time, Divergence& out) const {
   const double limit = kLimitFactor * scale_;
   if (std::abs(e.total()) <= limit && e.elastic <= limit) return false;
-  // Slow path: the spring holding the most elastic energy, 1/2 k (l - L)^2.
-  const SpringList<T> springs = spring_list(m);
-  std::size_t worst = 0;
-  double most = -1.0;
-  for (std::size_t k = 0; k < springs.size(); ++k) {
-    const auto [a, b] = springs.ends[k];
-    double l2 = 0.0;
-    for (int d = 0; d < 3; ++d) {
-      const double x = double(s.pos.axis(d)[b]) - double(s.pos.axis(d)[a]);
-      l2 += x * x;
-    }
-    const double stretch = std::sqrt(l2) - double(springs.rest_length[k]);
-    const double energy = 0.5 * double(springs.stiffness[k]) * stretch * stretch;
-    if (energy > most) most = energy, worst = k;
-  }
+  const MostStretched most = most_stretched(m, s);
   char buf[240];
   std::snprintf(buf, sizeof buf,
                 "%s energy %.3g J (elastic %.3g J) exceeds %.0f x the scene's energy scale "
                 "(%.3g J); a spring at this vertex holds %.3g J",
                 std::abs(e.total()) > limit ? "total" : "elastic", e.total(), e.elastic,
-                kLimitFactor, scale_, std::max(most, 0.0));
+                kLimitFactor, scale_, std::max(most.energy, 0.0));
   out.step = step;
   out.time = time;
-  out.vertex = springs.size() ? vertex_ref_of(m.cloths, springs.ends[worst][0]) : VertexRef{};
+  out.vertex = most.vertex;
   out.quantity = buf;
   return true;
+}
+
+template <class T>
+void DivergenceMonitor<T>::stuck(const Model<T>& m, const State<T>& s, long step, double time,
+                                 const std::string& why, Divergence& out) const {
+  out.step = step;
+  out.time = time;
+  out.vertex = most_stretched(m, s).vertex;
+  out.quantity = why;
 }
 
 template class DivergenceMonitor<float>;

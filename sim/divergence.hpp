@@ -47,6 +47,10 @@ class DivergenceMonitor {
   // energy) when `e`, the energy of `s`, has its elastic or total part beyond the limit.
   bool check_energy(const Model<T>& m, const State<T>& s, const Energy& e, long step, double time,
                     Divergence& out) const;
+  // Fills `out` for a run that cannot go on (`why`), at the vertex at an end of the spring with
+  // the most elastic energy.
+  void stuck(const Model<T>& m, const State<T>& s, long step, double time, const std::string& why,
+             Divergence& out) const;
 
  private:
   double scale_ = 0.0;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "sim/body/body_motion.hpp"
@@ -201,6 +202,7 @@ AdvanceResult SolverT<T>::step(long count) {
       if (cloth_contact_) {
         sync_state();
         if (cloth_contact_->respond(model_, state_, h, threads_)) corrected = true;
+        count_tangle(cloth_contact_->last().overflow, t);
       }
       if (corrected) state_corrected();
     }
@@ -208,7 +210,8 @@ AdvanceResult SolverT<T>::step(long count) {
     ++result.steps;
     if (!check_after(k, count)) continue;
     sync_state();
-    if (monitor_.check(model_, state_, steps_, time(), threads_, report)) {
+    if (stuck_in_tangle(report) ||
+        monitor_.check(model_, state_, steps_, time(), threads_, report)) {
       diverged_ = report;
       result.divergence = report;
       break;
@@ -258,6 +261,36 @@ void SolverT<T>::pins_changed() {
 
 // Without CPU work between the substeps the mirror is read once per step() call: in the window,
 // once per frame.
+// Triangle contact undoes a tangle beyond its pair bound by holding every free vertex where the
+// substep began (docs/contact.md section 7). A tangle that comes back kStuckSubsteps times, with
+// fewer than kCleanSubsteps substeps without one in between, means the cloth cannot go on: an
+// exploding lattice (a step beyond the method's stability limit; the held vertices hide its
+// kinetic energy from the monitor), or cloth wrung or stacked denser than the bound, which moving
+// pins would meanwhile drag through itself. The run stops with a report instead of a frozen
+// cloth.
+template <class T>
+void SolverT<T>::count_tangle(bool tangled, double t) {
+  if (!tangled) {
+    if (++clean_substeps_ >= kCleanSubsteps) tangles_ = 0;
+    return;
+  }
+  if (tangles_ == 0) tangled_since_ = t;
+  ++tangles_;
+  clean_substeps_ = 0;
+}
+
+template <class T>
+bool SolverT<T>::stuck_in_tangle(Divergence& out) const {
+  if (tangles_ < kStuckSubsteps) return false;
+  char why[200];
+  std::snprintf(why, sizeof why,
+                "cloth contact: %d tangles beyond the pair bound since t = %.4g s held every free "
+                "vertex (an exploding cloth, or cloth pressed denser than the bound)",
+                tangles_, tangled_since_);
+  monitor_.stuck(model_, state_, steps_, time(), why, out);
+  return true;
+}
+
 template <class T>
 bool SolverT<T>::check_after(long k, long count) const {
   return !backend_ || !backend_->ahead() || k + 1 == count;
@@ -372,6 +405,7 @@ void SolverT<T>::load_state(const Solver& other) {
   if (other.dt() != dt_) steps_ = static_cast<long>(std::llround(other.time() / dt_));
   pending_ = 0.0;
   diverged_.reset();
+  tangles_ = clean_substeps_ = 0;
   state_changed();
   mirror_written();
 }
@@ -413,6 +447,7 @@ void SolverT<T>::reset() {
   steps_ = 0;
   pending_ = 0.0;
   diverged_.reset();
+  tangles_ = clean_substeps_ = 0;
   totals_ = {};
   integrator_->invalidate();
   mirror_written();

@@ -186,6 +186,13 @@ class SolverT : public Solver {
   std::vector<double> energy_partials_;
   DivergenceMonitor<T> monitor_;
   std::optional<Divergence> diverged_;
+  // Triangle contact's tangles (see count_tangle): how many, since when (s), and the substeps
+  // without one since the last.
+  static constexpr int kStuckSubsteps = 8, kCleanSubsteps = 60;
+  int tangles_ = 0, clean_substeps_ = 0;
+  double tangled_since_ = 0.0;
+  void count_tangle(bool tangled, double t);
+  bool stuck_in_tangle(Divergence& out) const;
   SolveTotals totals_;
 };
 

@@ -16,9 +16,11 @@ inline constexpr std::size_t kBlockSize = 512;
 // (measured with the programs' short spin then passive wait; docs/results.md "Threads",
 // docs/design.md).
 inline constexpr std::size_t kParallelMinVertices = 8192;
-// With triangle contact (solver.cloth_contact) a second thread pays from about a thousand
-// vertices: the 48 x 48 pile's frame takes 0.61x the one-thread time on two.
-inline constexpr std::size_t kParallelMinContactVertices = 1024;
+// With triangle contact (solver.cloth_contact) a second thread pays from about two thousand
+// vertices: the 48 x 48 pile's frame (2304) takes 0.61x the one-thread time on two, the 47 x 47
+// tent's 0.94x, but the 32 x 32 default sheet's small explicit steps 1.5x (0.090 ms a step
+// against 0.058).
+inline constexpr std::size_t kParallelMinContactVertices = 2048;
 
 // The threads for a loop over n cheap items: one below min_items, where waking a second thread
 // costs more than it saves (a wake-up is tens of microseconds with a passive wait policy).
