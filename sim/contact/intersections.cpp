@@ -32,12 +32,7 @@ bool crosses(const std::array<int, 2>& e, const std::array<int, 3>& t, const std
 
 long IntersectionCounter::count(const std::vector<V3>& x, std::vector<Crossing>* crossings) {
   const auto& tris = features_.triangles;
-  std::vector<Box3>& boxes = bvh_.leaf_boxes();
-  for (std::size_t t = 0; t < tris.size(); ++t) {
-    const V3 &a = x[std::size_t(tris[t][0])], &b = x[std::size_t(tris[t][1])],
-             &c = x[std::size_t(tris[t][2])];
-    boxes[t] = {a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c)};
-  }
+  fill_triangle_boxes(tris, x, 0.0, bvh_.leaf_boxes());
   bvh_.refit();
   if (crossings) crossings->clear();
   long count = 0;

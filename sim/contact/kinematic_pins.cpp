@@ -7,6 +7,8 @@ namespace clothlab {
 template <class T>
 KinematicPins<T>::KinematicPins(const Scene& scene, const Model<T>& m) {
   for (const ColliderSpec& spec : scene.colliders) colliders_.push_back(pose_only_collider(spec));
+  std::vector<ColliderPose> start;  // each collider's pose at t = 0
+  for (const Collider& c : colliders_) start.push_back(c.pose(0.0));
   for (std::size_t c = 0; c < scene.cloths.size() && c < m.cloths.size(); ++c) {
     const ClothSpec& cloth = scene.cloths[c];
     const ClothRange& r = m.cloths[c];
@@ -19,11 +21,11 @@ KinematicPins<T>::KinematicPins(const Scene& scene, const Model<T>& m) {
       int collider = -1;
       double nearest = INFINITY;
       for (const int k : cloth.pins_follow) {
-        const double d = (colliders_[std::size_t(k)].pose(0.0).centre - x).norm();
+        const double d = (start[std::size_t(k)].centre - x).norm();
         if (d < nearest) nearest = d, collider = k;
       }
       if (collider < 0) continue;
-      pins_.push_back({v, collider, colliders_[std::size_t(collider)].pose(0.0).to_local(x)});
+      pins_.push_back({v, collider, start[std::size_t(collider)].to_local(x)});
     }
   }
 }

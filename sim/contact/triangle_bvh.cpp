@@ -82,6 +82,17 @@ void TriangleBvh::link(int parent, int left, int right) {
   nodes_[std::size_t(left)].parent = nodes_[std::size_t(right)].parent = parent;
 }
 
+void fill_triangle_boxes(const std::vector<std::array<int, 3>>& triangles,
+                         const std::vector<Eigen::Vector3d>& x, double pad,
+                         std::vector<Box3>& boxes) {
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const Eigen::Vector3d &a = x[std::size_t(triangles[t][0])],
+                          &b = x[std::size_t(triangles[t][1])],
+                          &c = x[std::size_t(triangles[t][2])];
+    boxes[t] = {a.cwiseMin(b).cwiseMin(c).array() - pad, a.cwiseMax(b).cwiseMax(c).array() + pad};
+  }
+}
+
 std::vector<TriangleBvh::Task> TriangleBvh::tasks(int depth) const {
   std::vector<Task> out;
   if (!nodes_.empty()) split(0, depth, out);

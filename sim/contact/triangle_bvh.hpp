@@ -32,6 +32,12 @@ struct Box3 {
   }
 };
 
+// The box of each triangle at positions x, grown by `pad` on every side, into boxes (one per
+// triangle, already sized): the leaf boxes of a tree over exact triangles.
+void fill_triangle_boxes(const std::vector<std::array<int, 3>>& triangles,
+                         const std::vector<Eigen::Vector3d>& x, double pad,
+                         std::vector<Box3>& boxes);
+
 class TriangleBvh {
  public:
   TriangleBvh() = default;

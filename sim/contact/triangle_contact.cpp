@@ -68,10 +68,7 @@ bool sides_within(bool edge_edge, const std::array<V3, 4>& lo, const std::array<
 template <class T>
 typename TriangleContact<T>::RestLayout rest_layout(const Model<T>& m) {
   typename TriangleContact<T>::RestLayout out;
-  out.vertex_cloth.assign(m.n, 0);
-  for (std::size_t c = 0; c < m.cloths.size(); ++c)
-    std::fill_n(out.vertex_cloth.begin() + m.cloths[c].offset,
-                std::size_t(m.cloths[c].nu) * std::size_t(m.cloths[c].nv), std::int32_t(c));
+  out.vertex_cloth = vertex_cloths(m.cloths, m.n);
   out.triangle_cloth.resize(m.triangles.size());
   for (std::size_t t = 0; t < m.triangles.size(); ++t)
     out.triangle_cloth[t] = out.vertex_cloth[std::size_t(m.triangles[t][0])];

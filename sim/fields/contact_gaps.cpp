@@ -26,24 +26,11 @@ std::vector<V3> rest_positions(const SolverState& solver) {
 
 // The cloth of each triangle (of its first vertex).
 std::vector<int> triangle_cloths(const SolverState& solver) {
-  std::vector<int> vertex_cloth(solver.vertex_count(), 0);
-  const std::vector<ClothRange>& cloths = solver.cloths();
-  for (std::size_t c = 0; c < cloths.size(); ++c)
-    std::fill_n(vertex_cloth.begin() + cloths[c].offset,
-                std::size_t(cloths[c].nu) * std::size_t(cloths[c].nv), int(c));
+  const std::vector<std::int32_t> vertex_cloth =
+      vertex_cloths(solver.cloths(), solver.vertex_count());
   std::vector<int> out;
   for (const auto& t : solver.triangles()) out.push_back(vertex_cloth[std::size_t(t[0])]);
   return out;
-}
-
-// The box of each triangle at x, grown by `pad` on every side.
-void fill_leaf_boxes(const std::vector<std::array<int, 3>>& tris, const std::vector<V3>& x,
-                     double pad, std::vector<Box3>& boxes) {
-  for (std::size_t t = 0; t < tris.size(); ++t) {
-    const V3 &a = x[std::size_t(tris[t][0])], &b = x[std::size_t(tris[t][1])],
-             &c = x[std::size_t(tris[t][2])];
-    boxes[t] = {a.cwiseMin(b).cwiseMin(c).array() - pad, a.cwiseMax(b).cwiseMax(c).array() + pad};
-  }
 }
 
 // The largest and the least distance between a point of box a and a point of box b.
@@ -73,12 +60,12 @@ struct NearAtRest {
 }  // namespace
 
 ContactGaps::ContactGaps(const SolverState& solver)
-    : crossings_(solver.triangles(), rest_positions(solver)),
+    : x_(rest_positions(solver)),
+      crossings_(solver.triangles(), x_),
       triangle_cloth_(triangle_cloths(solver)),
-      bvh_(triangle_centroids(solver.triangles(), rest_positions(solver)), triangle_cloth_),
-      x_(rest_positions(solver)),
+      bvh_(triangle_centroids(solver.triangles(), x_), triangle_cloth_),
       tasks_(bvh_.tasks(kTaskDepth)) {
-  fill_leaf_boxes(solver.triangles(), x_, 0.0, bvh_.leaf_boxes());
+  fill_triangle_boxes(solver.triangles(), x_, 0.0, bvh_.leaf_boxes());
   rest_triangle_boxes_ = bvh_.leaf_boxes();
   bvh_.refit();
   rest_boxes_.resize(bvh_.node_count());
@@ -119,7 +106,7 @@ void ContactGaps::per_vertex(const std::vector<float>& xyz, double range, int th
 void ContactGaps::nearest_pairs(double range, int threads) {
   const SurfaceFeatures& f = crossings_.features();
   // Two primitives nearer than `range` lie in triangles whose boxes, grown by half of it, meet.
-  fill_leaf_boxes(f.triangles, x_, 0.5 * range, bvh_.leaf_boxes());
+  fill_triangle_boxes(f.triangles, x_, 0.5 * range, bvh_.leaf_boxes());
   bvh_.refit();
   const double range2 = range * range;
   const NearAtRest cull{rest_boxes_, node_cloth_, range};

@@ -3,10 +3,10 @@
 // pair it belongs to (the pairs triangle contact keeps apart, sharing no vertex; Bridson, Fedkiw &
 // Anderson 2002), except the pairs of one cloth whose triangles' boxes lay within `range` of
 // each other at rest (neighbours in the cloth, which its springs keep apart), and `range` where
-// no pair is nearer. The
-// vertices of an edge that passes through a triangle, and of that triangle, get NaN (drawn in
-// the warning colour): they have crossed, and no distance says how far. Independent of the
-// contact code (its own tree and the crossing count's), so the view works with contact off.
+// no pair is nearer. The vertices of an edge that passes through a triangle, and of that
+// triangle, get NaN (drawn in the warning colour): they have crossed, and no distance says how
+// far. Independent of the contact code (its own tree and the crossing count's), so the view works
+// with contact off.
 #pragma once
 
 #include <Eigen/Core>
@@ -39,13 +39,13 @@ class ContactGaps {
   // Each pair nearer than `range` into its thread's nearest_ (filled with `range` before).
   void nearest_pairs(double range, int threads);
 
+  std::vector<Eigen::Vector3d> x_;  // positions now (at rest when built)
   IntersectionCounter crossings_;
   std::vector<int> triangle_cloth_;
   TriangleBvh bvh_;                        // split between cloths first
   std::vector<int> node_cloth_;            // per node: its cloth, or -1 for several
   std::vector<Box3> rest_boxes_;           // per tree node, its box at rest
   std::vector<Box3> rest_triangle_boxes_;  // per triangle, its box at rest
-  std::vector<Eigen::Vector3d> x_;         // positions now
   std::vector<TriangleBvh::Task> tasks_;
   std::vector<std::vector<float>> nearest_;  // per thread, per vertex
   std::vector<Crossing> crossing_;

@@ -9,6 +9,7 @@
 // Both add a vertex's springs in the order of the neighbour's index.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -28,6 +29,16 @@ struct ClothRange {
   // surface is the model's triangles between offset and offset + nu.
   bool mesh = false;
 };
+
+// The cloth of each of n vertices: the index of the range that holds it.
+inline std::vector<std::int32_t> vertex_cloths(const std::vector<ClothRange>& cloths,
+                                               std::size_t n) {
+  std::vector<std::int32_t> out(n, 0);
+  for (std::size_t c = 0; c < cloths.size(); ++c)
+    std::fill_n(out.begin() + cloths[c].offset,
+                std::size_t(cloths[c].nu) * std::size_t(cloths[c].nv), std::int32_t(c));
+  return out;
+}
 
 enum class SpringKernel { row_sweep, neighbour_list };
 
