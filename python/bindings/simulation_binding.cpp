@@ -273,6 +273,22 @@ void bind_simulation(py::module_& m) {
           "intersections", [](const Simulation& s) { return s.solver().intersections(); },
           "Crossing (edge, triangle) pairs of the cloth surfaces now: edges that pass through a "
           "triangle they share no vertex with (0 when no cloth passes through cloth).")
+      .def_property_readonly(
+          "contact",
+          [](const Simulation& s) -> py::object {
+            const auto c = s.solver().last_cloth_contact();
+            if (!c) return py::none();
+            py::dict d;
+            d["candidates"] = c->candidates, d["contacts"] = c->contacts;
+            d["rolled_back"] = c->rolled_back, d["unresolved"] = c->unresolved;
+            d["overflow"] = c->overflow, d["collected"] = c->collected;
+            d["recollected"] = c->recollected, d["flat_patches"] = c->flat_patches;
+            d["flat_triangles"] = c->flat_triangles;
+            return d;
+          },
+          "Triangle contact's last substep (None with solver.cloth_contact off): candidate pairs, "
+          "pairs pushed apart, vertices the fail-safe returned, whether the pairs were collected, "
+          "flat patches and their triangles.")
       .def("push", &Simulation::push, py::arg("impulse"), py::arg("center") = py::none(),
            py::arg("radius") = py::none(), "A push like the window's P (impulse in N s).")
       .def("drop", &Simulation::drop, "Lets go of every pin, like the window's D.")
