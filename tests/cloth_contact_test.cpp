@@ -393,8 +393,9 @@ TEST(ClothContact, FastDropLandsOnTheThinTable) {
       const Vec3d p = s->position(int(i));
       ASSERT_FALSE(std::abs(p[0]) < 0.5 && std::abs(p[2]) < 0.35 && std::abs(p[1] - 0.75) < 0.002)
           << "vertex " << i << " inside the top in frame " << frame;
-      if (inside_plan(p) && inside_plan(before[i]))
+      if (inside_plan(p) && inside_plan(before[i])) {
         ASSERT_EQ(p[1] > kTop, before[i][1] > kTop) << "vertex " << i << " frame " << frame;
+      }
       if (frame == 40) speed = std::max(speed, -s->velocity(int(i))[1]);
       before[i] = p;
     }

@@ -49,7 +49,7 @@ Scene round_cloth(double tolerance) {
   ClothSpec& c = s.cloths[0];
   c.shape = "mesh";
   c.mesh = std::make_shared<const TriangleMesh>(
-      load_obj(std::string(CLOTHLAB_SOURCE_DIR) + "/assets/meshes/round_cloth.obj", 0.5));
+      load_obj(CLOTHLAB_SOURCE_DIR "/assets/meshes/round_cloth.obj", 0.5));
   c.resolution = {int(c.mesh->positions.size()), 1};
   c.pins = {{0, 0}};
   return s;

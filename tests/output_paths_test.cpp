@@ -62,7 +62,7 @@ class OutputPaths : public ::testing::Test {
   }
 
   fs::path dir_;
-  const std::string scene_ = "'" + std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/default.toml'";
+  const std::string scene_ = "'" CLOTHLAB_SOURCE_DIR "/scenes/default.toml'";
 };
 
 TEST_F(OutputPaths, TraceRefusesEmptyDirectoryLinkAndPipe) {

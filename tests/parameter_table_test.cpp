@@ -44,7 +44,7 @@ std::string read_file(const std::string& path) {
 }
 
 TEST(ParameterTable, DocsKeyTableIsTheGeneratedOne) {
-  const std::string doc = read_file(std::string(CLOTHLAB_SOURCE_DIR) + "/docs/scene-format.md");
+  const std::string doc = read_file(CLOTHLAB_SOURCE_DIR "/docs/scene-format.md");
   const std::string begin = "<!-- clothlab params: begin -->\n";
   const std::string end = "<!-- clothlab params: end -->";
   const auto from = doc.find(begin);

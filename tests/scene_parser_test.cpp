@@ -635,8 +635,12 @@ TEST(SceneParser, ParserLeavesTheLoadedPartsToTheLoadStep) {
       EXPECT_EQ(c.body, nullptr);
     }
     for (const MeshSpec& m : parsed.render.meshes) EXPECT_EQ(m.obj, nullptr);
-    if (parsed.music) EXPECT_EQ(parsed.music->track, nullptr);
-    if (parsed.mannequin) EXPECT_EQ(parsed.mannequin->motion, nullptr);
+    if (parsed.music) {
+      EXPECT_EQ(parsed.music->track, nullptr);
+    }
+    if (parsed.mannequin) {
+      EXPECT_EQ(parsed.mannequin->motion, nullptr);
+    }
 
     const Scene loaded = read_scene_file(dir + name);
     int filled = 0;
