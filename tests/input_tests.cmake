@@ -74,8 +74,9 @@ clothlab_bad_input(cloth_overflow_coordinate 4 "cloth\\.file"
 clothlab_bad_input(collider_overflow 7 "colliders.0.\\.file"
   "overflow_coordinate\\.obj: line 3: vertex z coordinate 1e39")
 clothlab_bad_input(cloth_collinear_face 4 "cloth\\.file"
-  "the face on OBJ line 6 \\(vertices 1, 2, 3\\) has zero area")
-clothlab_bad_input(cloth_fan 4 "cloth\\.file" "OBJ vertex 1 has 200 edges; a mesh cloth may have at most 128")
+  "collinear_face\\.obj: line 6: the face \\(vertices 1, 2, 3\\) has zero area")
+clothlab_bad_input(cloth_fan 4 "cloth\\.file"
+  "fan\\.obj: OBJ vertex 1 has 200 edges; a mesh cloth may have at most 128")
 clothlab_bad_input(music_inf_sample 6 "music\\.file" "inf_sample\\.wav': sample 4000 \\(t = 0\\.5")
 clothlab_bad_input(music_rate_100hz 6 "music\\.file"
   "rate_100hz\\.wav': a sample rate of 100 Hz is too low for the beat tracker")
@@ -93,6 +94,16 @@ clothlab_cli_test(input.two_huge_cloths 2
   "the scene's cloths have 32000000 vertices up to this one; at most 16000000"
   check ${PROJECT_SOURCE_DIR}/scenes/two_sheets.toml --set cloth[0].resolution=[4000,4000]
   --set cloth[1].resolution=[4000,4000])
+# check answers at once for any size: before building it says both estimates, and a build
+# estimated at over a minute is refused with them unless --force (a 4000 x 4000 sheet, refused by
+# the build estimate, or by memory first on a machine that cannot hold it; seconds either way).
+clothlab_cli_test(input.huge_grid_is_estimated 2
+  "cloth\\.resolution: the scene needs about [0-9.]+ GB and [0-9]+ s to build \\(16000000 vertices, [a-z_]+, float\\)"
+  check ${default} --set cloth.resolution=[4000,4000])
+set_tests_properties(cli.input.huge_grid_is_estimated PROPERTIES TIMEOUT 30)
+clothlab_cli_test(input.check_says_its_estimates 0
+  "default\\.toml: needs about [0-9.e-]+ GB and [0-9.e-]+ s to build \\(1024 vertices, [a-z_]+, float\\)\n[^\n]*: ok"
+  check ${default} --force)
 find_program(CLOTHLAB_PRLIMIT prlimit)
 # clothlab_limited_test(NAME BYTES RC REGEX ARGS...): `clothlab ARGS...` with its address space
 # capped at BYTES. Not under the sanitizers: ASan reserves terabytes of address space.
@@ -107,10 +118,10 @@ function(clothlab_limited_test name bytes rc regex)
   set_tests_properties(cli.${name} PROPERTIES TIMEOUT 60 ENVIRONMENT "${CLOTHLAB_TEST_ENVIRONMENT}")
 endfunction()
 clothlab_limited_test(input.memory_refused 1200000000 2
-  "cloth\\.resolution: the scene needs about 5\\.[0-9]+ GB to build \\(1000000 vertices, local_global, float\\) and this machine can give 1\\.2 GB"
+  "cloth\\.resolution: the scene needs about 5\\.[0-9]+ GB and [0-9]+ s to build \\(1000000 vertices, local_global, float\\) and this machine can give 1\\.2 GB"
   check ${default} --set cloth.resolution=[1000,1000] --set solver.integrator="local_global")
 clothlab_limited_test(input.out_of_memory_is_one_line 1210000000 1
-  "^clothlab check: out of memory[^\n]*\n$"
+  "^[^\n]*: needs about [^\n]*\nclothlab check: out of memory[^\n]*\n$"
   check ${default} --set cloth.resolution=[1000,1000])
 
 # Killed runs leave no temporary file (SIGTERM and SIGINT, trace and render --video).

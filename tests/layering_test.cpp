@@ -67,6 +67,41 @@ TEST(Layering, NoFolderIncludesOneBesideOrAboveIt) {
   }
 }
 
+// Every include of sim/<folder> other than `ok` in the C++ files under root/sim/<from>, as
+// "file -> line".
+std::vector<std::string> sim_includes_beyond(const fs::path& root, const std::string& from,
+                                             const std::set<std::string>& ok) {
+  const std::regex include(R"re(^\s*#\s*include\s*"sim/([a-z_]+)/)re");
+  std::vector<std::string> bad;
+  for (const auto& entry : fs::recursive_directory_iterator(root / "sim" / from)) {
+    std::ifstream in(entry.path());
+    std::string line;
+    while (std::getline(in, line)) {
+      std::smatch m;
+      if (std::regex_search(line, m, include) && !ok.count(m[1]))
+        bad.push_back(fs::relative(entry.path(), root).string() + " -> " + line);
+    }
+  }
+  return bad;
+}
+
+// The scene layer (parsing and checking scene files) reads scene data, vectors and meshes; it
+// never reaches up to what is built from a scene (cloth builders, the model, the solver).
+TEST(Layering, TheSceneLayerIncludesOnlyCoreAndMesh) {
+  const std::vector<std::string> bad =
+      sim_includes_beyond(CLOTHLAB_SOURCE_DIR, "scene", {"scene", "core", "mesh"});
+  EXPECT_TRUE(bad.empty()) << bad.size() << " includes out of sim/scene/, e.g. " << bad.front();
+  const fs::path root = fs::temp_directory_path() / "clothlab_scene_layering_test";
+  fs::remove_all(root);
+  fs::create_directories(root / "sim/scene");
+  std::ofstream(root / "sim/scene/a.cpp")
+      << "#include \"sim/mesh/mesh_edges.hpp\"\n#include \"sim/cloth/mesh_cloth.hpp\"\n";
+  const std::vector<std::string> found = sim_includes_beyond(root, "scene", {"scene", "mesh"});
+  fs::remove_all(root);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0], "sim/scene/a.cpp -> #include \"sim/cloth/mesh_cloth.hpp\"");
+}
+
 // The scan finds a renderer file that includes the GPU backend, and passes one on the GL layer.
 TEST(Layering, TheScanFindsAnIncludeBesideItsFolder) {
   const fs::path root = fs::temp_directory_path() / "clothlab_layering_test";

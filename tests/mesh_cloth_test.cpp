@@ -228,16 +228,18 @@ TEST(MeshCloth, SceneFileAndErrors) {
   EXPECT_NE(e.find("no_such_cloth.obj"), std::string::npos) << e;
 }
 
-// A vertex no face uses is refused (it would fall alone), naming the OBJ vertex.
+// A vertex no face uses is refused (it would fall alone), naming the OBJ file and vertex.
 TEST(MeshCloth, LooseVertexIsRefused) {
   auto mesh = std::make_shared<TriangleMesh>(*unit_square());
   mesh->positions.push_back({5, 5, 5});
   Scene s = mesh_scene(mesh, {0, 0, 0}, {});
+  s.cloths[0].file = "square.obj";
   try {
     validate_scene(s);
     FAIL() << "no error";
   } catch (const SceneError& e) {
-    EXPECT_NE(std::string(e.what()).find("OBJ vertex 5 belongs to no face"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("square.obj: OBJ vertex 5 belongs to no face"),
+              std::string::npos)
         << e.what();
   }
 }

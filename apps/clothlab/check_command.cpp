@@ -1,6 +1,8 @@
 #include <cstdio>
 
 #include "apps/clothlab/commands.hpp"
+#include "apps/clothlab/memory_check.hpp"
+#include "sim/model/build_estimate.hpp"
 #include "sim/scene/parameters.hpp"
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
@@ -8,9 +10,26 @@
 
 namespace clothlab::app {
 
+namespace {
+
+// s: `check` builds a scene estimated to take longer than this only when forced, so that it
+// answers within seconds for any size (sim/model/build_estimate.hpp).
+constexpr double kMaxCheckBuild = 60.0;
+
+}  // namespace
+
 int run_check(const CheckArgs& args) {
   const std::optional<Scene> scene = load_scene("check", args.scene, args.overrides);
   if (!scene) return kBadInput;
+  if (estimated_build_seconds(*scene) > kMaxCheckBuild && !args.force) {
+    const SceneError e = size_error(*scene, "the scene needs " + build_needs(*scene) +
+                                                "; check builds one over a minute only with "
+                                                "--force");
+    std::fprintf(stderr, "clothlab check: %s\n", e.what());
+    return kBadInput;
+  }
+  std::printf("%s: needs %s\n", args.scene.c_str(), build_needs(*scene).c_str());
+  std::fflush(stdout);  // said before a long build
   // Building the solver proves the scene is simulable (springs, pins, tables all fit).
   const auto solver = make_solver(*scene);
   char substeps[48] = "";

@@ -15,6 +15,7 @@ namespace clothlab::app {
 struct CheckArgs {
   std::string scene;
   std::vector<std::string> overrides;
+  bool force = false;  // build even when the estimate says it takes more than kMaxCheckBuild
 };
 
 struct TraceArgs {

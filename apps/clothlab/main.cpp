@@ -333,6 +333,8 @@ int main(int argc, char** argv) {
   CheckArgs check;
   auto* check_cmd = app.add_subcommand("check", "parse and validate a scene, then exit");
   add_scene_options(*check_cmd, check.scene, check.overrides);
+  check_cmd->add_flag("--force", check.force,
+                      "build the solver even when that is estimated to take over a minute");
   auto* params_cmd = app.add_subcommand(
       "params", "print every scene key: type, range, default, unit and meaning (Markdown)");
   TraceArgs trace;

@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 
+#include "sim/model/build_estimate.hpp"
 #include "sim/model/memory_estimate.hpp"
 #include "sim/scene/validate.hpp"
 
@@ -54,22 +55,30 @@ std::uint64_t available_bytes() {
   return limit;
 }
 
-void check_memory(const Scene& scene, std::uint64_t available) {
-  const std::uint64_t needed = estimated_solver_bytes(scene);
-  if (needed <= available) return;
+std::string build_needs(const Scene& scene) {
+  const double s = estimated_build_seconds(scene);
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, s >= 10.0 ? "%.0f s" : "%.2g s", s);
   const auto vertices = static_cast<std::uint64_t>(scene_vertices(scene));
+  return "about " + gigabytes(estimated_solver_bytes(scene)) + " and " + seconds + " to build (" +
+         std::to_string(vertices) + " vertices, " + to_string(scene.solver.integrator) + ", " +
+         (scene.solver.precision == Precision::f64 ? "double" : "float") + ")";
+}
+
+SceneError size_error(const Scene& scene, const std::string& message) {
   const ClothSpec& largest = *std::max_element(
       scene.cloths.begin(), scene.cloths.end(), [](const ClothSpec& a, const ClothSpec& b) {
         return std::int64_t{a.resolution[0]} * a.resolution[1] <
                std::int64_t{b.resolution[0]} * b.resolution[1];
       });
   const std::string key = largest.key + ".resolution";
-  throw SceneError(
-      location_of(scene, key), key,
-      "the scene needs about " + gigabytes(needed) + " to build (" + std::to_string(vertices) +
-          " vertices, " + to_string(scene.solver.integrator) + ", " +
-          (scene.solver.precision == Precision::f64 ? "double" : "float") +
-          ") and this machine can give " + gigabytes(available) + "; lower the resolution");
+  return SceneError(location_of(scene, key), key, message);
+}
+
+void check_memory(const Scene& scene, std::uint64_t available) {
+  if (estimated_solver_bytes(scene) <= available) return;
+  throw size_error(scene, "the scene needs " + build_needs(scene) + " and this machine can give " +
+                              gigabytes(available) + "; lower the resolution");
 }
 
 }  // namespace clothlab::app

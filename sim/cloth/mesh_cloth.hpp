@@ -10,6 +10,7 @@
 
 #include "sim/cloth/grid_cloth.hpp"
 #include "sim/cloth/seed_springs.hpp"
+#include "sim/mesh/mesh_edges.hpp"
 
 namespace clothlab {
 
@@ -23,8 +24,5 @@ GridCloth build_mesh_cloth(const ClothSpec& spec);
 // Edge springs and bending springs (see above), sorted by (a, b), each pair once (a bending
 // pair that is also an edge, as on a tetrahedron, stays one edge spring).
 std::vector<Spring> mesh_springs(const GridCloth& cloth, const SpringStiffness& k);
-
-// Every edge of the triangles once, as (a, b) with a < b, sorted.
-std::vector<std::array<int, 2>> mesh_edges(const std::vector<std::array<int, 3>>& triangles);
 
 }  // namespace clothlab

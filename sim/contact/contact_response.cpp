@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim/cloth/mesh_cloth.hpp"
 #include "sim/core/parallel.hpp"
 #include "sim/core/vec3_eigen.hpp"
+#include "sim/mesh/mesh_edges.hpp"
 
 namespace clothlab {
 namespace {

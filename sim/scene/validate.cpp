@@ -2,8 +2,8 @@
 // rules on values, so that a Scene built in code (tests, benchmarks) is checked the same way.
 #include "sim/scene/validate.hpp"
 
-#include "sim/cloth/mesh_cloth.hpp"
 #include "sim/core/vec3_math.hpp"
+#include "sim/mesh/mesh_edges.hpp"
 #include "sim/mesh/triangle_mesh.hpp"
 #include "sim/scene/name_list.hpp"
 #include "sim/scene/parameter_binding.hpp"
@@ -277,7 +277,9 @@ class Validator {
 
   // A mesh cloth takes its geometry from the OBJ: no grid or tube keys; every vertex belongs to
   // a face (a loose vertex would fall alone) and no edge has zero length (a spring of rest
-  // length 0 has no direction when its ends meet).
+  // length 0 has no direction when its ends meet). Messages about the OBJ's content start with
+  // its path as the scene gives it (and the OBJ line where known), after the scene's line and
+  // key.
   void check_mesh_cloth(const ClothSpec& cloth) const {
     const std::string& k = cloth.key;
     for (std::string_view grid_key : {key_of<&ClothSpec::size>(), key_of<&ClothSpec::resolution>(),
@@ -291,19 +293,26 @@ class Validator {
     if (!cloth.mesh || cloth.mesh->triangles.empty())
       fail(file, "no OBJ mesh was read for this mesh cloth");
     const TriangleMesh& mesh = *cloth.mesh;
+    const auto in_obj = [&](std::size_t t) {  // "round.obj: line 57: " where the face's is known
+      return cloth.file + (t < mesh.triangle_lines.size()
+                               ? ": line " + std::to_string(mesh.triangle_lines[t]) + ": "
+                               : std::string(": "));
+    };
     std::vector<bool> used(mesh.positions.size(), false);
-    for (const auto& t : mesh.triangles)
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
       for (int c = 0; c < 3; ++c) {
-        used[std::size_t(t[c])] = true;
-        const int a = t[c], b = t[(c + 1) % 3];
+        const auto& tri = mesh.triangles[t];
+        used[std::size_t(tri[c])] = true;
+        const int a = tri[c], b = tri[(c + 1) % 3];
         if ((mesh.positions[std::size_t(a)] - mesh.positions[std::size_t(b)]).norm() == 0.0)
-          fail(file, "the edge between OBJ vertices " + std::to_string(a + 1) + " and " +
-                         std::to_string(b + 1) + " has zero length");
+          fail(file, in_obj(t) + "the edge between OBJ vertices " + std::to_string(a + 1) +
+                         " and " + std::to_string(b + 1) + " has zero length");
       }
     for (std::size_t v = 0; v < used.size(); ++v)
-      if (!used[v]) fail(file, "OBJ vertex " + std::to_string(v + 1) + " belongs to no face");
-    check_triangle_areas(mesh, file);
-    check_valence(mesh, file);
+      if (!used[v])
+        fail(file, cloth.file + ": OBJ vertex " + std::to_string(v + 1) + " belongs to no face");
+    check_triangle_areas(mesh, file, in_obj);
+    check_valence(mesh, file, cloth.file);
   }
 
   // The neighbour-list kernel pads every vertex's spring list to the longest one (slot-major,
@@ -311,13 +320,14 @@ class Validator {
   // edges (a fan's hub, a UV sphere's pole) would cost that width on every vertex (issue 21: a
   // 500 000-vertex sphere with valence-1000 poles needed 18 GB). kMaxMeshValence edges at a
   // vertex (at most twice as many springs with its bending ones) is the cap.
-  void check_valence(const TriangleMesh& mesh, const std::string& file) const {
+  void check_valence(const TriangleMesh& mesh, const std::string& file,
+                     const std::string& obj) const {
     std::vector<int> valence(mesh.positions.size(), 0);
     for (const auto& [a, b] : mesh_edges(mesh.triangles))
       ++valence[std::size_t(a)], ++valence[std::size_t(b)];
     const auto most = std::max_element(valence.begin(), valence.end());
     if (*most > kMaxMeshValence)
-      fail(file, "OBJ vertex " + std::to_string(most - valence.begin() + 1) + " has " +
+      fail(file, obj + ": OBJ vertex " + std::to_string(most - valence.begin() + 1) + " has " +
                      std::to_string(*most) + " edges; a mesh cloth may have at most " +
                      std::to_string(kMaxMeshValence) +
                      " at a vertex (every vertex's spring table is as wide as the widest)");
@@ -325,7 +335,9 @@ class Validator {
 
   // A zero-area (collinear) triangle has no normal and no wind area; its springs all lie on one
   // line. "Zero" is relative: twice the area below 1e-10 of the longest edge squared.
-  void check_triangle_areas(const TriangleMesh& mesh, const std::string& file) const {
+  template <class InObj>
+  void check_triangle_areas(const TriangleMesh& mesh, const std::string& file,
+                            const InObj& in_obj) const {
     constexpr double kFlat = 1e-10;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
       const auto& tri = mesh.triangles[t];
@@ -335,11 +347,9 @@ class Validator {
       const double longest =
           std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
       if ((b - a).cross(c - a).norm() > kFlat * longest) continue;
-      const std::string where =
-          mesh.triangle_lines.empty()
-              ? "triangle " + std::to_string(t + 1)
-              : "the face on OBJ line " + std::to_string(mesh.triangle_lines[t]);
-      fail(file, where + " (vertices " + std::to_string(tri[0] + 1) + ", " +
+      const std::string what =
+          mesh.triangle_lines.empty() ? "triangle " + std::to_string(t + 1) : "the face";
+      fail(file, in_obj(t) + what + " (vertices " + std::to_string(tri[0] + 1) + ", " +
                      std::to_string(tri[1] + 1) + ", " + std::to_string(tri[2] + 1) +
                      ") has zero area: its corners are collinear");
     }
