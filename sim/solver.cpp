@@ -10,8 +10,8 @@
 #include "sim/body/body_motion.hpp"
 #include "sim/core/parallel.hpp"
 #include "sim/core/vec3_eigen.hpp"
-#include "sim/integrators/coarse_stretch.hpp"
-#include "sim/integrators/tethers.hpp"
+#include "sim/integrators/constraints/coarse_stretch.hpp"
+#include "sim/integrators/constraints/tethers.hpp"
 #include "sim/model/model_check.hpp"
 #include "sim/solver_impl.hpp"
 #include "sim/stability/step_limit.hpp"
@@ -40,7 +40,7 @@ State<T> initial_state(const Model<T>& m) {
 
 // The longest side in vertices of the cloths whose sweeps must carry corrections across them
 // alone (a mesh cloth counts as a square of its vertices): xpbd's coarse stretch levels carry
-// them on the grids that have levels (sim/integrators/coarse_stretch.hpp).
+// them on the grids that have levels (sim/integrators/constraints/coarse_stretch.hpp).
 template <class T>
 int substep_side(const Model<T>& m, const SolverSpec& spec) {
   int side = 1;

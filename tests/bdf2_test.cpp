@@ -1,6 +1,6 @@
-// BDF2 (sim/integrators/bdf2.cpp): second order on the single spring with either step solver,
-// and its numerical damping over one period equal to the closed-form amplification factor of
-// its principal root. large_step_test.cpp runs the shared large-step checks for it too.
+// BDF2 (sim/integrators/newton/bdf2.cpp): second order on the single spring with either step
+// solver, and its numerical damping over one period equal to the closed-form amplification factor
+// of its principal root. large_step_test.cpp runs the shared large-step checks for it too.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -44,9 +44,9 @@ Scene sheet_scene(IntegratorKind kind) {
 
 // A copy of the CPU step without contraction (this file is compiled with -ffp-contract=off):
 // sim/forces/force_field.cpp add_body_forces, sim/forces/spring_forces.hpp add_spring_forces and
-// sim/integrators/{symplectic_euler,verlet}.cpp, the same expressions in the same order. A copy,
-// not the header's template: its float instantiation in the library is compiled with contraction
-// and the linker may keep either.
+// sim/integrators/explicit/{symplectic_euler,verlet}.cpp, the same expressions in the same order. A
+// copy, not the header's template: its float instantiation in the library is compiled with
+// contraction and the linker may keep either.
 class ReferenceCloth {
  public:
   ReferenceCloth(const Model<float>& m, const State<float>& s) : m_(m), s_(s) {

@@ -1,12 +1,12 @@
-// Chebyshev acceleration of local_global (sim/integrators/local_global.cpp, chebyshev.hpp): it
-// reaches the same fixed point as the plain iteration, and gets much closer to it in the same
+// Chebyshev acceleration of local_global (sim/integrators/descent/local_global.cpp, chebyshev.hpp):
+// it reaches the same fixed point as the plain iteration, and gets much closer to it in the same
 // number of iterations. large_step_test.cpp runs the shared large-step checks for local_global.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 
-#include "sim/integrators/chebyshev.hpp"
+#include "sim/integrators/descent/chebyshev.hpp"
 #include "sim/integrators/integrator.hpp"
 #include "test_scenes.hpp"
 

@@ -1,5 +1,5 @@
-// The multigrid preconditioner of the implicit methods (sim/integrators/multigrid.hpp): PCG with
-// it reaches the solution block-Jacobi PCG reaches, on pinned, colliding and tube cloths; its
+// The multigrid preconditioner of the implicit methods (sim/integrators/newton/multigrid.hpp): PCG
+// with it reaches the solution block-Jacobi PCG reaches, on pinned, colliding and tube cloths; its
 // iteration count stays flat as the grid grows where block Jacobi's grows with the side; the same
 // bytes on one and two threads.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "sim/integrators/multigrid_hierarchy.hpp"
+#include "sim/integrators/newton/multigrid_hierarchy.hpp"
 #include "sim/mesh/triangle_mesh.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"

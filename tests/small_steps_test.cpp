@@ -1,4 +1,4 @@
-// Small steps at scale (issue 36): xpbd's tethers (sim/integrators/tethers.hpp) and its
+// Small steps at scale (issue 36): xpbd's tethers (sim/integrators/constraints/tethers.hpp) and its
 // automatic substeps (sim/stability/step_limit.hpp) on the accuracy sheet (1 m, 0.2 kg, k0 =
 // 1e3 N/m, two corners pinned, falling from horizontal).
 #include <gtest/gtest.h>
@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "sim/integrators/coarse_stretch.hpp"
-#include "sim/integrators/tethers.hpp"
+#include "sim/integrators/constraints/coarse_stretch.hpp"
+#include "sim/integrators/constraints/tethers.hpp"
 #include "test_scenes.hpp"
 
 namespace clothlab {
@@ -155,9 +155,10 @@ TEST(SmallSteps, EnergyExcessFallsWithTethersAndSubsteps) {
   EXPECT_LT(fine, 5e-3);
 }
 
-// The coarse stretch levels (sim/integrators/coarse_stretch.hpp) lower what the substeps leave
-// unconverged: the elastic energy of the 128^2 sheet after 0.2 s (10 substeps, tethers on),
-// which the exact motion keeps small. Measured: 0.082 J with the levels, 1.94 J without.
+// The coarse stretch levels (sim/integrators/constraints/coarse_stretch.hpp) lower what the
+// substeps leave unconverged: the elastic energy of the 128^2 sheet after 0.2 s (10 substeps,
+// tethers on), which the exact motion keeps small. Measured: 0.082 J with the levels, 1.94 J
+// without.
 double elastic_after(bool coarse) {
   Scene scene = testing::falling_sheet(128, IntegratorKind::xpbd, 1.0 / 60.0);
   scene.solver.substeps = 10;

@@ -1,14 +1,14 @@
-// Vertex block descent's grid path (sim/integrators/vbd_grid.hpp) against the neighbour-list
-// path visiting the vertices in the same colours (vbd_grid_colours): on the band kernel's
-// stencil edge cases, with pins, damping, drag, wind, two cloths and Chebyshev acceleration; the
-// same bits on any thread count; and which models take it.
+// Vertex block descent's grid path (sim/integrators/descent/vbd_grid.hpp) against the
+// neighbour-list path visiting the vertices in the same colours (vbd_grid_colours): on the band
+// kernel's stencil edge cases, with pins, damping, drag, wind, two cloths and Chebyshev
+// acceleration; the same bits on any thread count; and which models take it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
 #include "grid_path_compare.hpp"
-#include "sim/integrators/vbd_grid.hpp"
+#include "sim/integrators/descent/vbd_grid.hpp"
 
 namespace clothlab {
 namespace {

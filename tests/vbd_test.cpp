@@ -1,7 +1,7 @@
-// Vertex block descent (sim/integrators/vbd.cpp): its iterate converges to the backward-Euler
-// step of the same forces the explicit methods use (an independent Newton solve of the residual
-// built from compute_forces), and it never gains energy. large_step_test.cpp runs the shared
-// large-step checks (order, same material, stability, threads, pins, float) for it too.
+// Vertex block descent (sim/integrators/descent/vbd.cpp): its iterate converges to the
+// backward-Euler step of the same forces the explicit methods use (an independent Newton solve of
+// the residual built from compute_forces), and it never gains energy. large_step_test.cpp runs the
+// shared large-step checks (order, same material, stability, threads, pins, float) for it too.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>

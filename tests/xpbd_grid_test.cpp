@@ -1,14 +1,14 @@
-// XPBD's grid path (sim/integrators/xpbd_grid.hpp) against the neighbour-list path sweeping the
-// same springs in the same order (xpbd_grid_colours): on every stencil edge case of the band
-// kernel, with pins, damping, drag and wind, one and several sweeps; and the same bits on any
-// thread count.
+// XPBD's grid path (sim/integrators/constraints/xpbd_grid.hpp) against the neighbour-list path
+// sweeping the same springs in the same order (xpbd_grid_colours): on every stencil edge case of
+// the band kernel, with pins, damping, drag and wind, one and several sweeps; and the same bits on
+// any thread count.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
 #include "grid_path_compare.hpp"
-#include "sim/integrators/xpbd_grid.hpp"
+#include "sim/integrators/constraints/xpbd_grid.hpp"
 
 namespace clothlab {
 namespace {

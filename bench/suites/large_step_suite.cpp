@@ -10,7 +10,7 @@
 
 #include "bench/suites/lab_scenes.hpp"
 #include "bench/suites/suites.hpp"
-#include "sim/integrators/chebyshev.hpp"
+#include "sim/integrators/descent/chebyshev.hpp"
 #include "sim/solver.hpp"
 
 namespace clothlab::bench {

@@ -1,5 +1,5 @@
 // A symmetric 3x3 block stored as its upper triangle, xx xy xz yy yz zz: the Newton matrix's
-// diagonal blocks (sim/integrators/newton_matrix.hpp) and the multigrid levels' blocks
+// diagonal blocks (sim/integrators/newton/newton_matrix.hpp) and the multigrid levels' blocks
 // (multigrid_hierarchy.hpp).
 #pragma once
 

@@ -117,7 +117,8 @@ enum class Backend { cpu, gpu, transform_feedback };
 // What solves the backward-Euler problem of each bdf2 step.
 enum class StepSolver { newton, vbd };
 
-// PCG's preconditioner in the implicit methods' Newton solves (sim/integrators/multigrid.hpp).
+// PCG's preconditioner in the implicit methods' Newton solves
+// (sim/integrators/newton/multigrid.hpp).
 enum class LinearSolver { automatic, block_jacobi, multigrid };
 
 struct SolverSpec {

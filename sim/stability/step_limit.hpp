@@ -36,12 +36,12 @@ StepChoice choose_step(IntegratorKind kind, const Spectrum& spectrum);
 // kXpbdMinSubsteps substeps per 1/60 s and one more per kXpbdSideVertices vertices of
 // `longest_side`, scaled to the step, at most kXpbdMaxSubsteps. longest_side counts only cloths
 // whose sweeps must carry corrections across them alone: the solver leaves out grids with
-// coarse stretch levels (sim/integrators/coarse_stretch.hpp), which carry them. Measured on the
-// accuracy sheet (k0 = 1e3, tethers on, RMS at 0.2 s from RK4; docs/solver.md, "Small steps at
-// scale"): without levels the error stops falling at about 3-4 mm once the substeps reach a
-// tenth to an eighth of the side; with them 10 substeps land 3.5 / 4.0 / 4.7 mm at 64^2 / 128^2
-// / 256^2. Stiffness changes it little once tethers carry the stretch (32^2 at 0.5 s, 10 -> 20
-// substeps: k0 = 1e3 10.4 -> 6.3 mm, 1e5 27.3 -> 25.9 mm).
+// coarse stretch levels (sim/integrators/constraints/coarse_stretch.hpp), which carry them.
+// Measured on the accuracy sheet (k0 = 1e3, tethers on, RMS at 0.2 s from RK4; docs/solver.md,
+// "Small steps at scale"): without levels the error stops falling at about 3-4 mm once the substeps
+// reach a tenth to an eighth of the side; with them 10 substeps land 3.5 / 4.0 / 4.7 mm at 64^2 /
+// 128^2 / 256^2. Stiffness changes it little once tethers carry the stretch (32^2 at 0.5 s, 10 ->
+// 20 substeps: k0 = 1e3 10.4 -> 6.3 mm, 1e5 27.3 -> 25.9 mm).
 inline constexpr int kXpbdMinSubsteps = 10;
 inline constexpr int kXpbdSideVertices = 10;
 inline constexpr int kXpbdMaxSubsteps = 200;

@@ -40,10 +40,10 @@
 #include <vector>
 
 #include "sim/core/parallel.hpp"
-#include "sim/integrators/chebyshev.hpp"
+#include "sim/integrators/descent/chebyshev.hpp"
+#include "sim/integrators/descent/vbd_common.hpp"
+#include "sim/integrators/descent/vbd_grid.hpp"
 #include "sim/integrators/integrator.hpp"
-#include "sim/integrators/vbd_common.hpp"
-#include "sim/integrators/vbd_grid.hpp"
 
 namespace clothlab {
 namespace {

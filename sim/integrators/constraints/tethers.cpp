@@ -1,4 +1,4 @@
-#include "sim/integrators/tethers.hpp"
+#include "sim/integrators/constraints/tethers.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,7 @@
-// XPBD's grid path: the same constraint update as sim/integrators/xpbd.cpp, spring for spring,
-// on cloths whose springs are a stencil of offsets (di, dj) on a regular grid (the row_sweep
-// kernel's GridStencil), laid out and ordered so that every loop runs over contiguous memory.
+// XPBD's grid path: the same constraint update as sim/integrators/constraints/xpbd.cpp, spring for
+// spring, on cloths whose springs are a stencil of offsets (di, dj) on a regular grid (the
+// row_sweep kernel's GridStencil), laid out and ordered so that every loop runs over contiguous
+// memory.
 //
 // Batches: every spring of one offset joins (i, j) and (i + di, j + dj). Split by the parity of
 // floor(j / dj) (dj > 0) or floor(i / di) (dj = 0), the springs of one class share no vertex, so

@@ -2,7 +2,7 @@
 //   x' = x + (v + dv) dt + a dt^2 / 2,   v' = v + dv.
 // It is symplectic Euler plus an extra a dt^2 / 2 in the position: first order, kept so the
 // course's reference behaviour can be compared.
-#include "sim/integrators/single_evaluation.hpp"
+#include "sim/integrators/explicit/single_evaluation.hpp"
 
 namespace clothlab {
 namespace {

@@ -1,7 +1,7 @@
-// Vertex block descent's grid path: the same Newton step per vertex as sim/integrators/vbd.cpp,
-// spring for spring (vbd_common.hpp), on cloths whose springs are a stencil of offsets (di, dj)
-// with |di|, |dj| <= 2 on a regular grid (the row_sweep kernel's GridStencil, as for XPBD's grid
-// path, xpbd_grid.hpp).
+// Vertex block descent's grid path: the same Newton step per vertex as
+// sim/integrators/descent/vbd.cpp, spring for spring (vbd_common.hpp), on cloths whose springs are
+// a stencil of offsets (di, dj) with |di|, |dj| <= 2 on a regular grid (the row_sweep kernel's
+// GridStencil, as for XPBD's grid path, xpbd_grid.hpp).
 //
 // Colours: vertex (i, j) takes colour 3 (j mod 3) + (i mod 3). Two vertices of a colour differ by
 // a multiple of 3 along each axis, which no offset of the stencil is, so no two share a spring:

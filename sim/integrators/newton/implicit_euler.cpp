@@ -48,8 +48,8 @@
 
 #include "sim/core/parallel.hpp"
 #include "sim/integrators/integrator.hpp"
-#include "sim/integrators/multigrid.hpp"
-#include "sim/integrators/newton_matrix.hpp"
+#include "sim/integrators/newton/multigrid.hpp"
+#include "sim/integrators/newton/newton_matrix.hpp"
 
 namespace clothlab {
 namespace {

@@ -1,6 +1,6 @@
 // Vertex block descent's grid path (vbd_grid.hpp): vbd.cpp's iteration (Chen et al. 2024,
 // Algorithm 1, with Chebyshev acceleration) over three sub-rows per grid row.
-#include "sim/integrators/vbd_grid.hpp"
+#include "sim/integrators/descent/vbd_grid.hpp"
 
 #include <array>
 #include <cstddef>
@@ -8,8 +8,8 @@
 #include <utility>
 
 #include "sim/core/parallel.hpp"
-#include "sim/integrators/chebyshev.hpp"
-#include "sim/integrators/vbd_common.hpp"
+#include "sim/integrators/descent/chebyshev.hpp"
+#include "sim/integrators/descent/vbd_common.hpp"
 
 namespace clothlab {
 namespace {

@@ -56,7 +56,7 @@
 #include <vector>
 
 #include "sim/core/parallel.hpp"
-#include "sim/integrators/chebyshev.hpp"
+#include "sim/integrators/descent/chebyshev.hpp"
 #include "sim/integrators/integrator.hpp"
 
 namespace clothlab {

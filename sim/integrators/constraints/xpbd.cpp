@@ -46,8 +46,8 @@
 #include <vector>
 
 #include "sim/core/parallel.hpp"
+#include "sim/integrators/constraints/xpbd_grid.hpp"
 #include "sim/integrators/integrator.hpp"
-#include "sim/integrators/xpbd_grid.hpp"
 
 namespace clothlab {
 namespace {

@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "sim/core/parallel.hpp"
-#include "sim/integrators/multigrid_hierarchy.hpp"
-#include "sim/integrators/newton_matrix.hpp"
+#include "sim/integrators/newton/multigrid_hierarchy.hpp"
+#include "sim/integrators/newton/newton_matrix.hpp"
 
 namespace clothlab {
 

@@ -1,7 +1,7 @@
 // XPBD's grid path (xpbd_grid.hpp): the constraint update of xpbd.cpp (Macklin, Mueller &
 // Chentanez 2016, eq. (26) multiplied through by k h^2) in batches of one stencil offset and one
 // parity class, band by band.
-#include "sim/integrators/xpbd_grid.hpp"
+#include "sim/integrators/constraints/xpbd_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,8 +10,8 @@
 #include <utility>
 
 #include "sim/core/parallel.hpp"
-#include "sim/integrators/coarse_stretch.hpp"
-#include "sim/integrators/tethers.hpp"
+#include "sim/integrators/constraints/coarse_stretch.hpp"
+#include "sim/integrators/constraints/tethers.hpp"
 
 namespace clothlab {
 namespace {

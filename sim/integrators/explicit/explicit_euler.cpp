@@ -1,6 +1,6 @@
 // Forward (explicit) Euler: x' = x + dt v, v' = v + dt a(t, x, v). First order; adds energy on
 // every oscillation (|1 + i w dt| > 1), so it is unstable without damping. Kept as the baseline.
-#include "sim/integrators/single_evaluation.hpp"
+#include "sim/integrators/explicit/single_evaluation.hpp"
 
 namespace clothlab {
 namespace {

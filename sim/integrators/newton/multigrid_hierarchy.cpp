@@ -1,4 +1,4 @@
-#include "sim/integrators/multigrid_hierarchy.hpp"
+#include "sim/integrators/newton/multigrid_hierarchy.hpp"
 
 #include <algorithm>
 

@@ -1,9 +1,9 @@
-#include "sim/integrators/coarse_stretch.hpp"
+#include "sim/integrators/constraints/coarse_stretch.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "sim/integrators/tethers.hpp"
+#include "sim/integrators/constraints/tethers.hpp"
 
 namespace clothlab {
 namespace {

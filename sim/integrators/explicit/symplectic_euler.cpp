@@ -1,7 +1,7 @@
 // Symplectic (semi-implicit) Euler: v' = v + dt a(t, x, v), x' = x + dt v'. First order but
 // symplectic: energy oscillates without drift for conservative forces (Hairer, Lubich & Wanner,
 // "Geometric Numerical Integration", ch. VI.3). Stable for dt < 2 / omega_max.
-#include "sim/integrators/single_evaluation.hpp"
+#include "sim/integrators/explicit/single_evaluation.hpp"
 
 namespace clothlab {
 namespace {
