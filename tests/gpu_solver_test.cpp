@@ -244,7 +244,9 @@ TEST_P(GpuBackends, DropOntoASphereFollowsTheCpu) {
 
 INSTANTIATE_TEST_SUITE_P(Paths, GpuBackends,
                          ::testing::Values(Backend::gpu, Backend::transform_feedback),
-                         [](const auto& case_info) { return std::string(to_string(case_info.param)); });
+                         [](const auto& case_info) {
+                           return std::string(to_string(case_info.param));
+                         });
 
 TEST_F(GpuSolverTest, ScenesTheGpuCannotRunStayOnTheCpuWithAReason) {
   std::string note;

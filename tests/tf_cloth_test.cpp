@@ -111,7 +111,9 @@ INSTANTIATE_TEST_SUITE_P(Rules, TfClothIntegrators,
                          ::testing::Values(IntegratorKind::symplectic_euler,
                                            IntegratorKind::explicit_euler,
                                            IntegratorKind::seed_hack),
-                         [](const auto& case_info) { return std::string(to_string(case_info.param)); });
+                         [](const auto& case_info) {
+                           return std::string(to_string(case_info.param));
+                         });
 
 TEST_F(TfClothTest, SameBytesRunToRun) {
   const Scene scene = windy(IntegratorKind::symplectic_euler);
