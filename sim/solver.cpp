@@ -127,9 +127,9 @@ SolverT<T>::SolverT(const Scene& scene, SpringKernel kernel)
   const bool pins_move = std::any_of(scene.cloths.begin(), scene.cloths.end(),
                                      [](const ClothSpec& c) { return !c.pins_follow.empty(); });
   if (pins_move) moving_pins_ = std::make_unique<KinematicPins<T>>(scene, model_);
-  for (const ClothSpec& c : scene.cloths) release_at_.push_back(c.release_at);
-  built_release_at_ = release_at_;
-  built_pins_ = model_.pinned;
+  for (const ClothSpec& c : scene.cloths) pins_.at.push_back(c.release_at);
+  pins_.built_at = pins_.at;
+  pins_.built_pins = model_.pinned;
 }
 
 template <class T>
@@ -202,7 +202,7 @@ AdvanceResult SolverT<T>::step(long count) {
       if (cloth_contact_) {
         sync_state();
         if (cloth_contact_->respond(model_, state_, h, threads_)) corrected = true;
-        count_tangle(cloth_contact_->last().overflow, t);
+        tangles_.count(cloth_contact_->last().overflow, t);
       }
       if (corrected) state_corrected();
     }
@@ -259,38 +259,21 @@ void SolverT<T>::pins_changed() {
   if (backend_) backend_->pins_changed(model_);
 }
 
-// Without CPU work between the substeps the mirror is read once per step() call: in the window,
-// once per frame.
-// Triangle contact undoes a tangle beyond its pair bound by holding every free vertex where the
-// substep began (docs/contact.md section 7). A tangle that comes back kStuckSubsteps times, with
-// fewer than kCleanSubsteps substeps without one in between, means the cloth cannot go on: an
-// exploding lattice (a step beyond the method's stability limit; the held vertices hide its
-// kinetic energy from the monitor), or cloth wrung or stacked denser than the bound, which moving
-// pins would meanwhile drag through itself. The run stops with a report instead of a frozen
-// cloth.
-template <class T>
-void SolverT<T>::count_tangle(bool tangled, double t) {
-  if (!tangled) {
-    if (++clean_substeps_ >= kCleanSubsteps) tangles_ = 0;
-    return;
-  }
-  if (tangles_ == 0) tangled_since_ = t;
-  ++tangles_;
-  clean_substeps_ = 0;
-}
-
+// A run stuck in a tangle stops with a report (sim/contact/tangle_watch.hpp).
 template <class T>
 bool SolverT<T>::stuck_in_tangle(Divergence& out) const {
-  if (tangles_ < kStuckSubsteps) return false;
+  if (!tangles_.stuck()) return false;
   char why[200];
   std::snprintf(why, sizeof why,
                 "cloth contact: %d tangles beyond the pair bound since t = %.4g s held every free "
                 "vertex (an exploding cloth, or cloth pressed denser than the bound)",
-                tangles_, tangled_since_);
+                tangles_.tangles, tangles_.since);
   monitor_.stuck(model_, state_, steps_, time(), why, out);
   return true;
 }
 
+// Without CPU work between the substeps the mirror is read once per step() call: in the window,
+// once per frame.
 template <class T>
 bool SolverT<T>::check_after(long k, long count) const {
   return !backend_ || !backend_->ahead() || k + 1 == count;
@@ -345,7 +328,7 @@ void SolverT<T>::apply_impulse(const Vec3d& center, double radius, const Vec3d& 
 template <class T>
 void SolverT<T>::add_impulse(const Vec3d& center, double radius, const Vec3d& impulse) {
   auto distance2 = [&](std::size_t i) {
-    const Vec3d p = get(state_.pos, static_cast<int>(i));
+    const Vec3d p = vec3_at(state_.pos, static_cast<int>(i));
     return (p[0] - center[0]) * (p[0] - center[0]) + (p[1] - center[1]) * (p[1] - center[1]) +
            (p[2] - center[2]) * (p[2] - center[2]);
   };
@@ -405,7 +388,7 @@ void SolverT<T>::load_state(const Solver& other) {
   if (other.dt() != dt_) steps_ = static_cast<long>(std::llround(other.time() / dt_));
   pending_ = 0.0;
   diverged_.reset();
-  tangles_ = clean_substeps_ = 0;
+  tangles_ = {};
   state_changed();
   mirror_written();
 }
@@ -429,7 +412,7 @@ template <class T>
 void SolverT<T>::copy_normals(float* xyz) {
   if (backend_ && backend_->normals(xyz)) return;
   compute_surface(model_, state_.pos, workspace_, threads_);
-  copy(workspace_.normal, xyz);
+  copy_xyz(workspace_.normal, xyz);
 }
 
 template <class T>
@@ -442,12 +425,12 @@ void SolverT<T>::reset() {
   sync_state();  // the backend's state is about to be replaced: never pull it over the reset
   restore_pins();
   grab_.reset();
-  release_at_ = built_release_at_;
+  pins_.at = pins_.built_at;
   state_ = initial_state(model_);
   steps_ = 0;
   pending_ = 0.0;
   diverged_.reset();
-  tangles_ = clean_substeps_ = 0;
+  tangles_ = {};
   totals_ = {};
   integrator_->invalidate();
   mirror_written();
@@ -457,7 +440,7 @@ template <class T>
 void SolverT<T>::release_due(bool all) {
   bool any = false;
   for (std::size_t c = 0; c < model_.cloths.size(); ++c) {
-    const bool due = all || (release_at_[c] && time() >= *release_at_[c] - 0.5 * dt_);
+    const bool due = all || (pins_.at[c] && time() >= *pins_.at[c] - 0.5 * dt_);
     if (!due) continue;
     const ClothRange& r = model_.cloths[c];
     for (int v = r.offset; v < r.offset + r.nu * r.nv; ++v) {
@@ -466,12 +449,12 @@ void SolverT<T>::release_due(bool all) {
       model_.inv_mass[i] = T(1) / model_.mass[i];
       any = true;
     }
-    release_at_[c].reset();
+    pins_.at[c].reset();
   }
   if (!any) return;
   std::erase_if(model_.pinned,
                 [&](int v) { return model_.inv_mass[static_cast<std::size_t>(v)] != T(0); });
-  released_ = true;
+  pins_.released = true;
   // The integrators build their systems around the pinned vertices (filters, factorisations):
   // a new one for the new pins (once, at the release; the step loop itself never allocates).
   integrator_ = make_integrator<T>(model_, spec_);
@@ -481,7 +464,7 @@ void SolverT<T>::release_due(bool all) {
 template <class T>
 bool SolverT<T>::grab(int vertex, const Vec3d& target) {
   if (vertex < 0 || static_cast<std::size_t>(vertex) >= model_.n || pinned(vertex)) return false;
-  grab_ = Grab{vertex, target};
+  grab_ = GrabTarget{vertex, target};
   return true;
 }
 
@@ -513,10 +496,10 @@ void SolverT<T>::release_pins() {
 
 template <class T>
 void SolverT<T>::restore_pins() {
-  if (!released_) return;
-  for (int v : built_pins_) model_.inv_mass[static_cast<std::size_t>(v)] = T(0);
-  model_.pinned = built_pins_;
-  released_ = false;
+  if (!pins_.released) return;
+  for (int v : pins_.built_pins) model_.inv_mass[static_cast<std::size_t>(v)] = T(0);
+  model_.pinned = pins_.built_pins;
+  pins_.released = false;
   integrator_ = make_integrator<T>(model_, spec_);
   pins_changed();
 }

@@ -33,116 +33,38 @@ constexpr double kSignalCheckSeconds = 1.0 / 60.0;
 
 class Simulation {
  public:
-  explicit Simulation(const SceneSource& source) : source_(source) {
-    const Scene scene = source.load();
-    doubles_ = scene.solver.precision == Precision::f64;
-    solver_ = make_headless_backend_solver(scene, context_, note_);
-    chunk_ = std::max(1L, std::lround(kSignalCheckSeconds / solver_->dt()));
-  }
+  explicit Simulation(const SceneSource& source);
 
   // n steps; raises DivergenceError when the solver's monitor stops the run.
-  void step(long n) {
-    if (n < 0)
-      throw py::value_error("clothlab.Simulation.step: n must be >= 0 (got " + std::to_string(n) +
-                            ")");
-    const auto lock = exclusive();
-    for (long done = 0; done < n;) {
-      const long count = std::min(chunk_, n - done);
-      AdvanceResult r;
-      {
-        py::gil_scoped_release release;
-        r = solver_->step(count);
-      }
-      if (r.divergence) raise_divergence(*r.divergence);
-      done += count;
-      check_signals();
-    }
-  }
+  void step(long n);
 
   // The steps advance(seconds) takes on the solver (the remainder carried to the next call).
-  void advance(double seconds) {
-    if (!(seconds >= 0.0) || !std::isfinite(seconds))
-      throw py::value_error("clothlab.Simulation.advance: seconds must be finite and >= 0");
-    const double wanted = pending_ + seconds;
-    const long count = whole_steps(wanted, solver_->dt());
-    if (count < 0) throw py::value_error("clothlab.Simulation.advance: too many steps");
-    pending_ = std::max(0.0, wanted - double(count) * solver_->dt());
-    step(count);
-  }
+  void advance(double seconds);
 
-  py::array positions() const {
-    const auto lock = exclusive();
-    return field([&](int v) { return solver_->position(v); });
-  }
-  py::array velocities() const {
-    const auto lock = exclusive();
-    return field([&](int v) { return solver_->velocity(v); });
-  }
+  py::array positions() const;
+  py::array velocities() const;
   py::array rest_positions() const {
     return field([&](int v) { return solver_->rest_position(v); });
   }
-  py::array forces(ForceSource source) {
-    const auto lock = exclusive();
-    solver_->update_force_field(source);
-    return field([&](int v) { return solver_->force(v); });
-  }
+  py::array forces(ForceSource source);
 
-  py::dict energy() {
-    const auto lock = exclusive();
-    const Energy e = solver_->energy();
-    py::dict d;
-    d["kinetic"] = e.kinetic, d["elastic"] = e.elastic, d["gravity"] = e.gravity;
-    d["total"] = e.total();
-    return d;
-  }
+  py::dict energy();
 
   // Each spring's strain (spring_pairs order) and its mean at each vertex, float32.
-  std::pair<py::array_t<float>, py::array_t<float>> strain() {
-    const auto lock = exclusive();
-    if (!strain_) strain_.emplace(*solver_);
-    std::vector<float> xyz(3 * solver_->vertex_count()), per_spring, per_vertex;
-    solver_->copy_positions(xyz.data());
-    strain_->per_spring(xyz, per_spring);
-    strain_->per_vertex(per_spring, per_vertex);
-    return {py::array_t<float>(py::ssize_t(per_spring.size()), per_spring.data()),
-            py::array_t<float>(py::ssize_t(per_vertex.size()), per_vertex.data())};
-  }
+  std::pair<py::array_t<float>, py::array_t<float>> strain();
 
   // Like the window's P: `impulse` (N s) on the free vertices within `radius` of `center`;
   // by default where the window pushes (sim/push_region.hpp).
   void push(const std::array<double, 3>& impulse, std::optional<std::array<double, 3>> center,
-            std::optional<double> radius) {
-    const auto lock = exclusive();
-    const PushRegion region = default_push_region(*solver_);
-    const Vec3d c = center ? Vec3d{(*center)[0], (*center)[1], (*center)[2]} : region.center;
-    const double r = radius ? *radius : region.radius;
-    if (!(r > 0.0) || !std::isfinite(r))
-      throw py::value_error("clothlab.Simulation.push: radius must be > 0 and finite");
-    for (int k = 0; k < 3; ++k)
-      if (!std::isfinite(impulse[std::size_t(k)]) || !std::isfinite(c[std::size_t(k)]))
-        throw py::value_error("clothlab.Simulation.push: impulse and center must be finite");
-    solver_->apply_impulse(c, r, Vec3d{impulse[0], impulse[1], impulse[2]});
-  }
+            std::optional<double> radius);
 
-  void reset() {
-    const auto lock = exclusive();
-    solver_->reset();
-    pending_ = 0.0;
-  }
+  void reset();
 
-  void drop() {
-    const auto lock = exclusive();
-    solver_->release_pins();
-  }
+  void drop();
 
   // This call's hold on the solver: a second thread that steps, reads or changes the simulation
   // while one steps it (with the GIL released) is refused, never left to race.
-  std::unique_lock<std::mutex> exclusive() const {
-    std::unique_lock<std::mutex> lock(busy_, std::try_to_lock);
-    if (!lock.owns_lock())
-      throw std::runtime_error("clothlab.Simulation: busy stepping in another thread");
-    return lock;
-  }
+  std::unique_lock<std::mutex> exclusive() const;
 
   const Solver& solver() const { return *solver_; }
   Solver& solver() { return *solver_; }
@@ -150,41 +72,15 @@ class Simulation {
   const std::string& note() const { return note_; }
   bool doubles() const { return doubles_; }
 
-  py::array_t<int> triangles() const {
-    const auto& tris = solver_->triangles();
-    py::array_t<int> out({py::ssize_t(tris.size()), py::ssize_t(3)});
-    auto w = out.mutable_unchecked<2>();
-    for (std::size_t t = 0; t < tris.size(); ++t)
-      for (int k = 0; k < 3; ++k) w(py::ssize_t(t), k) = tris[t][std::size_t(k)];
-    return out;
-  }
-  py::array_t<int> springs() const {
-    const auto pairs = solver_->spring_pairs();
-    py::array_t<int> out({py::ssize_t(pairs.size()), py::ssize_t(2)});
-    auto w = out.mutable_unchecked<2>();
-    for (std::size_t s = 0; s < pairs.size(); ++s)
-      w(py::ssize_t(s), 0) = pairs[s][0], w(py::ssize_t(s), 1) = pairs[s][1];
-    return out;
-  }
+  py::array_t<int> triangles() const;
+  py::array_t<int> springs() const;
 
  private:
   // (vertices, 3) in the solver's precision, from a per-vertex reader.
   template <class Read>
-  py::array field(Read read) const {
-    const auto n = py::ssize_t(solver_->vertex_count());
-    if (doubles_) return fill<double>(n, read);
-    return fill<float>(n, read);
-  }
+  py::array field(Read read) const;
   template <class T, class Read>
-  static py::array fill(py::ssize_t n, Read read) {
-    py::array_t<T> out({n, py::ssize_t(3)});
-    auto w = out.template mutable_unchecked<2>();
-    for (py::ssize_t v = 0; v < n; ++v) {
-      const Vec3d x = read(int(v));
-      for (int k = 0; k < 3; ++k) w(v, k) = T(x[k]);
-    }
-    return out;
-  }
+  static py::array fill(py::ssize_t n, Read read);
 
   SceneSource source_;
   GlContextHandle context_;  // a GPU scene's headless context; outlives solver_
@@ -196,6 +92,146 @@ class Simulation {
   double pending_ = 0.0;
   mutable std::mutex busy_;  // held while a call steps, reads or changes the solver
 };
+
+inline Simulation::Simulation(const SceneSource& source) : source_(source) {
+  const Scene scene = source.load();
+  doubles_ = scene.solver.precision == Precision::f64;
+  solver_ = make_headless_backend_solver(scene, context_, note_);
+  chunk_ = std::max(1L, std::lround(kSignalCheckSeconds / solver_->dt()));
+}
+
+inline void Simulation::step(long n) {
+  if (n < 0)
+    throw py::value_error("clothlab.Simulation.step: n must be >= 0 (got " + std::to_string(n) +
+                          ")");
+  const auto lock = exclusive();
+  for (long done = 0; done < n;) {
+    const long count = std::min(chunk_, n - done);
+    AdvanceResult r;
+    {
+      py::gil_scoped_release release;
+      r = solver_->step(count);
+    }
+    if (r.divergence) raise_divergence(*r.divergence);
+    done += count;
+    check_signals();
+  }
+}
+
+inline void Simulation::advance(double seconds) {
+  if (!(seconds >= 0.0) || !std::isfinite(seconds))
+    throw py::value_error("clothlab.Simulation.advance: seconds must be finite and >= 0");
+  const double wanted = pending_ + seconds;
+  const long count = whole_steps(wanted, solver_->dt());
+  if (count < 0) throw py::value_error("clothlab.Simulation.advance: too many steps");
+  pending_ = std::max(0.0, wanted - double(count) * solver_->dt());
+  step(count);
+}
+
+inline py::array Simulation::positions() const {
+  const auto lock = exclusive();
+  return field([&](int v) { return solver_->position(v); });
+}
+
+inline py::array Simulation::velocities() const {
+  const auto lock = exclusive();
+  return field([&](int v) { return solver_->velocity(v); });
+}
+
+inline py::array Simulation::forces(ForceSource source) {
+  const auto lock = exclusive();
+  solver_->update_force_field(source);
+  return field([&](int v) { return solver_->force(v); });
+}
+
+inline py::dict Simulation::energy() {
+  const auto lock = exclusive();
+  const Energy e = solver_->energy();
+  py::dict d;
+  d["kinetic"] = e.kinetic, d["elastic"] = e.elastic, d["gravity"] = e.gravity;
+  d["total"] = e.total();
+  return d;
+}
+
+inline std::pair<py::array_t<float>, py::array_t<float>> Simulation::strain() {
+  const auto lock = exclusive();
+  if (!strain_) strain_.emplace(*solver_);
+  std::vector<float> xyz(3 * solver_->vertex_count()), per_spring, per_vertex;
+  solver_->copy_positions(xyz.data());
+  strain_->per_spring(xyz, per_spring);
+  strain_->per_vertex(per_spring, per_vertex);
+  return {py::array_t<float>(py::ssize_t(per_spring.size()), per_spring.data()),
+          py::array_t<float>(py::ssize_t(per_vertex.size()), per_vertex.data())};
+}
+
+inline void Simulation::push(const std::array<double, 3>& impulse,
+                             std::optional<std::array<double, 3>> center,
+                             std::optional<double> radius) {
+  const auto lock = exclusive();
+  const PushRegion region = default_push_region(*solver_);
+  const Vec3d c = center ? Vec3d{(*center)[0], (*center)[1], (*center)[2]} : region.center;
+  const double r = radius ? *radius : region.radius;
+  if (!(r > 0.0) || !std::isfinite(r))
+    throw py::value_error("clothlab.Simulation.push: radius must be > 0 and finite");
+  for (int k = 0; k < 3; ++k)
+    if (!std::isfinite(impulse[std::size_t(k)]) || !std::isfinite(c[std::size_t(k)]))
+      throw py::value_error("clothlab.Simulation.push: impulse and center must be finite");
+  solver_->apply_impulse(c, r, Vec3d{impulse[0], impulse[1], impulse[2]});
+}
+
+inline void Simulation::reset() {
+  const auto lock = exclusive();
+  solver_->reset();
+  pending_ = 0.0;
+}
+
+inline void Simulation::drop() {
+  const auto lock = exclusive();
+  solver_->release_pins();
+}
+
+inline std::unique_lock<std::mutex> Simulation::exclusive() const {
+  std::unique_lock<std::mutex> lock(busy_, std::try_to_lock);
+  if (!lock.owns_lock())
+    throw std::runtime_error("clothlab.Simulation: busy stepping in another thread");
+  return lock;
+}
+
+inline py::array_t<int> Simulation::triangles() const {
+  const auto& tris = solver_->triangles();
+  py::array_t<int> out({py::ssize_t(tris.size()), py::ssize_t(3)});
+  auto w = out.mutable_unchecked<2>();
+  for (std::size_t t = 0; t < tris.size(); ++t)
+    for (int k = 0; k < 3; ++k) w(py::ssize_t(t), k) = tris[t][std::size_t(k)];
+  return out;
+}
+
+inline py::array_t<int> Simulation::springs() const {
+  const auto pairs = solver_->spring_pairs();
+  py::array_t<int> out({py::ssize_t(pairs.size()), py::ssize_t(2)});
+  auto w = out.mutable_unchecked<2>();
+  for (std::size_t s = 0; s < pairs.size(); ++s)
+    w(py::ssize_t(s), 0) = pairs[s][0], w(py::ssize_t(s), 1) = pairs[s][1];
+  return out;
+}
+
+template <class Read>
+inline py::array Simulation::field(Read read) const {
+  const auto n = py::ssize_t(solver_->vertex_count());
+  if (doubles_) return fill<double>(n, read);
+  return fill<float>(n, read);
+}
+
+template <class T, class Read>
+inline py::array Simulation::fill(py::ssize_t n, Read read) {
+  py::array_t<T> out({n, py::ssize_t(3)});
+  auto w = out.template mutable_unchecked<2>();
+  for (py::ssize_t v = 0; v < n; ++v) {
+    const Vec3d x = read(int(v));
+    for (int k = 0; k < 3; ++k) w(v, k) = T(x[k]);
+  }
+  return out;
+}
 
 }  // namespace
 

@@ -14,7 +14,60 @@
 namespace clothlab {
 namespace {
 
+// Gauss-Seidel sweeps over the pairs a substep (a second cost 1.1x the frame, docs/contact.md).
+constexpr int kProximityIterations = 1;
+constexpr double kFriction = 0.3;  // cloth on cloth (cotton on cotton 0.3 to 0.5)
+// Candidate pairs reserved per triangle when built: the pair list grows past it only in a
+// tangle denser than that, once.
+constexpr std::size_t kPairsPerTriangle = 16;
+// Broad-phase leaf pairs and candidate pairs per triangle, and in all, beyond which the skins
+// shrink to the least that covers the substep, and beyond which again the substep is undone.
+// The twist (tests/stress_scenes/twist.toml) wrung into a rope holds 170 pairs a triangle at 2 s;
+// the cap keeps an exploding large cloth's list under 100 MB.
+constexpr std::size_t kMaxPairsPerTriangle = 256;
+constexpr std::size_t kMaxPairs = std::size_t(1) << 22;
+// Rounds of the fail-safe before every free vertex returns.
+constexpr int kMaxRounds = 16;
+// Leaf pairs a broad-phase piece visits between adding its counts to the shared totals.
+constexpr std::size_t kFlush = 256;
+// Levels of the tree unrolled into pieces for threads (2^kTaskDepth nodes against themselves).
+constexpr int kTaskDepth = 5;
+// The least a vertex may stray before the pairs are collected again, in thicknesses.
+constexpr double kSkin = 1.0;
+// At least this many times the vertex's stray in the substep that needed the pairs again, so
+// that a cloth deforming fast keeps its pairs for several substeps (each vertex its own: only
+// the fast ones gather more pairs), but no more than kSkinExtra thicknesses beyond that stray.
+// Measured (docs/contact.md section 7): the pile and the stack on the ball cost about 0.7x of
+// kSkin 0.5 and growth 2; without the cap the swinging large sheet gathers 2.9x the pairs.
+constexpr double kSkinGrowth = 8.0;
+constexpr double kSkinExtra = 1.0;
+// m: added to every box's pad for the rounding of its float coordinates.
+constexpr double kBoxSlack = 1e-5;
+// Collections of the pairs after a fail-safe whose returns bent a flat patch, before every
+// free vertex returns.
+constexpr int kMaxFlatRetries = 4;
+// A collection keeps the flat patches that are still flat, but chooses them afresh at least
+// once in this many collections. Measured (one run, 2 threads, ms a frame): the swinging
+// large_sheet 157 choosing at every collection, 105 at 2 and at 4, 127 at 16 (patches kept too
+// long stay small); the stack on the ball 22.9, 18.4, 20.8, 19.9.
+constexpr int kChooseEvery = 4;
+// Partial sums per block of vertices for the rigid fit (or the largest stray and excess).
+constexpr std::size_t kBlockSums = 15;
+
 using V3 = Eigen::Vector3d;
+
+// What the first tree's traversal skips: its own flat patches within themselves, and pairs of
+// nodes inside one flat patch of the second tree.
+template <class T>
+struct Cull {
+  const FlatPatches<T>& flat;
+  const std::vector<std::int32_t>& seam_patch;
+  bool self(int n) const { return flat.skipped(n); }
+  bool pair(int a, int b) const {
+    const std::int32_t p = seam_patch[std::size_t(a)];
+    return p >= 0 && p == seam_patch[std::size_t(b)];
+  }
+};
 
 template <class T>
 std::array<V3, 4> gather(const Vec3Array<T>& a, const std::array<std::int32_t, 4>& v) {
@@ -129,10 +182,10 @@ TriangleContact<T>::TriangleContact(const Model<T>& m, const SolverSpec& spec,
   returned_round_.assign(m.n, 0);
   returned_.reserve(m.n);
   block_sums_.assign(kBlockSums * block_count(m.n), 0.0);
-  allow_.assign(m.n, 0.0f);
-  dev0_.assign(m.n, 0.0f);
+  strays_.allow.assign(m.n, 0.0f);
+  strays_.dev0.assign(m.n, 0.0f);
   seam_patch_.assign(bvh_.node_count(), -1);
-  dev1_.assign(m.n, 0.0f);
+  strays_.dev1.assign(m.n, 0.0f);
   moved_.assign(m.n, 0);
   moved_list_.reserve(m.n);
 }
@@ -144,10 +197,10 @@ void TriangleContact<T>::begin(const State<T>& s, int threads) {
   // flat patch over everything there are no pairs to keep; the patch's own test covers x0.
   if (stale_ || all_flat()) return;
   const RigidFit fit = fit_rigid(x0_, threads);
-  rotation0_ = fit.rotation;
-  shrink_ = 1.0;
-  const Stray stray = deviations(x0_, fit, dev0_, nullptr, threads);
-  stray0_ = stray.most;
+  strays_.rotation0 = fit.rotation;
+  strays_.shrink = 1.0;
+  const Stray stray = deviations(x0_, fit, strays_.dev0, nullptr, threads);
+  strays_.stray0 = stray.most;
   if (stray.excess > 0.0) stale_ = true;
 }
 
@@ -155,8 +208,7 @@ void TriangleContact<T>::begin(const State<T>& s, int threads) {
 // changes no distance, so a falling or swinging cloth keeps its pairs. In double, by blocks
 // summed in block order (the same answer for any thread count).
 template <class T>
-typename TriangleContact<T>::RigidFit TriangleContact<T>::fit_rigid(const Vec3Array<T>& x,
-                                                                    int threads) {
+RigidFit TriangleContact<T>::fit_rigid(const Vec3Array<T>& x, int threads) {
   const std::size_t n = xc_.size(), blocks = block_count(n);
   for_each_block_indexed(n, threads_for(n, threads),
                          [&](std::size_t b, std::size_t lo, std::size_t hi) {
@@ -189,15 +241,13 @@ typename TriangleContact<T>::RigidFit TriangleContact<T>::fit_rigid(const Vec3Ar
 
 // Each vertex's stray from the fit, |x_i - to - R (xc_i - from)| rounded up, into dev; the
 // largest, and the largest excess of max(dev_i, also_i) over what vertex i may stray (its
-// allowance less the shrink's share, see allow_).
+// allowance less the shrink's share, see strays_.allow).
 template <class T>
-typename TriangleContact<T>::Stray TriangleContact<T>::deviations(const Vec3Array<T>& x,
-                                                                  const RigidFit& fit,
-                                                                  std::vector<float>& dev,
-                                                                  const std::vector<float>* also,
-                                                                  int threads) {
+StraySummary TriangleContact<T>::deviations(const Vec3Array<T>& x, const RigidFit& fit,
+                                            std::vector<float>& dev, const std::vector<float>* also,
+                                            int threads) {
   const std::size_t n = xc_.size(), blocks = block_count(n);
-  const double slack = (1.0 - shrink_) * 0.5 * thickness_;
+  const double slack = (1.0 - strays_.shrink) * 0.5 * thickness_;
   for_each_block_indexed(
       n, threads_for(n, threads), [&](std::size_t b, std::size_t lo, std::size_t hi) {
         double most = 0.0, excess = -INFINITY;
@@ -207,7 +257,8 @@ typename TriangleContact<T>::Stray TriangleContact<T>::deviations(const Vec3Arra
           dev[i] = float(d * (1.0 + 1e-6) + 1e-12);  // rounded up
           most = std::max(most, d);
           const float moved = also ? std::max(dev[i], (*also)[i]) : dev[i];
-          excess = std::max(excess, double(moved) + slack - shrink_ * double(allow_[i]));
+          excess =
+              std::max(excess, double(moved) + slack - strays_.shrink * double(strays_.allow[i]));
         }
         block_sums_[2 * b] = most;
         block_sums_[2 * b + 1] = excess;
@@ -228,16 +279,16 @@ typename TriangleContact<T>::Stray TriangleContact<T>::deviations(const Vec3Arra
 template <class T>
 void TriangleContact<T>::set_allowances(double growth, int threads) {
   const double base = kSkin * thickness_, extra = kSkinExtra * thickness_;
-  const double slack = (1.0 - shrink_) * 0.5 * thickness_;
-  for_each_block(
-      allow_.size(), threads_for(allow_.size(), threads), [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) {
-          const double d = double(dev0_[i]);
-          allow_[i] =
-              float(std::max({base, std::min(growth * d, d + extra), (d + slack) / shrink_}) *
-                    (1.0 + 1e-6));
-        }
-      });
+  const double slack = (1.0 - strays_.shrink) * 0.5 * thickness_;
+  for_each_block(strays_.allow.size(), threads_for(strays_.allow.size(), threads),
+                 [&](std::size_t begin, std::size_t end) {
+                   for (std::size_t i = begin; i < end; ++i) {
+                     const double d = double(strays_.dev0[i]);
+                     strays_.allow[i] = float(std::max({base, std::min(growth * d, d + extra),
+                                                        (d + slack) / strays_.shrink}) *
+                                              (1.0 + 1e-6));
+                   }
+                 });
 }
 
 // Each triangle's and edge's box around its vertices where the pairs are collected (xc), padded
@@ -247,7 +298,7 @@ template <class T>
 void TriangleContact<T>::feature_boxes(int threads) {
   const auto box_of = [&](const auto& vertices) {
     float allow = 0.0f;
-    for (int v : vertices) allow = std::max(allow, allow_[std::size_t(v)]);
+    for (int v : vertices) allow = std::max(allow, strays_.allow[std::size_t(v)]);
     const float pad = float(0.5 * thickness_ + kBoxSlack) + allow;
     FloatBox b;
     for (std::size_t a = 0; a < 3; ++a) {
@@ -275,20 +326,20 @@ void TriangleContact<T>::feature_boxes(int threads) {
 }
 
 // The pairs are collected at the positions now (xc). A pair is kept when it is within the
-// thickness plus the allowances of its two sides there (allow_, each side's largest): while no
-// vertex strays beyond its allowance from xc (after the best rigid motion, less the shrink's
+// thickness plus the allowances of its two sides there (strays_.allow, each side's largest): while
+// no vertex strays beyond its allowance from xc (after the best rigid motion, less the shrink's
 // share), no other pair can come within the thickness.
 template <class T>
 bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
   xc_ = s.pos;
   tangled_ = false;
   const RigidFit fit = fit_rigid(x0_, threads);
-  rotation0_ = fit.rotation;
-  rotation1_.setIdentity();
-  shrink_ = interpolated_rotation_shrink(rotation0_, rotation1_);
-  stray0_ = deviations(x0_, fit, dev0_, nullptr, threads).most;
-  stray1_ = 0.0;
-  std::fill(dev1_.begin(), dev1_.end(), 0.0f);
+  strays_.rotation0 = fit.rotation;
+  strays_.rotation1.setIdentity();
+  strays_.shrink = interpolated_rotation_shrink(strays_.rotation0, strays_.rotation1);
+  strays_.stray0 = deviations(x0_, fit, strays_.dev0, nullptr, threads).most;
+  strays_.stray1 = 0.0;
+  std::fill(strays_.dev1.begin(), strays_.dev1.end(), 0.0f);
   stale_ = false;
   // The patches that cannot touch themselves over the substep under way, skipped below: those
   // chosen before while they stay flat over it (a collection for strayed vertices alone), but
@@ -311,7 +362,7 @@ bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
     set_allowances(growth, threads);
     if (gather_pairs(threads)) return true;
     // No vertex strayed enough for the growth to matter: the least skins are these.
-    if (kSkinGrowth * stray0_ <= kSkin * thickness_) break;
+    if (kSkinGrowth * strays_.stray0 <= kSkin * thickness_) break;
   }
   stale_ = true;
   tangled_ = true;  // at xc
@@ -324,8 +375,9 @@ bool TriangleContact<T>::collect_pairs(const State<T>& s, int threads) {
 template <class T>
 bool TriangleContact<T>::still_tangled(const State<T>& s, int threads) {
   if (!tangled_) return false;
-  // dev1_ as scratch: after a tangle the pairs are stale and a collection resets it.
-  const double most = deviations(s.pos, fit_rigid(s.pos, threads), dev1_, nullptr, threads).most;
+  // strays_.dev1 as scratch: after a tangle the pairs are stale and a collection resets it.
+  const double most =
+      deviations(s.pos, fit_rigid(s.pos, threads), strays_.dev1, nullptr, threads).most;
   tangled_ = most <= kSkin * thickness_;
   return tangled_;
 }
@@ -347,7 +399,7 @@ bool TriangleContact<T>::gather_pairs(int threads) {
   // found after about the bound's worth of work.
   const std::size_t bound = std::min(kMaxPairsPerTriangle * boxes.size(), kMaxPairs);
   const long count = long(tasks_.size());
-  const Cull cull{flat_, seam_patch_};
+  const Cull<T> cull{flat_, seam_patch_};
   std::atomic<std::size_t> all_leaves{0}, all_pairs{0};
   std::atomic<bool> tangle{false};
   run_team(threads, [&] {
@@ -437,7 +489,7 @@ void TriangleContact<T>::add_pairs(int ta, int tb, std::vector<Pair>& out) const
 // sides (a point of a triangle or an edge strays no farther than its farthest vertex).
 template <class T>
 void TriangleContact<T>::keep_if_close(const Pair& p, std::vector<Pair>& out) const {
-  const auto a = [&](int k) { return allow_[std::size_t(p.v[std::size_t(k)])]; };
+  const auto a = [&](int k) { return strays_.allow[std::size_t(p.v[std::size_t(k)])]; };
   const float first = p.edge_edge ? std::max(a(0), a(1)) : a(0);
   const float other = std::max({a(2), a(3), p.edge_edge ? a(2) : a(1)});
   const double d = thickness_ + double(first) + double(other);
@@ -450,7 +502,7 @@ void TriangleContact<T>::keep_if_close(const Pair& p, std::vector<Pair>& out) co
 
 template <class T>
 typename TriangleContact<T>::FloatBox TriangleContact<T>::point_box(int v) const {
-  const float pad = float(0.5 * thickness_ + kBoxSlack) + allow_[std::size_t(v)];
+  const float pad = float(0.5 * thickness_ + kBoxSlack) + strays_.allow[std::size_t(v)];
   FloatBox b;
   for (std::size_t a = 0; a < 3; ++a) {
     const float c = float(xc_.axis(int(a))[std::size_t(v)]);
@@ -584,7 +636,8 @@ int TriangleContact<T>::fail_safe(const Model<T>& m, State<T>& s, int threads) {
   returned_.clear();
   int unresolved = 0;
   // Every vertex is at x1 (this round only): the distance bound holds over the substep.
-  flag_pairs(threads, [&](const Pair& p) { return !clear_by(p, 2.0 * eta_) && meets(p, s.pos); });
+  flag_pairs(threads,
+             [&](const Pair& p) { return !strays_.clear_by(p, 2.0 * eta_) && meets(p, s.pos); });
   for (int round = 1;; ++round) {
     if (round > kMaxRounds) {
       for (std::int32_t v : returned_) returned_round_[std::size_t(v)] = 0;
@@ -653,22 +706,22 @@ bool TriangleContact<T>::still_flat(const Vec3Array<T>& x, int threads) {
 template <class T>
 void TriangleContact<T>::measure_stray1(const State<T>& s, int threads) {
   if (stale_ || all_flat()) {
-    stray1_ = 0.0;
-    excess1_ = -INFINITY;
+    strays_.stray1 = 0.0;
+    strays_.excess1 = -INFINITY;
     return;
   }
   const RigidFit fit = fit_rigid(s.pos, threads);
-  rotation1_ = fit.rotation;
-  shrink_ = interpolated_rotation_shrink(rotation0_, rotation1_);
-  const Stray stray = deviations(s.pos, fit, dev1_, &dev0_, threads);
-  stray1_ = stray.most;
-  excess1_ = stray.excess;
+  strays_.rotation1 = fit.rotation;
+  strays_.shrink = interpolated_rotation_shrink(strays_.rotation0, strays_.rotation1);
+  const Stray stray = deviations(s.pos, fit, strays_.dev1, &strays_.dev0, threads);
+  strays_.stray1 = stray.most;
+  strays_.excess1 = stray.excess;
 }
 
 template <class T>
 bool TriangleContact<T>::recollect_if_needed(const State<T>& s, int threads, bool& flag) {
   measure_stray1(s, threads);
-  const bool needed = stale_ || excess1_ > 0.0 || !still_flat(s.pos, threads);
+  const bool needed = stale_ || strays_.excess1 > 0.0 || !still_flat(s.pos, threads);
   if (!needed) return true;
   flag = true;
   return collect_pairs(s, threads);
@@ -697,7 +750,7 @@ bool TriangleContact<T>::respond(const Model<T>& m, State<T>& s, double h, int t
   // The pairs again when a vertex has strayed past its skin since they were collected.
   if (still_tangled(s, threads)) return undo(m, s);
   measure_stray1(s, threads);
-  if (stale_ || excess1_ > 0.0) {
+  if (stale_ || strays_.excess1 > 0.0) {
     stats_.collected = true;
     if (!collect_pairs(s, threads)) return undo(m, s);
   }
@@ -705,8 +758,9 @@ bool TriangleContact<T>::respond(const Model<T>& m, State<T>& s, double h, int t
   // order (a pair that a neighbour's push brings within the thickness waits for the next
   // substep; the fail-safe holds meanwhile).
   int contacts = 0;
-  flag_pairs(threads,
-             [&](const Pair& p) { return !clear_by(p, thickness_) && needs_push(p, s.pos); });
+  flag_pairs(threads, [&](const Pair& p) {
+    return !strays_.clear_by(p, thickness_) && needs_push(p, s.pos);
+  });
   for (int it = 0; it < kProximityIterations; ++it)
     for (std::size_t k = 0; k < pairs_.size(); ++k)
       if (flag_[k] && push_apart(m, s, pairs_[k])) ++contacts;

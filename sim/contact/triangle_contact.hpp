@@ -42,6 +42,7 @@
 
 #include "sim/contact/contact_stats.hpp"
 #include "sim/contact/flat_patches.hpp"
+#include "sim/contact/stray_bounds.hpp"
 #include "sim/contact/surface_features.hpp"
 #include "sim/contact/triangle_bvh.hpp"
 #include "sim/integrators/integrator.hpp"
@@ -52,44 +53,6 @@ namespace clothlab {
 template <class T>
 class TriangleContact {
  public:
-  // Gauss-Seidel sweeps over the pairs a substep (a second cost 1.1x the frame, docs/contact.md).
-  static constexpr int kProximityIterations = 1;
-  static constexpr double kFriction = 0.3;  // cloth on cloth (cotton on cotton 0.3 to 0.5)
-  // Candidate pairs reserved per triangle when built: the pair list grows past it only in a
-  // tangle denser than that, once.
-  static constexpr std::size_t kPairsPerTriangle = 16;
-  // Broad-phase leaf pairs and candidate pairs per triangle, and in all, beyond which the skins
-  // shrink to the least that covers the substep, and beyond which again the substep is undone.
-  // The twist (tests/stress_scenes/twist.toml) wrung into a rope holds 170 pairs a triangle at 2 s;
-  // the cap keeps an exploding large cloth's list under 100 MB.
-  static constexpr std::size_t kMaxPairsPerTriangle = 256;
-  static constexpr std::size_t kMaxPairs = std::size_t(1) << 22;
-  // Rounds of the fail-safe before every free vertex returns.
-  static constexpr int kMaxRounds = 16;
-  // Leaf pairs a broad-phase piece visits between adding its counts to the shared totals.
-  static constexpr std::size_t kFlush = 256;
-  // Levels of the tree unrolled into pieces for threads (2^kTaskDepth nodes against themselves).
-  static constexpr int kTaskDepth = 5;
-  // The least a vertex may stray before the pairs are collected again, in thicknesses.
-  static constexpr double kSkin = 1.0;
-  // At least this many times the vertex's stray in the substep that needed the pairs again, so
-  // that a cloth deforming fast keeps its pairs for several substeps (each vertex its own: only
-  // the fast ones gather more pairs), but no more than kSkinExtra thicknesses beyond that stray.
-  // Measured (docs/contact.md section 7): the pile and the stack on the ball cost about 0.7x of
-  // kSkin 0.5 and growth 2; without the cap the swinging large sheet gathers 2.9x the pairs.
-  static constexpr double kSkinGrowth = 8.0;
-  static constexpr double kSkinExtra = 1.0;
-  // m: added to every box's pad for the rounding of its float coordinates.
-  static constexpr double kBoxSlack = 1e-5;
-  // Collections of the pairs after a fail-safe whose returns bent a flat patch, before every
-  // free vertex returns.
-  static constexpr int kMaxFlatRetries = 4;
-  // A collection keeps the flat patches that are still flat, but chooses them afresh at least
-  // once in this many collections. Measured (one run, 2 threads, ms a frame): the swinging
-  // large_sheet 157 choosing at every collection, 105 at 2 and at 4, 127 at 16 (patches kept too
-  // long stay small); the stack on the ball 22.9, 18.4, 20.8, 19.9.
-  static constexpr int kChooseEvery = 4;
-
   TriangleContact(const Model<T>& m, const SolverSpec& spec);
 
   // What the constructor reads from the rest shape once: each vertex's and triangle's cloth and
@@ -111,11 +74,7 @@ class TriangleContact {
   // The separation the fail-safe's collision detection counts as contact.
   double eta() const { return eta_; }
 
-  struct Pair {
-    std::array<std::int32_t, 4> v{};  // point, triangle; or edge, edge
-    bool edge_edge = false;
-    float dist = 0.0f;  // m: at the collection positions xc (rounded down)
-  };
+  using Pair = ContactPair;
   const std::vector<Pair>& pairs() const { return pairs_; }
 
  private:
@@ -134,15 +93,7 @@ class TriangleContact {
   // Every free vertex back to x0 with zero velocity; returns how many.
   int return_all(const Model<T>& m, State<T>& s);
   bool undo(const Model<T>& m, State<T>& s);
-  // x is near to + rotation (xc - from).
-  struct RigidFit {
-    Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
-    Eigen::Vector3d from = Eigen::Vector3d::Zero(), to = Eigen::Vector3d::Zero();
-  };
-  struct Stray {
-    double most = 0.0;    // m: the largest stray
-    double excess = 0.0;  // m: the largest stray beyond its vertex's allowance (> 0: collect)
-  };
+  using Stray = StraySummary;
   RigidFit fit_rigid(const Vec3Array<T>& x, int threads);
   Stray deviations(const Vec3Array<T>& x, const RigidFit& fit, std::vector<float>& dev,
                    const std::vector<float>* also, int threads);
@@ -180,52 +131,11 @@ class TriangleContact {
   TriangleBvh shifted_bvh_;
   FlatPatches<T> shifted_flat_;
   std::vector<std::int32_t> seam_patch_;  // per node of the first tree: see seam_patches()
-  // What the first tree's traversal skips: its own flat patches within themselves, and pairs of
-  // nodes inside one flat patch of the second tree.
-  struct Cull {
-    const FlatPatches<T>& flat;
-    const std::vector<std::int32_t>& seam_patch;
-    bool self(int n) const { return flat.skipped(n); }
-    bool pair(int a, int b) const {
-      const std::int32_t p = seam_patch[std::size_t(a)];
-      return p >= 0 && p == seam_patch[std::size_t(b)];
-    }
-  };
-  std::vector<std::int32_t> cloth_of_;  // per vertex
-  Vec3Array<T> x0_;                     // the substep's start
-  Vec3Array<T> x_step_;                 // what the integrator made, of the vertices pushed
-  Vec3Array<T> xc_;                     // where the pairs were collected
-  // m, per vertex: how far it may stray from xc (after the rigid fit) while the pairs hold: a
-  // pair left out was farther apart at xc than the thickness plus its two sides' largest
-  // allowances, so while every vertex strays less than shrink_ times its allowance less
-  // (1 - shrink_) half thicknesses, no pair left out comes within the thickness.
-  std::vector<float> allow_;
-  // m: how far the substep's start x0 and its end x1 have strayed from xc (each from its own
-  // rigid fit), the largest and each vertex's. On the straight motion between them a vertex
-  // strays no farther than the larger of its two, so a pair's distance is at least shrink_ times
-  // its distance at xc less the largest of that over its first side and the same over its
-  // other: a pair farther apart than the thickness (or eta) that way needs neither a push nor a
-  // collision test in the substep.
-  double stray0_ = 0.0, stray1_ = 0.0;
-  double excess1_ = 0.0;  // m: see Stray
-  std::vector<float> dev0_, dev1_;
-  // The rigid fits' rotations from xc to x0 and to x1, and the factor by which the straight
-  // motion between them can shrink a distance at xc (sim/contact/rigid_fit.hpp).
-  Eigen::Matrix3d rotation0_ = Eigen::Matrix3d::Identity();
-  Eigen::Matrix3d rotation1_ = Eigen::Matrix3d::Identity();
-  double shrink_ = 1.0;
-  float moved_by(std::int32_t v) const {
-    return std::max(dev0_[std::size_t(v)], dev1_[std::size_t(v)]);
-  }
-  // Whether the pair is certainly more than d apart over the whole substep.
-  bool clear_by(const Pair& p, double d) const {
-    const float first =
-        p.edge_edge ? std::max(moved_by(p.v[0]), moved_by(p.v[1])) : moved_by(p.v[0]);
-    const float other =
-        std::max(moved_by(p.v[2]),
-                 p.edge_edge ? moved_by(p.v[3]) : std::max(moved_by(p.v[1]), moved_by(p.v[3])));
-    return shrink_ * double(p.dist) - double(first) - double(other) > d;
-  }
+  std::vector<std::int32_t> cloth_of_;    // per vertex
+  Vec3Array<T> x0_;                       // the substep's start
+  Vec3Array<T> x_step_;                   // what the integrator made, of the vertices pushed
+  Vec3Array<T> xc_;                       // where the pairs were collected
+  StrayBounds strays_;                    // how far the vertices moved since
   std::vector<FloatBox> triangle_box_, edge_box_;  // around their vertices at xc
   std::vector<TriangleBvh::Task> tasks_;           // the broad phase's pieces for threads
   std::vector<std::vector<Pair>> task_pairs_;      // per piece: the pairs it found
@@ -236,8 +146,7 @@ class TriangleContact {
   std::vector<Pair> pairs_;
   std::vector<std::uint8_t> flag_;  // per pair: the last parallel test's answer
   // Per block of vertices: kBlockSums partial sums for the rigid fit, or the largest stray and
-  // excess.
-  static constexpr std::size_t kBlockSums = 15;
+  // excess (triangle_contact.cpp).
   std::vector<double> block_sums_;
   std::vector<std::uint8_t> moved_;       // per vertex: a push moved it this substep
   std::vector<std::int32_t> moved_list_;  // those vertices; x_step_ holds where they were

@@ -84,164 +84,23 @@ class Xpbd final : public Integrator<T> {
  public:
   // order: a colour per spring of spring_list(m) (xpbd_grid_colours), or empty for the greedy
   // colouring.
-  Xpbd(const Model<T>& m, const SolverSpec& spec, const std::vector<int>& order = {})
-      : sweeps_(spec.iterations > 0 ? spec.iterations : 1) {
-    const SpringList<T> list = spring_list(m);
-    // Springs that can act: not both ends pinned, and some stiffness or damping.
-    std::vector<std::array<int, 2>> ends;
-    std::vector<std::size_t> source;
-    std::vector<int> colour;
-    for (std::size_t s = 0; s < list.size(); ++s) {
-      const auto [a, b] = list.ends[s];
-      const bool movable = m.inv_mass[a] != T(0) || m.inv_mass[b] != T(0);
-      if (movable && (list.stiffness[s] != T(0) || list.damping[s] != T(0))) {
-        ends.push_back(list.ends[s]);
-        source.push_back(s);
-        if (!order.empty()) colour.push_back(order[s]);
-      }
-    }
-    if (order.empty()) colour = colour_springs(m.n, ends);
-    int colours = 0;
-    for (int c : colour) colours = std::max(colours, c + 1);
-    // Counting sort by colour, stable: spring_list() order within a colour.
-    colour_start_.assign(static_cast<std::size_t>(colours) + 1, 0);
-    for (int c : colour) ++colour_start_[static_cast<std::size_t>(c) + 1];
-    for (int c = 0; c < colours; ++c) colour_start_[c + 1] += colour_start_[c];
-    std::vector<std::size_t> next(colour_start_.begin(), colour_start_.end() - 1);
-    const std::size_t count = ends.size();
-    a_.resize(count);
-    b_.resize(count);
-    stiffness_.resize(count);
-    rest_.resize(count);
-    damping_.resize(count);
-    lambda_.assign(count, T(0));
-    for (std::size_t s = 0; s < count; ++s) {
-      const std::size_t k = next[static_cast<std::size_t>(colour[s])]++;
-      a_[k] = ends[s][0];
-      b_[k] = ends[s][1];
-      stiffness_[k] = list.stiffness[source[s]];
-      rest_[k] = list.rest_length[source[s]];
-      damping_[k] = list.damping[source[s]];
-    }
-    f_.resize(m.n);
-    p_.assign(4 * m.n, T(0));
-    prev_.assign(4 * m.n, T(0));
-  }
+  Xpbd(const Model<T>& m, const SolverSpec& spec, const std::vector<int>& order = {});
 
-  void step(const System<T>& sys, State<T>& s, double t, T h) override {
-    const Model<T>& m = sys.model;
-    compute_external_forces(m, t, s.pos, s.vel, f_, sys.workspace, sys.threads);
-    predict(m, s, h, sys.threads);
-    // Every colour of every sweep in one parallel region (a barrier between colours).
-    const int colours = static_cast<int>(colour_start_.size()) - 1;
-    for_each_phase_block(
-        sweeps_ * colours,
-        [&](int phase) {
-          const auto c = static_cast<std::size_t>(phase % colours);
-          return colour_start_[c + 1] - colour_start_[c];
-        },
-        sys.threads,
-        [&](int phase, std::size_t b, std::size_t e) {
-          const std::size_t first = colour_start_[static_cast<std::size_t>(phase % colours)];
-          if (phase < colours) {
-            project<true>(first + b, first + e, h);
-          } else {
-            project<false>(first + b, first + e, h);
-          }
-        });
-    // x = the projected positions, v = (x - x_prev) / h.
-    const T inv_h = T(1) / h;
-    for_each_block(m.n, sys.threads, [&](std::size_t b, std::size_t e) {
-      const T* __restrict p = p_.data();
-      const T* __restrict prev = prev_.data();
-      for (int a = 0; a < 3; ++a) {
-        T* __restrict x = s.pos.axis(a).data();
-        T* __restrict v = s.vel.axis(a).data();
-#pragma omp simd
-        for (std::size_t i = b; i < e; ++i) {
-          x[i] = p[4 * i + a];
-          v[i] = (p[4 * i + a] - prev[4 * i + a]) * inv_h;
-        }
-      }
-    });
-  }
+  void step(const System<T>& sys, State<T>& s, double t, T h) override;
 
-  SolveStats last_stats() const override {
-    return {sweeps_, 0.0, true};
-  }
+  SolveStats last_stats() const override { return {sweeps_, 0.0, true}; }
 
  private:
   // v += h f / m with drag implicit per vertex; x_prev = x; x += h v, into the packed arrays.
   // Pinned vertices (inv_mass 0) keep v = 0 and do not move.
-  void predict(const Model<T>& m, const State<T>& s, T h, int threads) {
-    const T* __restrict inv_m = m.inv_mass.data();
-    const T drag = m.drag;
-    for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) {
-      T* __restrict p = p_.data();
-      T* __restrict prev = prev_.data();
-      for (int a = 0; a < 3; ++a) {
-        const T* __restrict x = s.pos.axis(a).data();
-        const T* __restrict v = s.vel.axis(a).data();
-        const T* __restrict f = f_.axis(a).data();
-#pragma omp simd
-        for (std::size_t i = b; i < e; ++i) {
-          // f already holds -drag v; adding it back and dividing makes the drag implicit.
-          const T hw = h * inv_m[i];
-          const T v_new =
-              inv_m[i] > T(0) ? (v[i] + hw * (f[i] + drag * v[i])) / (T(1) + hw * drag) : T(0);
-          prev[4 * i + a] = x[i];
-          p[4 * i + a] = x[i] + h * v_new;
-        }
-      }
-#pragma omp simd
-      for (std::size_t i = b; i < e; ++i) p[4 * i + 3] = inv_m[i];
-    });
-  }
+  void predict(const Model<T>& m, const State<T>& s, T h, int threads);
 
   // One XPBD update (eq. (26), multiplied through by k h^2) of springs [begin, end) of one
   // colour. No two of them share a vertex, so they do not interact and the order within the
   // colour does not matter. First: lambda is 0 (reset at the start of the substep). Positions
   // are packed (x, y, z, w) per vertex: one cache line per end instead of seven arrays.
   template <bool First>
-  void project(std::size_t begin, std::size_t end, T h) {
-    T* __restrict p = p_.data();
-    const T* __restrict prev = prev_.data();
-    const std::int32_t* __restrict ia = a_.data();
-    const std::int32_t* __restrict ib = b_.data();
-    const T* __restrict ks = stiffness_.data();
-    const T* __restrict rest = rest_.data();
-    const T* __restrict cs = damping_.data();
-    T* __restrict lambda = lambda_.data();
-    const T h2 = h * h;
-    for (std::size_t s = begin; s < end; ++s) {
-      T* pa = p + 4 * static_cast<std::size_t>(ia[s]);
-      T* pb = p + 4 * static_cast<std::size_t>(ib[s]);
-      const T* qa = prev + 4 * static_cast<std::size_t>(ia[s]);
-      const T* qb = prev + 4 * static_cast<std::size_t>(ib[s]);
-      const T dx = pa[0] - pb[0], dy = pa[1] - pb[1], dz = pa[2] - pb[2];
-      const T len = std::sqrt(dx * dx + dy * dy + dz * dz);
-      // A zero-length spring has no direction: it gets no correction (n = 0 and C = 0).
-      const T inv_len = len > T(0) ? T(1) / len : T(0);
-      const T nx = dx * inv_len, ny = dy * inv_len, nz = dz * inv_len;
-      const T stretch = len > T(0) ? len - rest[s] : T(0);
-      // grad C . (x - x_prev): the relative displacement along the spring this substep.
-      const T moved = nx * ((pa[0] - qa[0]) - (pb[0] - qb[0])) +
-                      ny * ((pa[1] - qa[1]) - (pb[1] - qb[1])) +
-                      nz * ((pa[2] - qa[2]) - (pb[2] - qb[2]));
-      const T kh2 = ks[s] * h2, ch = cs[s] * h;
-      const T lam = First ? T(0) : lambda[s];
-      const T wa = pa[3], wb = pb[3];
-      const T dlambda = (-kh2 * stretch - lam - ch * moved) / ((kh2 + ch) * (wa + wb) + T(1));
-      lambda[s] = lam + dlambda;
-      const T da = wa * dlambda, db = wb * dlambda;
-      pa[0] += da * nx;
-      pa[1] += da * ny;
-      pa[2] += da * nz;
-      pb[0] -= db * nx;
-      pb[1] -= db * ny;
-      pb[2] -= db * nz;
-    }
-  }
+  void project(std::size_t begin, std::size_t end, T h);
 
   int sweeps_;
   std::vector<std::size_t> colour_start_;  // springs of colour c: [colour_start_[c], [c + 1])
@@ -250,6 +109,158 @@ class Xpbd final : public Integrator<T> {
   Vec3Array<T> f_;
   AlignedVector<T> p_, prev_;  // per vertex (x, y, z, inv_mass) and (x_prev, 0)
 };
+
+template <class T>
+inline Xpbd<T>::Xpbd(const Model<T>& m, const SolverSpec& spec, const std::vector<int>& order)
+    : sweeps_(spec.iterations > 0 ? spec.iterations : 1) {
+  const SpringList<T> list = spring_list(m);
+  // Springs that can act: not both ends pinned, and some stiffness or damping.
+  std::vector<std::array<int, 2>> ends;
+  std::vector<std::size_t> source;
+  std::vector<int> colour;
+  for (std::size_t s = 0; s < list.size(); ++s) {
+    const auto [a, b] = list.ends[s];
+    const bool movable = m.inv_mass[a] != T(0) || m.inv_mass[b] != T(0);
+    if (movable && (list.stiffness[s] != T(0) || list.damping[s] != T(0))) {
+      ends.push_back(list.ends[s]);
+      source.push_back(s);
+      if (!order.empty()) colour.push_back(order[s]);
+    }
+  }
+  if (order.empty()) colour = colour_springs(m.n, ends);
+  int colours = 0;
+  for (int c : colour) colours = std::max(colours, c + 1);
+  // Counting sort by colour, stable: spring_list() order within a colour.
+  colour_start_.assign(static_cast<std::size_t>(colours) + 1, 0);
+  for (int c : colour) ++colour_start_[static_cast<std::size_t>(c) + 1];
+  for (int c = 0; c < colours; ++c) colour_start_[c + 1] += colour_start_[c];
+  std::vector<std::size_t> next(colour_start_.begin(), colour_start_.end() - 1);
+  const std::size_t count = ends.size();
+  a_.resize(count);
+  b_.resize(count);
+  stiffness_.resize(count);
+  rest_.resize(count);
+  damping_.resize(count);
+  lambda_.assign(count, T(0));
+  for (std::size_t s = 0; s < count; ++s) {
+    const std::size_t k = next[static_cast<std::size_t>(colour[s])]++;
+    a_[k] = ends[s][0];
+    b_[k] = ends[s][1];
+    stiffness_[k] = list.stiffness[source[s]];
+    rest_[k] = list.rest_length[source[s]];
+    damping_[k] = list.damping[source[s]];
+  }
+  f_.resize(m.n);
+  p_.assign(4 * m.n, T(0));
+  prev_.assign(4 * m.n, T(0));
+}
+
+template <class T>
+inline void Xpbd<T>::step(const System<T>& sys, State<T>& s, double t, T h) {
+  const Model<T>& m = sys.model;
+  compute_external_forces(m, t, s.pos, s.vel, f_, sys.workspace, sys.threads);
+  predict(m, s, h, sys.threads);
+  // Every colour of every sweep in one parallel region (a barrier between colours).
+  const int colours = static_cast<int>(colour_start_.size()) - 1;
+  for_each_phase_block(
+      sweeps_ * colours,
+      [&](int phase) {
+        const auto c = static_cast<std::size_t>(phase % colours);
+        return colour_start_[c + 1] - colour_start_[c];
+      },
+      sys.threads,
+      [&](int phase, std::size_t b, std::size_t e) {
+        const std::size_t first = colour_start_[static_cast<std::size_t>(phase % colours)];
+        if (phase < colours) {
+          project<true>(first + b, first + e, h);
+        } else {
+          project<false>(first + b, first + e, h);
+        }
+      });
+  // x = the projected positions, v = (x - x_prev) / h.
+  const T inv_h = T(1) / h;
+  for_each_block(m.n, sys.threads, [&](std::size_t b, std::size_t e) {
+    const T* __restrict p = p_.data();
+    const T* __restrict prev = prev_.data();
+    for (int a = 0; a < 3; ++a) {
+      T* __restrict x = s.pos.axis(a).data();
+      T* __restrict v = s.vel.axis(a).data();
+#pragma omp simd
+      for (std::size_t i = b; i < e; ++i) {
+        x[i] = p[4 * i + a];
+        v[i] = (p[4 * i + a] - prev[4 * i + a]) * inv_h;
+      }
+    }
+  });
+}
+
+template <class T>
+inline void Xpbd<T>::predict(const Model<T>& m, const State<T>& s, T h, int threads) {
+  const T* __restrict inv_m = m.inv_mass.data();
+  const T drag = m.drag;
+  for_each_block(m.n, threads, [&](std::size_t b, std::size_t e) {
+    T* __restrict p = p_.data();
+    T* __restrict prev = prev_.data();
+    for (int a = 0; a < 3; ++a) {
+      const T* __restrict x = s.pos.axis(a).data();
+      const T* __restrict v = s.vel.axis(a).data();
+      const T* __restrict f = f_.axis(a).data();
+#pragma omp simd
+      for (std::size_t i = b; i < e; ++i) {
+        // f already holds -drag v; adding it back and dividing makes the drag implicit.
+        const T hw = h * inv_m[i];
+        const T v_new =
+            inv_m[i] > T(0) ? (v[i] + hw * (f[i] + drag * v[i])) / (T(1) + hw * drag) : T(0);
+        prev[4 * i + a] = x[i];
+        p[4 * i + a] = x[i] + h * v_new;
+      }
+    }
+#pragma omp simd
+    for (std::size_t i = b; i < e; ++i) p[4 * i + 3] = inv_m[i];
+  });
+}
+
+template <class T>
+template <bool First>
+inline void Xpbd<T>::project(std::size_t begin, std::size_t end, T h) {
+  T* __restrict p = p_.data();
+  const T* __restrict prev = prev_.data();
+  const std::int32_t* __restrict ia = a_.data();
+  const std::int32_t* __restrict ib = b_.data();
+  const T* __restrict ks = stiffness_.data();
+  const T* __restrict rest = rest_.data();
+  const T* __restrict cs = damping_.data();
+  T* __restrict lambda = lambda_.data();
+  const T h2 = h * h;
+  for (std::size_t s = begin; s < end; ++s) {
+    T* pa = p + 4 * static_cast<std::size_t>(ia[s]);
+    T* pb = p + 4 * static_cast<std::size_t>(ib[s]);
+    const T* qa = prev + 4 * static_cast<std::size_t>(ia[s]);
+    const T* qb = prev + 4 * static_cast<std::size_t>(ib[s]);
+    const T dx = pa[0] - pb[0], dy = pa[1] - pb[1], dz = pa[2] - pb[2];
+    const T len = std::sqrt(dx * dx + dy * dy + dz * dz);
+    // A zero-length spring has no direction: it gets no correction (n = 0 and C = 0).
+    const T inv_len = len > T(0) ? T(1) / len : T(0);
+    const T nx = dx * inv_len, ny = dy * inv_len, nz = dz * inv_len;
+    const T stretch = len > T(0) ? len - rest[s] : T(0);
+    // grad C . (x - x_prev): the relative displacement along the spring this substep.
+    const T moved = nx * ((pa[0] - qa[0]) - (pb[0] - qb[0])) +
+                    ny * ((pa[1] - qa[1]) - (pb[1] - qb[1])) +
+                    nz * ((pa[2] - qa[2]) - (pb[2] - qb[2]));
+    const T kh2 = ks[s] * h2, ch = cs[s] * h;
+    const T lam = First ? T(0) : lambda[s];
+    const T wa = pa[3], wb = pb[3];
+    const T dlambda = (-kh2 * stretch - lam - ch * moved) / ((kh2 + ch) * (wa + wb) + T(1));
+    lambda[s] = lam + dlambda;
+    const T da = wa * dlambda, db = wb * dlambda;
+    pa[0] += da * nx;
+    pa[1] += da * ny;
+    pa[2] += da * nz;
+    pb[0] -= db * nx;
+    pb[1] -= db * ny;
+    pb[2] -= db * nz;
+  }
+}
 
 }  // namespace
 

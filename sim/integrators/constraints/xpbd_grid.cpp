@@ -200,75 +200,11 @@ void run_row(const EndView<T>& r, int nu, int di, const T* __restrict in_class,
 template <class T>
 class XpbdGrid final : public Integrator<T> {
  public:
-  XpbdGrid(const Model<T>& m, const SolverSpec& spec)
-      : sweeps_(spec.iterations > 0 ? spec.iterations : 1),
-        tethers_(spec.tethers ? Tethers<T>(m) : Tethers<T>()),
-        coarse_(spec.coarse_stretch ? CoarseStretch<T>(m) : CoarseStretch<T>()) {
-    std::size_t lambda_size = 0;
-    int max_nu = 0;
-    for (const GridStencil<T>& g : m.grids) {
-      parts_.push_back(grid_part(g));
-      lambda_start_.push_back(lambda_size);
-      lambda_size += parts_.back().offsets.size() * static_cast<std::size_t>(g.nu) * g.nv;
-      max_nu = std::max(max_nu, g.nu);
-    }
-    for (int phase = 0; phase < 2; ++phase)
-      for (std::size_t c = 0; c < parts_.size(); ++c)
-        for (int b = phase; b < parts_[c].bands; b += 2)
-          bands_[phase].push_back({static_cast<int>(c), b});
-    if (sweeps_ > 1) lambda_.assign(lambda_size, T(0));
-    // One scratch block per band of the larger phase: bands of a phase run at the same time.
-    for (const GridPart<T>& p : parts_)
-      for (const StencilOffset<T>& o : p.offsets)
-        if (o.dj == 0) scratch_pad_ = std::max(scratch_pad_, static_cast<std::size_t>(o.di));
-    scratch_stride_ = scratch_pad_ + static_cast<std::size_t>(max_nu);
-    scratch_.assign(4 * scratch_stride_ * std::max(bands_[0].size(), bands_[1].size()), T(0));
-    prev_.resize(m.n);
-    if (wind_acts(m)) f_.resize(m.n);
-  }
+  XpbdGrid(const Model<T>& m, const SolverSpec& spec);
 
-  void step(const System<T>& sys, State<T>& s, double t, T h) override {
-    const Model<T>& m = sys.model;
-    if (!f_.x.empty()) compute_external_forces(m, t, s.pos, s.vel, f_, sys.workspace, sys.threads);
-    const int threads = sys.threads;
-    inv_mass_ = m.inv_mass.data();
-    // Pins do not move in the sweep (inverse mass 0), so their positions are final already.
-    if (!tethers_.empty()) tethers_.gather_pins(s.pos, m.inv_mass.data());
-    const long blocks = static_cast<long>(block_count(m.n));
-    run_team(threads, [&] {
-      for (int sweep = 0; sweep < sweeps_; ++sweep) {
-        for (int phase = 0; phase < 2; ++phase) {
-          const auto& list = bands_[phase];
-          const long count = static_cast<long>(list.size());
-#pragma omp for schedule(static)
-          for (long k = 0; k < count; ++k) {
-            const auto [c, b] = list[static_cast<std::size_t>(k)];
-            if (sweep == 0 && phase == 0) predict_rows(m, s, c, b, h);
-            const RowScratch<T> scratch{
-                scratch_.data() + 4 * static_cast<std::size_t>(k) * scratch_stride_, scratch_pad_,
-                scratch_stride_};
-            if (sweep == 0) {
-              sweep_band<true>(s, c, b, h, scratch);
-            } else {
-              sweep_band<false>(s, c, b, h, scratch);
-            }
-          }
-        }
-      }
-      // After the last phase's barrier the fine positions are final; the coarse levels correct
-      // them (their loops end in barriers).
-      if (!coarse_.empty()) coarse_.apply(s.pos, m.inv_mass.data());
-#pragma omp for schedule(static)
-      for (long k = 0; k < blocks; ++k) {
-        const std::size_t b = static_cast<std::size_t>(k) * kBlockSize;
-        finish(m, s, h, b, std::min(m.n, b + kBlockSize));
-      }
-    });
-  }
+  void step(const System<T>& sys, State<T>& s, double t, T h) override;
 
-  SolveStats last_stats() const override {
-    return {sweeps_, 0.0, true};
-  }
+  SolveStats last_stats() const override { return {sweeps_, 0.0, true}; }
 
  private:
   struct BandRef {
@@ -278,96 +214,16 @@ class XpbdGrid final : public Integrator<T> {
   // The prediction (xpbd.cpp: v += h f / m with drag implicit, x_prev = x, x += h v) of even
   // band b and the odd band after it: the rows its sweep touches (its own and `reach` rows of
   // the next) and the rest of that odd band, which no other even band touches.
-  void predict_rows(const Model<T>& m, State<T>& s, int c, int b, T h) {
-    const GridPart<T>& p = parts_[static_cast<std::size_t>(c)];
-    const int j1 = b + 1 < p.bands ? p.band_end(b + 1) : p.nv;
-    const std::size_t begin =
-        static_cast<std::size_t>(p.offset) + static_cast<std::size_t>(p.band_begin(b)) * p.nu;
-    const std::size_t end =
-        static_cast<std::size_t>(p.offset) + static_cast<std::size_t>(j1) * p.nu;
-    const T* __restrict inv_m = m.inv_mass.data();
-    const T* __restrict mass = m.mass.data();
-    const T drag = m.drag;
-    const bool wind = !f_.x.empty();
-    for (int a = 0; a < 3; ++a) {
-      T* __restrict x = s.pos.axis(a).data();
-      const T* __restrict v = s.vel.axis(a).data();
-      T* __restrict q = prev_.axis(a).data();
-      const T g = m.gravity[a];
-      const T* __restrict f = wind ? f_.axis(a).data() : nullptr;
-#pragma omp simd
-      for (std::size_t i = begin; i < end; ++i) {
-        // f holds -drag v (with the wind); adding it back and dividing makes the drag implicit.
-        const T push = wind ? f[i] + drag * v[i] : mass[i] * g;
-        const T hw = h * inv_m[i];
-        const T v_new = inv_m[i] > T(0) ? (v[i] + hw * push) / (T(1) + hw * drag) : T(0);
-        q[i] = x[i];
-        x[i] = x[i] + h * v_new;
-      }
-    }
-  }
+  void predict_rows(const Model<T>& m, State<T>& s, int c, int b, T h);
 
   // Every batch of band b of cloth c: offsets in stencil order, class 0 then class 1.
   template <bool First>
-  void sweep_band(State<T>& s, int c, int b, T h, const RowScratch<T>& scratch) {
-    const GridPart<T>& p = parts_[static_cast<std::size_t>(c)];
-    const int j0 = p.band_begin(b), j1 = p.band_end(b);
-    for (std::size_t o = 0; o < p.offsets.size(); ++o) {
-      const StencilOffset<T>& off = p.offsets[o];
-      const SpringConstants<T> k{off.stiffness * h * h, off.damping * h, off.rest};
-      T* lambda = lambda_.empty() ? nullptr
-                                  : lambda_.data() + lambda_start_[static_cast<std::size_t>(c)] +
-                                        o * static_cast<std::size_t>(p.nu) * p.nv;
-      for (int cls = 0; cls < 2; ++cls) {
-        for (int j = j0; j < j1; ++j) {
-          // dj > 0: the class is the row's; dj = 0: every row holds both classes.
-          if (off.dj > 0 && ((j / off.dj) % 2 != cls || j + off.dj >= p.nv)) continue;
-          const std::size_t row = static_cast<std::size_t>(j) * p.nu;
-          T* lam = lambda ? lambda + row : nullptr;
-          if (off.dj == 0) {
-            const EndView<T> r = view(s, p.offset + row);
-            const T* mask = p.in_class[2 * o + static_cast<std::size_t>(cls)].data();
-            if (lambda_.empty()) {
-              run_row<T, true, false>(r, p.nu, off.di, mask, lam, scratch, k);
-            } else {
-              run_row<T, First, true>(r, p.nu, off.di, mask, lam, scratch, k);
-            }
-            continue;
-          }
-          // Springs from column i to i + di exist for i in [max(0, -di), nu - max(0, di)).
-          const int lo = std::max(0, -off.di), hi = p.nu - std::max(0, off.di);
-          if (hi <= lo) continue;
-          const std::size_t a = p.offset + row + static_cast<std::size_t>(lo);
-          const std::size_t bb = a + static_cast<std::size_t>(off.dj) * p.nu +
-                                 static_cast<std::size_t>(static_cast<long>(off.di));
-          if (lam) lam += lo;
-          if (lambda_.empty()) {
-            run_pairs<T, true, false>(view(s, a), view(s, bb), lam, hi - lo, k);
-          } else {
-            run_pairs<T, First, true>(view(s, a), view(s, bb), lam, hi - lo, k);
-          }
-        }
-      }
-    }
-  }
+  void sweep_band(State<T>& s, int c, int b, T h, const RowScratch<T>& scratch);
 
-  EndView<T> view(State<T>& s, std::size_t i) const {
-    return {s.pos.x.data() + i, s.pos.y.data() + i, s.pos.z.data() + i, prev_.x.data() + i,
-            prev_.y.data() + i, prev_.z.data() + i, inv_mass_ + i};
-  }
+  EndView<T> view(State<T>& s, std::size_t i) const;
 
   // Vertices [b, e): the tethers (tethers.hpp), then v = (x - x_prev) / h.
-  void finish(const Model<T>& m, State<T>& s, T h, std::size_t b, std::size_t e) {
-    if (!tethers_.empty()) tethers_.project(s.pos, m.inv_mass.data(), b, e);
-    const T inv_h = T(1) / h;
-    for (int a = 0; a < 3; ++a) {
-      const T* __restrict x = s.pos.axis(a).data();
-      const T* __restrict q = prev_.axis(a).data();
-      T* __restrict v = s.vel.axis(a).data();
-#pragma omp simd
-      for (std::size_t i = b; i < e; ++i) v[i] = (x[i] - q[i]) * inv_h;
-    }
-  }
+  void finish(const Model<T>& m, State<T>& s, T h, std::size_t b, std::size_t e);
 
   int sweeps_;
   Tethers<T> tethers_;
@@ -381,6 +237,166 @@ class XpbdGrid final : public Integrator<T> {
   Vec3Array<T> prev_, f_;
   const T* inv_mass_ = nullptr;  // the model's, set by step()
 };
+
+template <class T>
+inline XpbdGrid<T>::XpbdGrid(const Model<T>& m, const SolverSpec& spec)
+    : sweeps_(spec.iterations > 0 ? spec.iterations : 1),
+      tethers_(spec.tethers ? Tethers<T>(m) : Tethers<T>()),
+      coarse_(spec.coarse_stretch ? CoarseStretch<T>(m) : CoarseStretch<T>()) {
+  std::size_t lambda_size = 0;
+  int max_nu = 0;
+  for (const GridStencil<T>& g : m.grids) {
+    parts_.push_back(grid_part(g));
+    lambda_start_.push_back(lambda_size);
+    lambda_size += parts_.back().offsets.size() * static_cast<std::size_t>(g.nu) * g.nv;
+    max_nu = std::max(max_nu, g.nu);
+  }
+  for (int phase = 0; phase < 2; ++phase)
+    for (std::size_t c = 0; c < parts_.size(); ++c)
+      for (int b = phase; b < parts_[c].bands; b += 2)
+        bands_[phase].push_back({static_cast<int>(c), b});
+  if (sweeps_ > 1) lambda_.assign(lambda_size, T(0));
+  // One scratch block per band of the larger phase: bands of a phase run at the same time.
+  for (const GridPart<T>& p : parts_)
+    for (const StencilOffset<T>& o : p.offsets)
+      if (o.dj == 0) scratch_pad_ = std::max(scratch_pad_, static_cast<std::size_t>(o.di));
+  scratch_stride_ = scratch_pad_ + static_cast<std::size_t>(max_nu);
+  scratch_.assign(4 * scratch_stride_ * std::max(bands_[0].size(), bands_[1].size()), T(0));
+  prev_.resize(m.n);
+  if (wind_acts(m)) f_.resize(m.n);
+}
+
+template <class T>
+inline void XpbdGrid<T>::step(const System<T>& sys, State<T>& s, double t, T h) {
+  const Model<T>& m = sys.model;
+  if (!f_.x.empty()) compute_external_forces(m, t, s.pos, s.vel, f_, sys.workspace, sys.threads);
+  const int threads = sys.threads;
+  inv_mass_ = m.inv_mass.data();
+  // Pins do not move in the sweep (inverse mass 0), so their positions are final already.
+  if (!tethers_.empty()) tethers_.gather_pins(s.pos, m.inv_mass.data());
+  const long blocks = static_cast<long>(block_count(m.n));
+  run_team(threads, [&] {
+    for (int sweep = 0; sweep < sweeps_; ++sweep) {
+      for (int phase = 0; phase < 2; ++phase) {
+        const auto& list = bands_[phase];
+        const long count = static_cast<long>(list.size());
+#pragma omp for schedule(static)
+        for (long k = 0; k < count; ++k) {
+          const auto [c, b] = list[static_cast<std::size_t>(k)];
+          if (sweep == 0 && phase == 0) predict_rows(m, s, c, b, h);
+          const RowScratch<T> scratch{
+              scratch_.data() + 4 * static_cast<std::size_t>(k) * scratch_stride_, scratch_pad_,
+              scratch_stride_};
+          if (sweep == 0) {
+            sweep_band<true>(s, c, b, h, scratch);
+          } else {
+            sweep_band<false>(s, c, b, h, scratch);
+          }
+        }
+      }
+    }
+    // After the last phase's barrier the fine positions are final; the coarse levels correct
+    // them (their loops end in barriers).
+    if (!coarse_.empty()) coarse_.apply(s.pos, m.inv_mass.data());
+#pragma omp for schedule(static)
+    for (long k = 0; k < blocks; ++k) {
+      const std::size_t b = static_cast<std::size_t>(k) * kBlockSize;
+      finish(m, s, h, b, std::min(m.n, b + kBlockSize));
+    }
+  });
+}
+
+template <class T>
+inline void XpbdGrid<T>::predict_rows(const Model<T>& m, State<T>& s, int c, int b, T h) {
+  const GridPart<T>& p = parts_[static_cast<std::size_t>(c)];
+  const int j1 = b + 1 < p.bands ? p.band_end(b + 1) : p.nv;
+  const std::size_t begin =
+      static_cast<std::size_t>(p.offset) + static_cast<std::size_t>(p.band_begin(b)) * p.nu;
+  const std::size_t end = static_cast<std::size_t>(p.offset) + static_cast<std::size_t>(j1) * p.nu;
+  const T* __restrict inv_m = m.inv_mass.data();
+  const T* __restrict mass = m.mass.data();
+  const T drag = m.drag;
+  const bool wind = !f_.x.empty();
+  for (int a = 0; a < 3; ++a) {
+    T* __restrict x = s.pos.axis(a).data();
+    const T* __restrict v = s.vel.axis(a).data();
+    T* __restrict q = prev_.axis(a).data();
+    const T g = m.gravity[a];
+    const T* __restrict f = wind ? f_.axis(a).data() : nullptr;
+#pragma omp simd
+    for (std::size_t i = begin; i < end; ++i) {
+      // f holds -drag v (with the wind); adding it back and dividing makes the drag implicit.
+      const T push = wind ? f[i] + drag * v[i] : mass[i] * g;
+      const T hw = h * inv_m[i];
+      const T v_new = inv_m[i] > T(0) ? (v[i] + hw * push) / (T(1) + hw * drag) : T(0);
+      q[i] = x[i];
+      x[i] = x[i] + h * v_new;
+    }
+  }
+}
+
+template <class T>
+template <bool First>
+inline void XpbdGrid<T>::sweep_band(State<T>& s, int c, int b, T h, const RowScratch<T>& scratch) {
+  const GridPart<T>& p = parts_[static_cast<std::size_t>(c)];
+  const int j0 = p.band_begin(b), j1 = p.band_end(b);
+  for (std::size_t o = 0; o < p.offsets.size(); ++o) {
+    const StencilOffset<T>& off = p.offsets[o];
+    const SpringConstants<T> k{off.stiffness * h * h, off.damping * h, off.rest};
+    T* lambda = lambda_.empty() ? nullptr
+                                : lambda_.data() + lambda_start_[static_cast<std::size_t>(c)] +
+                                      o * static_cast<std::size_t>(p.nu) * p.nv;
+    for (int cls = 0; cls < 2; ++cls) {
+      for (int j = j0; j < j1; ++j) {
+        // dj > 0: the class is the row's; dj = 0: every row holds both classes.
+        if (off.dj > 0 && ((j / off.dj) % 2 != cls || j + off.dj >= p.nv)) continue;
+        const std::size_t row = static_cast<std::size_t>(j) * p.nu;
+        T* lam = lambda ? lambda + row : nullptr;
+        if (off.dj == 0) {
+          const EndView<T> r = view(s, p.offset + row);
+          const T* mask = p.in_class[2 * o + static_cast<std::size_t>(cls)].data();
+          if (lambda_.empty()) {
+            run_row<T, true, false>(r, p.nu, off.di, mask, lam, scratch, k);
+          } else {
+            run_row<T, First, true>(r, p.nu, off.di, mask, lam, scratch, k);
+          }
+          continue;
+        }
+        // Springs from column i to i + di exist for i in [max(0, -di), nu - max(0, di)).
+        const int lo = std::max(0, -off.di), hi = p.nu - std::max(0, off.di);
+        if (hi <= lo) continue;
+        const std::size_t a = p.offset + row + static_cast<std::size_t>(lo);
+        const std::size_t bb = a + static_cast<std::size_t>(off.dj) * p.nu +
+                               static_cast<std::size_t>(static_cast<long>(off.di));
+        if (lam) lam += lo;
+        if (lambda_.empty()) {
+          run_pairs<T, true, false>(view(s, a), view(s, bb), lam, hi - lo, k);
+        } else {
+          run_pairs<T, First, true>(view(s, a), view(s, bb), lam, hi - lo, k);
+        }
+      }
+    }
+  }
+}
+
+template <class T>
+inline EndView<T> XpbdGrid<T>::view(State<T>& s, std::size_t i) const {
+  return {s.pos.x.data() + i, s.pos.y.data() + i, s.pos.z.data() + i, prev_.x.data() + i,
+          prev_.y.data() + i, prev_.z.data() + i, inv_mass_ + i};
+}
+
+template <class T>
+inline void XpbdGrid<T>::finish(const Model<T>& m, State<T>& s, T h, std::size_t b, std::size_t e) {
+  if (!tethers_.empty()) tethers_.project(s.pos, m.inv_mass.data(), b, e);
+  const T inv_h = T(1) / h;
+  for (int a = 0; a < 3; ++a) {
+    const T* __restrict x = s.pos.axis(a).data();
+    const T* __restrict q = prev_.axis(a).data();
+    T* __restrict v = s.vel.axis(a).data();
+#pragma omp simd
+    for (std::size_t i = b; i < e; ++i) v[i] = (x[i] - q[i]) * inv_h;
+  }
+}
 
 }  // namespace
 

@@ -76,69 +76,13 @@ struct Planes {
 template <class T>
 class VbdGrid final : public Integrator<T> {
  public:
-  VbdGrid(const Model<T>& m, const SolverSpec& spec)
-      : iterations_(spec.iterations > 0 ? spec.iterations : kVbdDefaultIterations),
-        chebyshev_(chebyshev_of(spec.chebyshev_rho, kVbdChebyshevRho, kVbdChebyshevDelay)),
-        drag_(m.drag) {
-    std::size_t size = 0;
-    for (std::size_t c = 0; c < m.grids.size(); ++c) {
-      parts_.push_back(grid_part(m.grids[c], size));
-      const GridPart<T>& p = parts_.back();
-      size += static_cast<std::size_t>(p.nv) * 3 * static_cast<std::size_t>(p.stride);
-      for (int j = 0; j < p.nv; ++j) {
-        rows_.push_back({static_cast<int>(c), j});
-        for (int ci = 0; ci < 3; ++ci) colour_rows_[3 * (j % 3) + ci].push_back(rows_.back());
-      }
-    }
-    for (Planes<T>* planes : {&x_, &start_, &target_, &older_, &previous_}) planes->assign(size);
-    mass_.assign(size, T(0));
-    free_.assign(size, T(0));
-    for (const GridPart<T>& p : parts_)
-      for (int j = 0; j < p.nv; ++j)
-        for (int i = 0; i < p.nu; ++i) {
-          const std::size_t g = static_cast<std::size_t>(p.offset + j * p.nu + i);
-          mass_[p.entry(j, i % 3, i / 3)] = m.mass[g];
-          free_[p.entry(j, i % 3, i / 3)] = m.inv_mass[g] != T(0) ? T(1) : T(0);
-        }
-    f_.resize(m.n);
-    last_vel_.resize(m.n);
-  }
+  VbdGrid(const Model<T>& m, const SolverSpec& spec);
 
-  void step(const System<T>& sys, State<T>& s, double t, T h) override {
-    const Model<T>& m = sys.model;
-    compute_external_forces(m, t, s.pos, s.vel, f_, sys.workspace, sys.threads);
-    const bool warm = warm_;
-    const long rows = static_cast<long>(rows_.size());
-    run_team(sys.threads, [&] {
-#pragma omp for schedule(static)
-      for (long r = 0; r < rows; ++r)
-        predict_row(m, s, rows_[static_cast<std::size_t>(r)], h, warm);
-      T omega = 1;
-      for (int it = 0; it < iterations_; ++it) {
-        for (int c = 0; c < kColours; ++c) {
-          const std::vector<Row>& items = colour_rows_[static_cast<std::size_t>(c)];
-#pragma omp for schedule(static)
-          for (long r = 0; r < static_cast<long>(items.size()); ++r)
-            descend_row(items[static_cast<std::size_t>(r)], c % 3, h);
-        }
-        omega = static_cast<T>(chebyshev_weight(chebyshev_, it, double(omega)));
-#pragma omp for schedule(static)
-        for (long r = 0; r < rows; ++r)
-          accelerate_row(rows_[static_cast<std::size_t>(r)], omega, it);
-      }
-#pragma omp for schedule(static)
-      for (long r = 0; r < rows; ++r) finish_row(m, s, rows_[static_cast<std::size_t>(r)], h);
-    });
-    warm_ = true;
-  }
+  void step(const System<T>& sys, State<T>& s, double t, T h) override;
 
-  void invalidate() override {
-    warm_ = false;
-  }
+  void invalidate() override { warm_ = false; }
   void state_corrected() override {}  // the last velocity still predicts the next acceleration
-  SolveStats last_stats() const override {
-    return {iterations_, 0.0, true};
-  }
+  SolveStats last_stats() const override { return {iterations_, 0.0, true}; }
 
  private:
   struct Row {
@@ -146,40 +90,11 @@ class VbdGrid final : public Integrator<T> {
   };
 
   // x_n, the inertial target and the initial guess of row r's vertices (vbd_start()).
-  void predict_row(const Model<T>& m, const State<T>& s, Row r, T h, bool warm) {
-    const GridPart<T>& p = parts_[static_cast<std::size_t>(r.part)];
-    for (int i = 0; i < p.nu; ++i) {
-      const std::size_t g = static_cast<std::size_t>(p.offset + r.j * p.nu + i);
-      const std::size_t q = p.entry(r.j, i % 3, i / 3);
-      const VbdStart<T> v = vbd_start(m, g, s, f_, last_vel_, h, warm);
-      for (int a = 0; a < 3; ++a) {
-        start_.axis[a][q] = v.start[a];
-        target_.axis[a][q] = v.target[a];
-        x_.axis[a][q] = previous_.axis[a][q] = v.guess[a];
-      }
-    }
-  }
+  void predict_row(const Model<T>& m, const State<T>& s, Row r, T h, bool warm);
 
   // One Newton step for each vertex of sub-row c of row r (vbd.cpp's descend()), a chunk at a
   // time: the block's inertia, then its springs offset by offset, then the step.
-  void descend_row(Row r, int c, T h) {
-    const GridPart<T>& p = parts_[static_cast<std::size_t>(r.part)];
-    const int count = p.count(c);
-    for (int m0 = 0; m0 < count; m0 += kChunk) {
-      Chunk k;
-      const std::size_t self = p.entry(r.j, c, m0);
-      begin_chunk(self, h, k);
-      for (const auto& e : p.springs) {
-        const int jn = r.j + e.dj;
-        if (jn < 0 || jn >= p.nv) continue;
-        const int cn = (c + e.di + 3) % 3;      // c + di lies in [-2, 4]
-        const int shift = (c + e.di - cn) / 3;  // floor((c + di) / 3): -1, 0 or 1
-        add_springs(self, p.entry(jn, cn, m0 + shift), p.valid_row(e.di, c) + m0,
-                    h * h * e.stiffness, h * e.damping, e.rest_length, k);
-      }
-      end_chunk(self, k);
-    }
-  }
+  void descend_row(Row r, int c, T h);
 
   // A chunk's blocks (g, H) and its vertices' displacements this step.
   struct Chunk {
@@ -197,104 +112,21 @@ class VbdGrid final : public Integrator<T> {
   };
 
   // The inertial term: g = w (x - t), H = w I, with w = m + h drag.
-  void begin_chunk(std::size_t self, T h, Chunk& k) const {
-    const T* __restrict x = x_.axis[0].data() + self;
-    const T* __restrict y = x_.axis[1].data() + self;
-    const T* __restrict z = x_.axis[2].data() + self;
-    const T* __restrict tx = target_.axis[0].data() + self;
-    const T* __restrict ty = target_.axis[1].data() + self;
-    const T* __restrict tz = target_.axis[2].data() + self;
-    const T* __restrict sx = start_.axis[0].data() + self;
-    const T* __restrict sy = start_.axis[1].data() + self;
-    const T* __restrict sz = start_.axis[2].data() + self;
-    const T* __restrict mass = mass_.data() + self;
-    const T drag_h = h * drag_;
-#pragma omp simd
-    for (int l = 0; l < kChunk; ++l) {
-      const T w = mass[l] + drag_h;
-      k.store(l, vbd_inertia(w, x[l] - tx[l], y[l] - ty[l], z[l] - tz[l]));
-      k.dx[l] = x[l] - sx[l], k.dy[l] = y[l] - sy[l], k.dz[l] = z[l] - sz[l];
-    }
-  }
+  void begin_chunk(std::size_t self, T h, Chunk& k) const;
 
   // One offset's springs of a chunk: vertex self + l to vertex other + l, where valid[l] != 0.
   void add_springs(std::size_t self, std::size_t other, const T* __restrict valid, T kh2, T ch,
-                   T rest, Chunk& k) const {
-    const T* __restrict x = x_.axis[0].data();
-    const T* __restrict y = x_.axis[1].data();
-    const T* __restrict z = x_.axis[2].data();
-    const T* __restrict sx = start_.axis[0].data() + other;
-    const T* __restrict sy = start_.axis[1].data() + other;
-    const T* __restrict sz = start_.axis[2].data() + other;
-#pragma omp simd
-    for (int l = 0; l < kChunk; ++l) {
-      const std::size_t a = self + static_cast<std::size_t>(l),
-                        b = other + static_cast<std::size_t>(l);
-      VbdBlock<T> blk = k.block(l);
-      const T on = valid[l];
-      vbd_add_spring(x[b] - x[a], y[b] - y[a], z[b] - z[a], k.dx[l] - (x[b] - sx[l]),
-                     k.dy[l] - (y[b] - sy[l]), k.dz[l] - (z[b] - sz[l]), on * kh2, on * ch, rest,
-                     blk);
-      k.store(l, blk);
-    }
-  }
+                   T rest, Chunk& k) const;
 
   // x -= H^-1 g for the chunk's free vertices.
-  void end_chunk(std::size_t self, const Chunk& k) {
-    T* __restrict x = x_.axis[0].data() + self;
-    T* __restrict y = x_.axis[1].data() + self;
-    T* __restrict z = x_.axis[2].data() + self;
-    const T* __restrict free = free_.data() + self;
-#pragma omp simd
-    for (int l = 0; l < kChunk; ++l) {
-      T sx, sy, sz;
-      vbd_newton_step(k.block(l), sx, sy, sz);  // zero where H is not positive definite
-      const bool move = free[l] != T(0);
-      x[l] = move ? x[l] - sx : x[l];
-      y[l] = move ? y[l] - sy : y[l];
-      z[l] = move ? z[l] - sz : z[l];
-    }
-  }
+  void end_chunk(std::size_t self, const Chunk& k);
 
   // vbd.cpp's accelerate() over row r's three sub-rows: pinned vertices and the padding hold
   // x = x^(k-2), so the extrapolation leaves them.
-  void accelerate_row(Row r, T omega, int it) {
-    const GridPart<T>& p = parts_[static_cast<std::size_t>(r.part)];
-    const std::size_t begin = p.entry(r.j, 0, -kChunk);
-    const std::size_t n = 3 * static_cast<std::size_t>(p.stride);
-    for (int a = 0; a < 3; ++a) {
-      T* __restrict x = x_.axis[a].data() + begin;
-      T* __restrict older = older_.axis[a].data() + begin;
-      T* __restrict previous = previous_.axis[a].data() + begin;
-#pragma omp simd
-      for (std::size_t i = 0; i < n; ++i) {
-        if (it >= 1) x[i] = omega * (x[i] - older[i]) + older[i];
-        older[i] = previous[i];
-        previous[i] = x[i];
-      }
-    }
-  }
+  void accelerate_row(Row r, T omega, int it);
 
   // x_(n+1) = x, v_(n+1) = (x - x_n) / h for row r's free vertices; remembers v_n.
-  void finish_row(const Model<T>& m, State<T>& s, Row r, T h) {
-    const GridPart<T>& p = parts_[static_cast<std::size_t>(r.part)];
-    const T inv_h = T(1) / h;
-    for (int a = 0; a < 3; ++a) {
-      T* __restrict pos = s.pos.axis(a).data();
-      T* __restrict vel = s.vel.axis(a).data();
-      T* __restrict last = last_vel_.axis(a).data();
-      const T* __restrict x = x_.axis[a].data();
-      const T* __restrict x0 = start_.axis[a].data();
-      for (int i = 0; i < p.nu; ++i) {
-        const std::size_t g = static_cast<std::size_t>(p.offset + r.j * p.nu + i);
-        const std::size_t q = p.entry(r.j, i % 3, i / 3);
-        last[g] = vel[g];
-        if (m.inv_mass[g] == T(0)) continue;
-        vel[g] = (x[q] - x0[q]) * inv_h;
-        pos[g] = x[q];
-      }
-    }
-  }
+  void finish_row(const Model<T>& m, State<T>& s, Row r, T h);
 
   int iterations_;
   Chebyshev chebyshev_;
@@ -307,6 +139,196 @@ class VbdGrid final : public Integrator<T> {
   AlignedVector<T> mass_, free_;                        // sub-row layout; free_: 1 or 0
   Vec3Array<T> f_, last_vel_;                           // the model's vertex order
 };
+
+template <class T>
+inline VbdGrid<T>::VbdGrid(const Model<T>& m, const SolverSpec& spec)
+    : iterations_(spec.iterations > 0 ? spec.iterations : kVbdDefaultIterations),
+      chebyshev_(chebyshev_of(spec.chebyshev_rho, kVbdChebyshevRho, kVbdChebyshevDelay)),
+      drag_(m.drag) {
+  std::size_t size = 0;
+  for (std::size_t c = 0; c < m.grids.size(); ++c) {
+    parts_.push_back(grid_part(m.grids[c], size));
+    const GridPart<T>& p = parts_.back();
+    size += static_cast<std::size_t>(p.nv) * 3 * static_cast<std::size_t>(p.stride);
+    for (int j = 0; j < p.nv; ++j) {
+      rows_.push_back({static_cast<int>(c), j});
+      for (int ci = 0; ci < 3; ++ci) colour_rows_[3 * (j % 3) + ci].push_back(rows_.back());
+    }
+  }
+  for (Planes<T>* planes : {&x_, &start_, &target_, &older_, &previous_}) planes->assign(size);
+  mass_.assign(size, T(0));
+  free_.assign(size, T(0));
+  for (const GridPart<T>& p : parts_)
+    for (int j = 0; j < p.nv; ++j)
+      for (int i = 0; i < p.nu; ++i) {
+        const std::size_t g = static_cast<std::size_t>(p.offset + j * p.nu + i);
+        mass_[p.entry(j, i % 3, i / 3)] = m.mass[g];
+        free_[p.entry(j, i % 3, i / 3)] = m.inv_mass[g] != T(0) ? T(1) : T(0);
+      }
+  f_.resize(m.n);
+  last_vel_.resize(m.n);
+}
+
+template <class T>
+inline void VbdGrid<T>::step(const System<T>& sys, State<T>& s, double t, T h) {
+  const Model<T>& m = sys.model;
+  compute_external_forces(m, t, s.pos, s.vel, f_, sys.workspace, sys.threads);
+  const bool warm = warm_;
+  const long rows = static_cast<long>(rows_.size());
+  run_team(sys.threads, [&] {
+#pragma omp for schedule(static)
+    for (long r = 0; r < rows; ++r) predict_row(m, s, rows_[static_cast<std::size_t>(r)], h, warm);
+    T omega = 1;
+    for (int it = 0; it < iterations_; ++it) {
+      for (int c = 0; c < kColours; ++c) {
+        const std::vector<Row>& items = colour_rows_[static_cast<std::size_t>(c)];
+#pragma omp for schedule(static)
+        for (long r = 0; r < static_cast<long>(items.size()); ++r)
+          descend_row(items[static_cast<std::size_t>(r)], c % 3, h);
+      }
+      omega = static_cast<T>(chebyshev_weight(chebyshev_, it, double(omega)));
+#pragma omp for schedule(static)
+      for (long r = 0; r < rows; ++r) accelerate_row(rows_[static_cast<std::size_t>(r)], omega, it);
+    }
+#pragma omp for schedule(static)
+    for (long r = 0; r < rows; ++r) finish_row(m, s, rows_[static_cast<std::size_t>(r)], h);
+  });
+  warm_ = true;
+}
+
+template <class T>
+inline void VbdGrid<T>::predict_row(const Model<T>& m, const State<T>& s, Row r, T h, bool warm) {
+  const GridPart<T>& p = parts_[static_cast<std::size_t>(r.part)];
+  for (int i = 0; i < p.nu; ++i) {
+    const std::size_t g = static_cast<std::size_t>(p.offset + r.j * p.nu + i);
+    const std::size_t q = p.entry(r.j, i % 3, i / 3);
+    const VbdStart<T> v = vbd_start(m, g, s, f_, last_vel_, h, warm);
+    for (int a = 0; a < 3; ++a) {
+      start_.axis[a][q] = v.start[a];
+      target_.axis[a][q] = v.target[a];
+      x_.axis[a][q] = previous_.axis[a][q] = v.guess[a];
+    }
+  }
+}
+
+template <class T>
+inline void VbdGrid<T>::descend_row(Row r, int c, T h) {
+  const GridPart<T>& p = parts_[static_cast<std::size_t>(r.part)];
+  const int count = p.count(c);
+  for (int m0 = 0; m0 < count; m0 += kChunk) {
+    Chunk k;
+    const std::size_t self = p.entry(r.j, c, m0);
+    begin_chunk(self, h, k);
+    for (const auto& e : p.springs) {
+      const int jn = r.j + e.dj;
+      if (jn < 0 || jn >= p.nv) continue;
+      const int cn = (c + e.di + 3) % 3;      // c + di lies in [-2, 4]
+      const int shift = (c + e.di - cn) / 3;  // floor((c + di) / 3): -1, 0 or 1
+      add_springs(self, p.entry(jn, cn, m0 + shift), p.valid_row(e.di, c) + m0, h * h * e.stiffness,
+                  h * e.damping, e.rest_length, k);
+    }
+    end_chunk(self, k);
+  }
+}
+
+template <class T>
+inline void VbdGrid<T>::begin_chunk(std::size_t self, T h, Chunk& k) const {
+  const T* __restrict x = x_.axis[0].data() + self;
+  const T* __restrict y = x_.axis[1].data() + self;
+  const T* __restrict z = x_.axis[2].data() + self;
+  const T* __restrict tx = target_.axis[0].data() + self;
+  const T* __restrict ty = target_.axis[1].data() + self;
+  const T* __restrict tz = target_.axis[2].data() + self;
+  const T* __restrict sx = start_.axis[0].data() + self;
+  const T* __restrict sy = start_.axis[1].data() + self;
+  const T* __restrict sz = start_.axis[2].data() + self;
+  const T* __restrict mass = mass_.data() + self;
+  const T drag_h = h * drag_;
+#pragma omp simd
+  for (int l = 0; l < kChunk; ++l) {
+    const T w = mass[l] + drag_h;
+    k.store(l, vbd_inertia(w, x[l] - tx[l], y[l] - ty[l], z[l] - tz[l]));
+    k.dx[l] = x[l] - sx[l], k.dy[l] = y[l] - sy[l], k.dz[l] = z[l] - sz[l];
+  }
+}
+
+template <class T>
+inline void VbdGrid<T>::add_springs(std::size_t self, std::size_t other, const T* __restrict valid,
+                                    T kh2, T ch, T rest, Chunk& k) const {
+  const T* __restrict x = x_.axis[0].data();
+  const T* __restrict y = x_.axis[1].data();
+  const T* __restrict z = x_.axis[2].data();
+  const T* __restrict sx = start_.axis[0].data() + other;
+  const T* __restrict sy = start_.axis[1].data() + other;
+  const T* __restrict sz = start_.axis[2].data() + other;
+#pragma omp simd
+  for (int l = 0; l < kChunk; ++l) {
+    const std::size_t a = self + static_cast<std::size_t>(l),
+                      b = other + static_cast<std::size_t>(l);
+    VbdBlock<T> blk = k.block(l);
+    const T on = valid[l];
+    vbd_add_spring(x[b] - x[a], y[b] - y[a], z[b] - z[a], k.dx[l] - (x[b] - sx[l]),
+                   k.dy[l] - (y[b] - sy[l]), k.dz[l] - (z[b] - sz[l]), on * kh2, on * ch, rest,
+                   blk);
+    k.store(l, blk);
+  }
+}
+
+template <class T>
+inline void VbdGrid<T>::end_chunk(std::size_t self, const Chunk& k) {
+  T* __restrict x = x_.axis[0].data() + self;
+  T* __restrict y = x_.axis[1].data() + self;
+  T* __restrict z = x_.axis[2].data() + self;
+  const T* __restrict free = free_.data() + self;
+#pragma omp simd
+  for (int l = 0; l < kChunk; ++l) {
+    T sx, sy, sz;
+    vbd_newton_step(k.block(l), sx, sy, sz);  // zero where H is not positive definite
+    const bool move = free[l] != T(0);
+    x[l] = move ? x[l] - sx : x[l];
+    y[l] = move ? y[l] - sy : y[l];
+    z[l] = move ? z[l] - sz : z[l];
+  }
+}
+
+template <class T>
+inline void VbdGrid<T>::accelerate_row(Row r, T omega, int it) {
+  const GridPart<T>& p = parts_[static_cast<std::size_t>(r.part)];
+  const std::size_t begin = p.entry(r.j, 0, -kChunk);
+  const std::size_t n = 3 * static_cast<std::size_t>(p.stride);
+  for (int a = 0; a < 3; ++a) {
+    T* __restrict x = x_.axis[a].data() + begin;
+    T* __restrict older = older_.axis[a].data() + begin;
+    T* __restrict previous = previous_.axis[a].data() + begin;
+#pragma omp simd
+    for (std::size_t i = 0; i < n; ++i) {
+      if (it >= 1) x[i] = omega * (x[i] - older[i]) + older[i];
+      older[i] = previous[i];
+      previous[i] = x[i];
+    }
+  }
+}
+
+template <class T>
+inline void VbdGrid<T>::finish_row(const Model<T>& m, State<T>& s, Row r, T h) {
+  const GridPart<T>& p = parts_[static_cast<std::size_t>(r.part)];
+  const T inv_h = T(1) / h;
+  for (int a = 0; a < 3; ++a) {
+    T* __restrict pos = s.pos.axis(a).data();
+    T* __restrict vel = s.vel.axis(a).data();
+    T* __restrict last = last_vel_.axis(a).data();
+    const T* __restrict x = x_.axis[a].data();
+    const T* __restrict x0 = start_.axis[a].data();
+    for (int i = 0; i < p.nu; ++i) {
+      const std::size_t g = static_cast<std::size_t>(p.offset + r.j * p.nu + i);
+      const std::size_t q = p.entry(r.j, i % 3, i / 3);
+      last[g] = vel[g];
+      if (m.inv_mass[g] == T(0)) continue;
+      vel[g] = (x[q] - x0[q]) * inv_h;
+      pos[g] = x[q];
+    }
+  }
+}
 
 }  // namespace
 
