@@ -56,19 +56,6 @@ constexpr std::size_t kBlockSums = 15;
 
 using V3 = Eigen::Vector3d;
 
-// What the first tree's traversal skips: its own flat patches within themselves, and pairs of
-// nodes inside one flat patch of the second tree.
-template <class T>
-struct Cull {
-  const FlatPatches<T>& flat;
-  const std::vector<std::int32_t>& seam_patch;
-  bool self(int n) const { return flat.skipped(n); }
-  bool pair(int a, int b) const {
-    const std::int32_t p = seam_patch[std::size_t(a)];
-    return p >= 0 && p == seam_patch[std::size_t(b)];
-  }
-};
-
 template <class T>
 std::array<V3, 4> gather(const Vec3Array<T>& a, const std::array<std::int32_t, 4>& v) {
   return {load3(a, std::size_t(v[0])), load3(a, std::size_t(v[1])), load3(a, std::size_t(v[2])),
@@ -399,7 +386,18 @@ bool TriangleContact<T>::gather_pairs(int threads) {
   // found after about the bound's worth of work.
   const std::size_t bound = std::min(kMaxPairsPerTriangle * boxes.size(), kMaxPairs);
   const long count = long(tasks_.size());
-  const Cull<T> cull{flat_, seam_patch_};
+  // What the first tree's traversal skips: its own flat patches within themselves, and pairs of
+  // nodes inside one flat patch of the second tree.
+  struct Cull {
+    const FlatPatches<T>& flat;
+    const std::vector<std::int32_t>& seam_patch;
+    bool self(int n) const { return flat.skipped(n); }
+    bool pair(int a, int b) const {
+      const std::int32_t p = seam_patch[std::size_t(a)];
+      return p >= 0 && p == seam_patch[std::size_t(b)];
+    }
+  };
+  const Cull cull{flat_, seam_patch_};
   std::atomic<std::size_t> all_leaves{0}, all_pairs{0};
   std::atomic<bool> tangle{false};
   run_team(threads, [&] {
