@@ -114,11 +114,12 @@ class TriangleContact {
   void flag_pairs(int threads, Test&& test);
   void return_vertex(State<T>& s, std::size_t i) const;
   bool return_vertices(const Model<T>& m, State<T>& s, const Pair& p, int round);
-  int fail_safe(const Model<T>& m, State<T>& s, int threads);
+  // near_only: only the pairs the proximity pass left flagged (respond() says when that holds).
+  int fail_safe(const Model<T>& m, State<T>& s, int threads, bool near_only);
   // The fail-safe, and again while its returns bent a flat patch; false on a tangle.
-  bool guarantee(const Model<T>& m, State<T>& s, int threads);
-  // Velocities take the pushes' position change over h.
-  void update_velocities(State<T>& s, double h);
+  bool guarantee(const Model<T>& m, State<T>& s, int threads, bool near_only);
+  // Velocities take the pushes' position change over h; returns the longest change.
+  double update_velocities(State<T>& s, double h);
 
   double thickness_ = 0.0;
   double eta_ = 0.0;
