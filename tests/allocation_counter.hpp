@@ -1,7 +1,7 @@
 // Counts every global allocation of a test program: replacements of the global operator new and
 // delete (C++ [replacement.functions]). Include from exactly one source file of a test
-// executable (each tests/*_test.cpp is its own program); read g_allocations around the code
-// that must not allocate.
+// program, one listed in CLOTHLAB_STANDALONE_TESTS (tests/CMakeLists.txt), so that it is a
+// program of its own; read g_allocations around the code that must not allocate.
 #pragma once
 
 #include <atomic>
