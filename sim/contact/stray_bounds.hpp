@@ -57,15 +57,30 @@ struct StrayBounds {
   float moved_by(std::int32_t v) const {
     return std::max(dev0[std::size_t(v)], dev1[std::size_t(v)]);
   }
-  // Whether the pair is certainly more than d apart over the whole substep.
-  bool clear_by(const ContactPair& p, double d) const {
+  // A lower bound on the pair's distance over the whole substep.
+  double margin(const ContactPair& p) const {
     const float first =
         p.edge_edge ? std::max(moved_by(p.v[0]), moved_by(p.v[1])) : moved_by(p.v[0]);
     const float other =
         std::max(moved_by(p.v[2]),
                  p.edge_edge ? moved_by(p.v[3]) : std::max(moved_by(p.v[1]), moved_by(p.v[3])));
-    return shrink * double(p.dist) - double(first) - double(other) > d;
+    return shrink * double(p.dist) - double(first) - double(other);
   }
+  // Whether the pair is certainly more than d apart over the whole substep.
+  bool clear_by(const ContactPair& p, double d) const { return margin(p) > d; }
+};
+
+// The proximity pass's margins at one moment S, so that later substeps can skip the pairs still
+// clear by them (triangle_contact.cpp, respond): a pair's clear_by quantity
+// shrink dist - first - other can fall after S by no more than (shrink_S - shrink) dist plus the
+// growth of its two sides' strays, each at most the largest growth of any vertex's
+// moved_by() since S.
+struct PairMargins {
+  std::vector<float>
+      slack;  // per pair: its clear_by quantity at S less the thickness, rounded down
+  std::vector<float> moved;  // per vertex: moved_by() at S
+  double shrink = 1.0;       // StrayBounds::shrink at S
+  bool valid = false;        // false after a collection (new pairs) until the next full pass
 };
 
 }  // namespace clothlab

@@ -100,6 +100,10 @@ class TriangleContact {
   void set_allowances(double growth, int threads);
   bool gather_pairs(int threads);
   bool still_tangled(const State<T>& s, int threads);
+  // The proximity pass: flag_ kClear, kPush or kNear for every pair (triangle_contact.cpp).
+  void flag_proximity(const State<T>& s, int threads);
+  // The largest growth of any vertex's moved_by() since margins_ were taken.
+  double growth_since_margins(int threads);
   // The substep's end against xc: stray1_, dev1_, excess1_ and the shrink factor.
   void measure_stray1(const State<T>& s, int threads);
   FloatBox point_box(int v) const;
@@ -137,6 +141,7 @@ class TriangleContact {
   Vec3Array<T> x_step_;                   // what the integrator made, of the vertices pushed
   Vec3Array<T> xc_;                       // where the pairs were collected
   StrayBounds strays_;                    // how far the vertices moved since
+  PairMargins margins_;                   // the proximity pass's, at its last full pass
   std::vector<FloatBox> triangle_box_, edge_box_;  // around their vertices at xc
   std::vector<TriangleBvh::Task> tasks_;           // the broad phase's pieces for threads
   std::vector<std::vector<Pair>> task_pairs_;      // per piece: the pairs it found
