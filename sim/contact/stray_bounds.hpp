@@ -21,6 +21,12 @@ struct ContactPair {
   float dist = 0.0f;  // m: at the collection positions xc (rounded down)
 };
 
+// A pair's answer to the last parallel test of triangle contact: clear by the thickness over the
+// substep; hit (needs a push, or in the fail-safe's first round, meets); or near, neither. An
+// enumeration rather than a byte: a store through a char type may alias anything, and made the
+// test's loop reload every array it reads after each flag it wrote.
+enum class PairFlag : std::uint8_t { clear, hit, near };
+
 // x is near to + rotation (xc - from).
 struct RigidFit {
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
@@ -80,6 +86,7 @@ struct PairMargins {
       slack;  // per pair: its clear_by quantity at S less the thickness, rounded down
   std::vector<float> moved;  // per vertex: moved_by() at S
   double shrink = 1.0;       // StrayBounds::shrink at S
+  double max_dist = 0.0;     // m: the longest ContactPair::dist of the list
   bool valid = false;        // false after a collection (new pairs) until the next full pass
 };
 

@@ -51,9 +51,6 @@ constexpr int kMaxFlatRetries = 4;
 // large_sheet 157 choosing at every collection, 105 at 2 and at 4, 127 at 16 (patches kept too
 // long stay small); the stack on the ball 22.9, 18.4, 20.8, 19.9.
 constexpr int kChooseEvery = 4;
-// flag_ after the proximity pass: the pair is clear by the thickness over the substep, needs a
-// push, or neither.
-constexpr std::uint8_t kClear = 0, kPush = 1, kNear = 2;
 // The proximity pass tests every pair again once 2 growth > kMarginRefresh thickness, the growth
 // of the vertices' strays since it last did (PairMargins). On the stack on the ball 0.25 skipped
 // 17 500 of its 42 000 pairs a substep, 1.0 skipped 19 500 and 3.0 14 600 (6 700 were near).
@@ -444,6 +441,8 @@ bool TriangleContact<T>::gather_pairs(int threads) {
   flag_.resize(pairs_.size());
   margins_.slack.resize(pairs_.size());
   margins_.valid = false;
+  margins_.max_dist = 0.0;
+  for (const Pair& p : pairs_) margins_.max_dist = std::max(margins_.max_dist, double(p.dist));
   return true;
 }
 
@@ -611,7 +610,7 @@ template <class Test>
 void TriangleContact<T>::flag_pairs(int threads, Test&& test) {
   for_each_block(pairs_.size(), threads_for(pairs_.size(), threads),
                  [&](std::size_t b, std::size_t e) {
-                   for (std::size_t k = b; k < e; ++k) flag_[k] = std::uint8_t(test(k, pairs_[k]));
+                   for (std::size_t k = b; k < e; ++k) flag_[k] = test(k, pairs_[k]);
                  });
 }
 
@@ -647,8 +646,8 @@ int TriangleContact<T>::fail_safe(const Model<T>& m, State<T>& s, int threads, b
   int unresolved = 0;
   // Every vertex is at x1 (this round only): the distance bound holds over the substep.
   flag_pairs(threads, [&](std::size_t k, const Pair& p) {
-    if (near_only && flag_[k] == kClear) return false;
-    return !strays_.clear_by(p, 2.0 * eta_) && meets(p, s.pos);
+    if (near_only && flag_[k] == PairFlag::clear) return PairFlag::clear;
+    return !strays_.clear_by(p, 2.0 * eta_) && meets(p, s.pos) ? PairFlag::hit : PairFlag::clear;
   });
   for (int round = 1;; ++round) {
     if (round > kMaxRounds) {
@@ -661,7 +660,7 @@ int TriangleContact<T>::fail_safe(const Model<T>& m, State<T>& s, int threads, b
     for (std::size_t k = 0; k < pairs_.size(); ++k) {
       const Pair& p = pairs_[k];
       const bool met = round == 1
-                           ? flag_[k] != 0
+                           ? flag_[k] == PairFlag::hit
                            : std::any_of(p.v.begin(), p.v.end(),
                                          [&](std::int32_t v) {
                                            return returned_round_[std::size_t(v)] == round - 1;
@@ -684,7 +683,9 @@ template <class T>
 void TriangleContact<T>::flag_proximity(const State<T>& s, int threads) {
   const double growth = margins_.valid ? growth_since_margins(threads) : INFINITY;
   const bool full = 2.0 * growth > kMarginRefresh * thickness_;
-  const double drop = std::max(0.0, margins_.shrink - strays_.shrink);
+  // The skip reads one float a pair: the shrink's fall is taken at the longest pair.
+  const double limit =
+      2.0 * growth + std::max(0.0, margins_.shrink - strays_.shrink) * margins_.max_dist;
   if (full) {
     std::copy(strays_.dev0.begin(), strays_.dev0.end(), margins_.moved.begin());
     for (std::size_t v = 0; v < margins_.moved.size(); ++v)
@@ -693,11 +694,11 @@ void TriangleContact<T>::flag_proximity(const State<T>& s, int threads) {
     margins_.valid = true;
   }
   flag_pairs(threads, [&](std::size_t k, const Pair& p) {
-    if (!full && double(margins_.slack[k]) - drop * double(p.dist) > 2.0 * growth) return kClear;
+    if (!full && double(margins_.slack[k]) > limit) return PairFlag::clear;
     const double margin = strays_.margin(p) - thickness_;
     if (full) margins_.slack[k] = std::nextafter(float(margin), -INFINITY);
-    if (margin > 0.0) return kClear;
-    return needs_push(p, s.pos) ? kPush : kNear;
+    if (margin > 0.0) return PairFlag::clear;
+    return needs_push(p, s.pos) ? PairFlag::hit : PairFlag::near;
   });
 }
 
@@ -817,13 +818,13 @@ bool TriangleContact<T>::respond(const Model<T>& m, State<T>& s, double h, int t
   flag_proximity(s, threads);
   for (int it = 0; it < kProximityIterations; ++it)
     for (std::size_t k = 0; k < pairs_.size(); ++k)
-      if (flag_[k] == kPush && push_apart(m, s, pairs_[k])) ++contacts;
+      if (flag_[k] == PairFlag::hit && push_apart(m, s, pairs_[k])) ++contacts;
   stats_.contacts = contacts;
   const double pushed = update_velocities(s, h);
   // The fail-safe needs every pair whose swept boxes meet: new ones if a push left a box, or if
   // a flat patch bent in the substep.
   if (!recollect_if_needed(s, threads, stats_.recollected)) return undo(m, s);
-  // A pair kClear stayed more than the thickness apart on the straight motion to the end the
+  // A pair flagged clear stayed more than the thickness apart on the straight motion to the end the
   // integrator made; the pushes moved each end by at most `pushed`, each point of the motion
   // by no more, so while 2 pushed < thickness - 2 eta it still cannot come within 2 eta (the
   // fail-safe's own bound) and its test is skipped.

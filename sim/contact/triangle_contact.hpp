@@ -100,7 +100,7 @@ class TriangleContact {
   void set_allowances(double growth, int threads);
   bool gather_pairs(int threads);
   bool still_tangled(const State<T>& s, int threads);
-  // The proximity pass: flag_ kClear, kPush or kNear for every pair (triangle_contact.cpp).
+  // The proximity pass: flag_ for every pair.
   void flag_proximity(const State<T>& s, int threads);
   // The largest growth of any vertex's moved_by() since margins_ were taken.
   double growth_since_margins(int threads);
@@ -150,7 +150,7 @@ class TriangleContact {
   bool tangled_ = false;                           // the last collection, at xc, was a tangle
   int kept_choices_ = 0;  // collections since the flat patches were last chosen
   std::vector<Pair> pairs_;
-  std::vector<std::uint8_t> flag_;  // per pair: the last parallel test's answer
+  std::vector<PairFlag> flag_;  // per pair: the last parallel test's answer
   // Per block of vertices: kBlockSums partial sums for the rigid fit, or the largest stray and
   // excess (triangle_contact.cpp).
   std::vector<double> block_sums_;
