@@ -440,7 +440,6 @@ bool TriangleContact<T>::gather_pairs(int threads) {
     pairs_.insert(pairs_.end(), part.begin(), part.end());
   flag_.resize(pairs_.size());
   margins_.slack.resize(pairs_.size());
-  margins_.valid = false;
   margins_.max_dist = 0.0;
   for (const Pair& p : pairs_) margins_.max_dist = std::max(margins_.max_dist, double(p.dist));
   return true;
@@ -687,9 +686,8 @@ void TriangleContact<T>::flag_proximity(const State<T>& s, int threads) {
   const double limit =
       2.0 * growth + std::max(0.0, margins_.shrink - strays_.shrink) * margins_.max_dist;
   if (full) {
-    std::copy(strays_.dev0.begin(), strays_.dev0.end(), margins_.moved.begin());
     for (std::size_t v = 0; v < margins_.moved.size(); ++v)
-      margins_.moved[v] = std::max(margins_.moved[v], strays_.dev1[v]);
+      margins_.moved[v] = strays_.moved_by(std::int32_t(v));
     margins_.shrink = strays_.shrink;
     margins_.valid = true;
   }
