@@ -41,9 +41,9 @@ endfunction()
 
 # The program itself: --version, help, and a mistyped subcommand named with the list.
 clothlab_cli_test(version 0 "^clothlab 0\\.1\\.0" --version)
-clothlab_cli_test(help 0 "Subcommands:.*check.*params.*trace.*render.*view.*bench" help)
+clothlab_cli_test(help 0 "Subcommands:.*check.*params.*trace.*render.*view.*bench.*tune" help)
 clothlab_cli_test(unknown_subcommand 2
-  "unknown subcommand \"frobnicate\"; the subcommands are check, params, trace, render, view, bench, help"
+  "unknown subcommand \"frobnicate\"; the subcommands are check, params, trace, render, view, bench, tune, help"
   frobnicate)
 clothlab_bad_scene(syntax_error 6 "TOML syntax error" "")
 clothlab_bad_scene(unknown_top_key 5 "physics" "unknown top-level key")
@@ -214,6 +214,32 @@ clothlab_cli_test(set.bad_cg_tolerance 2 "solver.cg_tolerance: must be between 0
   check ${CLOTHLAB_DEFAULT_SCENE} --set solver.cg_tolerance=2)
 clothlab_cli_test(set.bad_dt_word 2 "solver.dt: expected a number of seconds or \"auto\""
   check ${CLOTHLAB_DEFAULT_SCENE} --set solver.dt=fastest)
+
+# `clothlab tune` (docs/tuning.md): on the default scene at 8 x 8 to 0.25 s it prints the table,
+# the cheapest setting within the tolerance as --set lines and TOML, and writes the CSV (a row per
+# setting and sample time) and the plot; bad arguments are bad input.
+clothlab_cli_test(tune.small 0
+  "at 0\\.0667 s.*reference: rk4 \\(double\\).*\\* .*xpbd.*within 20 mm RMS up to 0\\.25 s: .*--set solver\\.integrator=.*\\[solver\\].integrator = .*wrote .*tune_small\\.csv and .*tune_small\\.png"
+  tune ${CLOTHLAB_DEFAULT_SCENE} --set cloth.resolution=[8,8] --set cloth.pins=[[0,0],[7,0]]
+  --set trace.vertices=[[4,7]]
+  --duration 0.25 --tolerance 0.02 --threads 1 --quiet --out ${CLOTHLAB_TRACE_OUT}/tune_small.csv)
+add_test(NAME cli.tune.small_csv
+  COMMAND ${CMAKE_COMMAND} -DFILE=${CLOTHLAB_TRACE_OUT}/tune_small.csv
+    "-DHEADER_REGEX=^setting,family,time \\(s\\),rms error \\(m\\),max error \\(m\\),energy drift \\(J\\),wall per simulated s \\(s\\),frontier,status,set$"
+    "-DROW_REGEX=^(\"[^\"]*\"|[^,]+),(reference|explicit|implicit|constraints|descent),"
+    -DMIN_ROWS=40
+    -P ${CMAKE_CURRENT_LIST_DIR}/check_csv.cmake)
+add_test(NAME cli.tune.small_png
+  COMMAND ${CMAKE_COMMAND} -DFILE=${CLOTHLAB_TRACE_OUT}/tune_small.png -DMIN_BYTES=10000
+    -P ${CMAKE_CURRENT_LIST_DIR}/check_png.cmake)
+set_tests_properties(cli.tune.small PROPERTIES FIXTURES_SETUP tune_small)
+set_tests_properties(cli.tune.small_csv cli.tune.small_png PROPERTIES FIXTURES_REQUIRED tune_small)
+clothlab_cli_test(tune.zero_duration 2 "clothlab tune: --duration: Value 0 not in range"
+  tune ${CLOTHLAB_DEFAULT_SCENE} --duration 0)
+clothlab_cli_test(tune.negative_tolerance 2 "clothlab tune: --tolerance: Value -1 not in range"
+  tune ${CLOTHLAB_DEFAULT_SCENE} --tolerance -1)
+clothlab_cli_test(tune.bad_scene 2 "clothlab tune: .*negative_dt\\.toml:6:[0-9]+: solver\\.dt: must be > 0"
+  tune ${CLOTHLAB_BAD_SCENES}/negative_dt.toml)
 
 # `clothlab bench`: a reduced suite writes its tables; a bad suite name is bad input.
 clothlab_cli_test(bench.stability_quick 0 "Largest stable dt.*wrote .*stability\\.csv.*wrote .*stability_stress\\.csv"

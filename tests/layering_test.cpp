@@ -1,11 +1,11 @@
 // The folders' includes point down the data flow (docs/design.md, "Layout"): sim/ (physics) <-
 // gl/ (the GL foundation) <- gpu/ (the GPU step) <- factory/ (the solver factory), and vis/ (the
 // renderer) on sim/ and gl/, <- bench/ <- apps/, with music/ and load/ (the files a scene names)
-// on sim/. A file may include its own folder and
-// the folders below it, never one beside or above it. And the renderer reads the solver: no
-// header under vis/ takes a mutable solver (docs/design.md, "One field snapshot per frame").
-// Raw GL calls stay in gl/, the passes' draw code (vis/passes/) and the GPU step's dispatches
-// (gpu/); GL objects are made and deleted only by gl/'s RAII wrappers.
+// on sim/, and tune/ (`clothlab tune`) on load/ and vis/, below apps/ and python/. A file may
+// include its own folder and the folders below it, never one beside or above it. And the renderer
+// reads the solver: no header under vis/ takes a mutable solver (docs/design.md, "One field
+// snapshot per frame"). Raw GL calls stay in gl/, the passes' draw code (vis/passes/) and the GPU
+// step's dispatches (gpu/); GL objects are made and deleted only by gl/'s RAII wrappers.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -31,8 +31,9 @@ const std::map<std::string, std::set<std::string>>& allowed() {
       {"factory", {"sim", "gl", "gpu"}},
       {"vis", {"sim", "gl"}},
       {"bench", {"sim", "music", "load", "gl", "gpu", "factory", "vis"}},
-      {"apps", {"sim", "music", "load", "gl", "gpu", "factory", "vis", "bench"}},
-      {"python", {"sim", "music", "load", "gl", "gpu", "factory", "vis"}},
+      {"tune", {"sim", "music", "load", "gl", "vis"}},
+      {"apps", {"sim", "music", "load", "gl", "gpu", "factory", "vis", "bench", "tune"}},
+      {"python", {"sim", "music", "load", "gl", "gpu", "factory", "vis", "tune"}},
   };
   return table;
 }

@@ -61,7 +61,18 @@ struct BenchArgs {
   bool verbose = false;       // progress lines on stderr
 };
 
+// `clothlab tune` (docs/tuning.md).
+struct TuneArgs {
+  std::string scene;
+  std::vector<std::string> overrides;
+  double duration = 1.0;            // s: the horizon
+  std::optional<double> tolerance;  // m: RMS at every sample time; none: 60, 20 and 5 mm
+  int threads = 0;                  // solver threads of every run; 0: the scene's own
+  std::string out;                  // CSV file; the plot beside it as .png
+  bool quiet = false;               // no progress lines
+};
 int run_bench(const BenchArgs& args);
+int run_tune_command(const TuneArgs& args);
 int run_check(const CheckArgs& args);
 int run_params();  // check_command.cpp
 int run_render(const RenderArgs& args);

@@ -276,6 +276,27 @@ CLI::App* add_view(CLI::App& app, ViewArgs& view) {
   return view_cmd;
 }
 
+// `tune`: run time against error on the scene itself (docs/tuning.md).
+CLI::App* add_tune(CLI::App& app, TuneArgs& tune) {
+  auto* cmd = app.add_subcommand(
+      "tune",
+      "run time against error on a scene: a reference, a ladder of settings, the "
+      "cheapest within a tolerance");
+  add_scene_options(*cmd, tune.scene, tune.overrides);
+  cmd->add_option("--duration", tune.duration, "the horizon T in simulated seconds (default 1)")
+      ->check(CLI::Range(1.0 / 60.0, 60.0));
+  cmd->add_option("--tolerance", tune.tolerance,
+                  "m: RMS distance from the reference allowed at every sample time up to T "
+                  "(default: say the cheapest within 60, 20 and 5 mm)")
+      ->check(CLI::Range(1e-9, 10.0));
+  cmd->add_option("--threads", tune.threads, "solver threads of every run (default: the scene's)")
+      ->check(CLI::Range(1, 256));
+  cmd->add_option("--out", tune.out, "CSV file (default out/tune/SCENE.csv); the plot beside it")
+      ->check(output_file());
+  cmd->add_flag("--quiet", tune.quiet, "no progress lines");
+  return cmd;
+}
+
 // `bench`: run time against error, stability, scaling, feature, view and render costs.
 CLI::App* add_bench(CLI::App& app, BenchArgs& bench) {
   auto* bench_cmd = app.add_subcommand(
@@ -345,6 +366,8 @@ int main(int argc, char** argv) {
   auto* view_cmd = add_view(app, view);
   BenchArgs bench;
   auto* bench_cmd = add_bench(app, bench);
+  TuneArgs tune;
+  auto* tune_cmd = add_tune(app, tune);
   app.add_subcommand("help", "print this overview of the subcommands");
 
   if (unknown_subcommand(app, argc, argv)) return 2;
@@ -371,6 +394,7 @@ int main(int argc, char** argv) {
     if (*render_cmd) return run_render_cli(render);
     if (*view_cmd) return run_view(view);
     if (*bench_cmd) return run_bench(bench);
+    if (*tune_cmd) return run_tune_command(tune);
   } catch (const clothlab::SceneError& e) {
     std::fprintf(stderr, "clothlab %s: %s\n", argv[1], e.what());
     return kBadInput;
