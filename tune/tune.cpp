@@ -48,10 +48,6 @@ SceneReader file_reader(const std::string& scene_path, const std::vector<std::st
   };
 }
 
-namespace {
-
-// The scene with a setting's --set lines after the shared ones: the CPU backend and the thread
-// count.
 Scene setting_scene(const SceneReader& read, const Options& o, const Setting& setting) {
   std::vector<std::string> all = {"solver.backend=cpu"};
   if (o.threads > 0) all.push_back("solver.threads=" + std::to_string(o.threads));
@@ -59,40 +55,43 @@ Scene setting_scene(const SceneReader& read, const Options& o, const Setting& se
   return read(all);
 }
 
-Reference run_reference(const SceneReader& read, const Options& o, const Spectrum& spectrum,
-                        const std::vector<double>& times) {
-  const Setting coarse_setting = reference_setting(spectrum, o.reference_fraction, false);
-  Reference ref;
-  ref.setting = reference_setting(spectrum, o.reference_fraction, true);
-  const SampledRun coarse = run_sampled(setting_scene(read, o, coarse_setting), times, 0.0);
+Settings settings_for(const SceneReader& read, const Options& o) {
+  const Spectrum spectrum = estimate_spectrum(build_model<double>(setting_scene(read, o, {})));
+  return {reference_setting(spectrum, o.reference_fraction, false),
+          reference_setting(spectrum, o.reference_fraction, true), ladder(spectrum)};
+}
+
+Reference make_reference(const Settings& s, SampledRun fine, const SampledRun& coarse,
+                         const std::vector<double>& times) {
   if (!coarse.finished())
-    throw std::runtime_error("the reference (" + coarse_setting.label + ") " + coarse.failure);
-  if (o.log) *o.log << "tune: reference " << coarse_setting.label << ": " << coarse.wall << " s\n";
-  ref.run = run_sampled(setting_scene(read, o, ref.setting), times, 0.0);
-  if (!ref.run.finished())
-    throw std::runtime_error("the reference (" + ref.setting.label + ") " + ref.run.failure);
+    throw std::runtime_error("the reference (" + s.coarse.label + ") " + coarse.failure);
+  if (!fine.finished())
+    throw std::runtime_error("the reference (" + s.reference.label + ") " + fine.failure);
+  Reference ref;
+  ref.setting = s.reference;
+  ref.run = std::move(fine);
   for (std::size_t k = 0; k < times.size(); ++k)
     ref.self.push_back(distance(ref.run.at[k], coarse.at[k]));
   ref.cost = ref.run.wall / times.back();
-  if (o.log)
-    *o.log << "tune: reference " << ref.setting.label << ": " << ref.run.wall
-           << " s, its own error at most " << 1e3 * ref.worst_self() << " mm RMS\n";
+  ref.stop_after = 2.0 * coarse.wall;
   return ref;
 }
 
-}  // namespace
+SampledRun run_setting(const SceneReader& read, const Options& o, const Setting& setting,
+                       const std::vector<double>& times, double wall_limit) {
+  try {
+    return run_sampled(setting_scene(read, o, setting), times, wall_limit);
+  } catch (const std::exception& e) {  // a SceneError: the combination is not a valid scene
+    SampledRun run;
+    run.failure = std::string("not applicable: ") + e.what();
+    return run;
+  }
+}
 
-Row measure(const SceneReader& read, const Options& o, const Setting& setting,
-            const SampledRun& reference, const std::vector<double>& times, double wall_limit) {
+Row row_from(const Setting& setting, const SampledRun& run, const SampledRun& reference,
+             const std::vector<double>& times) {
   Row row;
   row.setting = setting;
-  SampledRun run;
-  try {
-    run = run_sampled(setting_scene(read, o, setting), times, wall_limit);
-  } catch (const std::exception& e) {  // a SceneError: the combination is not a valid scene
-    row.status = std::string("not applicable: ") + e.what();
-    return row;
-  }
   for (std::size_t k = 0; k < run.at.size(); ++k)
     row.error.push_back(distance(run.at[k], reference.at[k]));
   if (!run.energy.empty())
@@ -103,12 +102,23 @@ Row measure(const SceneReader& read, const Options& o, const Setting& setting,
   return row;
 }
 
+Row measure(const SceneReader& read, const Options& o, const Setting& setting,
+            const SampledRun& reference, const std::vector<double>& times, double wall_limit) {
+  return row_from(setting, run_setting(read, o, setting, times, wall_limit), reference, times);
+}
+
 Plan plan_tune(const SceneReader& read, const Options& o) {
   Plan plan;
   plan.times = sample_times(o.duration, o.samples);
-  const Spectrum spectrum = estimate_spectrum(build_model<double>(setting_scene(read, o, {})));
-  plan.reference = run_reference(read, o, spectrum, plan.times);
-  plan.ladder = ladder(spectrum);
+  Settings s = settings_for(read, o);
+  const SampledRun coarse = run_sampled(setting_scene(read, o, s.coarse), plan.times, 0.0);
+  if (o.log) *o.log << "tune: reference " << s.coarse.label << ": " << coarse.wall << " s\n";
+  SampledRun fine = run_sampled(setting_scene(read, o, s.reference), plan.times, 0.0);
+  plan.reference = make_reference(s, std::move(fine), coarse, plan.times);
+  if (o.log)
+    *o.log << "tune: reference " << s.reference.label << ": " << plan.reference.run.wall
+           << " s, its own error at most " << 1e3 * plan.reference.worst_self() << " mm RMS\n";
+  plan.ladder = std::move(s.ladder);
   return plan;
 }
 
@@ -120,7 +130,7 @@ Result run_tune(const SceneReader& read, const Options& o) {
   const std::size_t n = plan.ladder.size();
   for (std::size_t i = 0; i < n; ++i) {
     result.rows.push_back(measure(read, o, plan.ladder[i], result.reference.run, result.times,
-                                  result.reference.run.wall));
+                                  result.reference.stop_after));
     const Row& r = result.rows.back();
     if (o.log)
       *o.log << "tune: [" << i + 1 << "/" << n << "] " << r.setting.label << ": "

@@ -44,7 +44,10 @@ struct Reference {
   SampledRun run;              // the finer run: what every candidate is measured against
   std::vector<Distance> self;  // m: its distance from the coarser run at each time, its error bound
   double cost = 0.0;           // s per simulated second
-  double worst_self() const;   // m: the largest self RMS
+  // s: how long a candidate may run: twice the coarser run's wall time, the finer run's
+  // expected one, known before the finer run ends (so that candidates can start beside it).
+  double stop_after = 0.0;
+  double worst_self() const;  // m: the largest self RMS
 };
 
 struct Result {
@@ -63,6 +66,23 @@ SceneReader file_reader(const std::string& scene_path, const std::vector<std::st
 // T k / samples for k = 1..samples, each rounded to a whole frame (at least one frame, distinct).
 std::vector<double> sample_times(double duration, int samples);
 
+// The scene of one setting: the reader's, then the CPU backend and the options' thread count,
+// then the setting's own lines.
+Scene setting_scene(const SceneReader& read, const Options& options, const Setting& setting);
+
+// The settings a tune runs, from the scene's spectrum (tune/ladder.hpp): the reference at its
+// coarser step and at its own, and the ladder.
+struct Settings {
+  Setting coarse, reference;
+  std::vector<Setting> ladder;
+};
+Settings settings_for(const SceneReader& read, const Options& options);
+
+// The reference from its two runs: `fine` measured against `coarse` at each time. Throws
+// std::runtime_error naming the run when either did not finish.
+Reference make_reference(const Settings& settings, SampledRun fine, const SampledRun& coarse,
+                         const std::vector<double>& times);
+
 // What a tune needs before its candidates run: the sample times, the reference run and the
 // ladder. Throws SceneError when the scene is not valid, std::runtime_error when its reference
 // diverges.
@@ -73,13 +93,23 @@ struct Plan {
 };
 Plan plan_tune(const SceneReader& read, const Options& options);
 
-// One candidate against a reference run at `times`, stopped once it takes longer than
-// `wall_limit` s (0: never). Never throws for a bad case: its row says why.
+// One setting run to `times`, stopped once it takes longer than `wall_limit` s (0: never). Never
+// throws for a bad case: a setting that does not make a valid scene is a run whose failure says
+// "not applicable: " and why.
+SampledRun run_setting(const SceneReader& read, const Options& options, const Setting& setting,
+                       const std::vector<double>& times, double wall_limit);
+
+// A setting's run against the reference run at `times`.
+Row row_from(const Setting& setting, const SampledRun& run, const SampledRun& reference,
+             const std::vector<double>& times);
+
+// run_setting, then row_from.
 Row measure(const SceneReader& read, const Options& options, const Setting& setting,
             const SampledRun& reference, const std::vector<double>& times, double wall_limit);
 
 // plan_tune, then every candidate of the ladder in order, each stopped once it takes longer
-// than the reference (the reference would then be cheaper and more accurate).
+// than the reference is expected to (Reference::stop_after; the reference would then be cheaper
+// and more accurate).
 Result run_tune(const SceneReader& read, const Options& options);
 
 // Row indices on the frontier, by cost: each finished row that no cheaper finished row matches

@@ -24,7 +24,14 @@ std::string mm(double metres) {
   return text;
 }
 
-// One row per candidate and sample time, raw values for notebooks.
+// A number as it is (%.17g): the CSV's values read back to the same doubles.
+std::string exact(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+// One row per candidate and sample time, exact values for notebooks.
 bench::Table data_table(const tune::Result& r) {
   bench::Table t;
   t.title = "tune: every setting against the reference";
@@ -45,18 +52,18 @@ bench::Table data_table(const tune::Result& r) {
     return out;
   };
   for (std::size_t k = 0; k < r.times.size(); ++k)
-    t.add({r.reference.setting.label, "reference", bench::num(r.times[k]),
-           bench::num(r.reference.self[k].rms), bench::num(r.reference.self[k].max), "0",
-           bench::num(r.reference.cost), "-", "reference (its error: distance from half its step)",
+    t.add({r.reference.setting.label, "reference", exact(r.times[k]),
+           exact(r.reference.self[k].rms), exact(r.reference.self[k].max), "0",
+           exact(r.reference.cost), "-", "reference (its error: distance from half its step)",
            joined(r.reference.setting)});
   for (std::size_t i = 0; i < r.rows.size(); ++i) {
     const tune::Row& row = r.rows[i];
     const bool on = std::find(front.begin(), front.end(), i) != front.end();
     for (std::size_t k = 0; k < std::max<std::size_t>(row.error.size(), 1); ++k) {
       const bool has = k < row.error.size();
-      t.add({row.setting.label, row.setting.family, has ? bench::num(r.times[k]) : "-",
-             has ? bench::num(row.error[k].rms) : "-", has ? bench::num(row.error[k].max) : "-",
-             has ? bench::num(row.energy_drift) : "-", bench::num(row.cost), on ? "yes" : "no",
+      t.add({row.setting.label, row.setting.family, has ? exact(r.times[k]) : "-",
+             has ? exact(row.error[k].rms) : "-", has ? exact(row.error[k].max) : "-",
+             has ? exact(row.energy_drift) : "-", exact(row.cost), on ? "yes" : "no",
              row.status, joined(row.setting)});
     }
   }

@@ -14,6 +14,7 @@ void bind_scene(pybind11::module_& m);
 void bind_simulation(pybind11::module_& m);
 void bind_trace(pybind11::module_& m);
 void bind_render(pybind11::module_& m);
+void bind_tune(pybind11::module_& m);
 
 // Raises clothlab.DivergenceError for `d` (throws pybind11::error_already_set).
 [[noreturn]] void raise_divergence(const Divergence& d);

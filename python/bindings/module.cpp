@@ -38,5 +38,6 @@ PYBIND11_MODULE(_clothlab, m) {
   py_bindings::bind_scene(m);
   py_bindings::bind_simulation(m);
   py_bindings::bind_trace(m);
+  py_bindings::bind_tune(m);
   py_bindings::bind_render(m);
 }

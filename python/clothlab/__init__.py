@@ -22,6 +22,7 @@ from clothlab._clothlab import Scene, Simulation  # noqa: E402
 from clothlab.errors import DivergenceError, SceneError  # noqa: E402
 from clothlab.traces import trace  # noqa: E402
 from clothlab.sweeps import run_case, sweep  # noqa: E402
+from clothlab.tuning import tune  # noqa: E402
 from clothlab.renders import render  # noqa: E402
 from clothlab.paraview import to_paraview  # noqa: E402
 
@@ -33,6 +34,7 @@ __all__ = [
     "trace",
     "sweep",
     "run_case",
+    "tune",
     "render",
     "to_paraview",
 ]

@@ -3,13 +3,12 @@ Dask cluster. A task carries the scene's text, the case's parameters and the mea
 its result is a row of numbers or an error text. No solver state crosses the network.
 """
 import itertools
-import os
-import tempfile
 import time
 
 import pandas
 
 from clothlab._clothlab import Simulation
+from clothlab.cluster import local_client
 
 
 def default_measure(sim):
@@ -72,15 +71,7 @@ def sweep(scene, grid, duration, measure=None, client=None, threads=1):
     if client == "serial":
         rows = [run_case(scene, c, duration, measure, threads) for c in todo]
     elif client is None:
-        from dask.distributed import Client, LocalCluster
-
-        with LocalCluster(
-            n_workers=os.cpu_count() or 1,
-            threads_per_worker=1,
-            processes=True,
-            dashboard_address=None,
-            local_directory=tempfile.gettempdir(),  # not dask-worker-space/ in the user's folder
-        ) as cluster, Client(cluster) as own:
+        with local_client() as own:
             rows = _run_on(own, scene, todo, duration, measure, threads)
     else:
         rows = _run_on(client, scene, todo, duration, measure, threads)

@@ -1,0 +1,73 @@
+"""clothlab.tune: the same table on a LocalCluster as serially and as the command line's CSV (the
+costs, and the frontier and recommendation they decide, aside), and a recommendation that is the
+cheapest finished setting within the tolerance."""
+import pandas
+import pytest
+
+import clothlab
+from conftest import run_cli
+
+DURATION = 0.25
+TOLERANCE = 0.01
+TIMED = ["cost", "frontier", "recommended"]
+
+
+@pytest.fixture
+def scene(small_scene_text):
+    return clothlab.Scene.from_toml(small_scene_text)
+
+
+def test_local_cluster_equals_serial(scene):
+    serial = clothlab.tune(scene, DURATION, TOLERANCE, client="serial", stop_slower=False)
+    distributed = clothlab.tune(scene, DURATION, TOLERANCE, stop_slower=False)
+    pandas.testing.assert_frame_equal(
+        serial.drop(columns=TIMED), distributed.drop(columns=TIMED), check_exact=True
+    )
+    assert serial.attrs == distributed.attrs
+    assert serial.family[0] == "reference" and len(serial) == 24
+    assert (serial.status == "ok").all()  # nothing stopped, nothing diverged on this sheet
+
+
+def test_recommendation_is_the_cheapest_within_the_tolerance(scene):
+    frame = clothlab.tune(scene, DURATION, TOLERANCE, client="serial")
+    candidates = frame.iloc[1:]
+    within = candidates[(candidates.status == "ok") & (candidates.worst_rms <= TOLERANCE)]
+    assert len(within) > 0
+    assert frame.recommended.sum() == 1
+    chosen = frame[frame.recommended].iloc[0]
+    assert chosen.cost == within.cost.min()
+    assert chosen.frontier
+    # The frontier, by cost, only ever gets more accurate.
+    front = frame[frame.frontier].sort_values("cost")
+    assert front.worst_rms.is_monotonic_decreasing
+    # worst_rms is the largest of the sample times' RMS.
+    rms = [c for c in frame.columns if c.startswith("rms_")]
+    assert len(rms) == len(frame.attrs["times"]) == 4
+    ok = frame[frame.status == "ok"]
+    assert (ok[rms].max(axis=1) == ok.worst_rms).all()
+    assert (frame[frame.status != "ok"].worst_rms == float("inf")).all()
+
+
+def test_errors_equal_the_command_lines(scene, small_scene_text, tmp_path):
+    frame = clothlab.tune(scene, DURATION, TOLERANCE, client="serial", stop_slower=False)
+    scene_file = tmp_path / "sheet.toml"
+    scene_file.write_text(small_scene_text)
+    out = tmp_path / "tune.csv"
+    code, stdout, err = run_cli(
+        "tune", str(scene_file), "--duration", repr(DURATION), "--tolerance", repr(TOLERANCE),
+        "--threads", "1", "--quiet", "--out", str(out),
+    )
+    assert code == 0, err
+    assert "within 10 mm RMS up to 0.25 s" in stdout
+    csv = pandas.read_csv(out, float_precision="round_trip")
+    times = frame.attrs["times"]
+    compared = 0
+    for _, row in frame.iloc[1:].iterrows():
+        cli = csv[(csv.setting == row.setting) & (csv.status == "ok")]
+        if len(cli) != len(times):  # stopped by the command line's clock
+            continue
+        for k, t in enumerate(times):
+            assert cli["rms error (m)"].iloc[k] == row[f"rms_{t:.3g}"], row.setting
+        compared += 1
+    assert compared >= 10
+
