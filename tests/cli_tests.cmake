@@ -241,6 +241,28 @@ clothlab_cli_test(tune.negative_tolerance 2 "clothlab tune: --tolerance: Value -
 clothlab_cli_test(tune.bad_scene 2 "clothlab tune: .*negative_dt\\.toml:6:[0-9]+: solver\\.dt: must be > 0"
   tune ${CLOTHLAB_BAD_SCENES}/negative_dt.toml)
 
+# solver.tolerance (docs/tuning.md, "A tolerance in the scene"): the first trace tunes the 8 x 8
+# scene to 1 s and keeps the table in the cache folder, the second reads it from there, and a
+# tolerance below the reference's own error is bad input at its key.
+set(CLOTHLAB_TUNE_CACHE "CLOTHLAB_CACHE_DIR=${CLOTHLAB_TRACE_OUT}/tune_cache")
+set(CLOTHLAB_SMALL_DEFAULT --set cloth.resolution=[8,8] --set cloth.pins=[[0,0],[7,0]]
+  --set trace.vertices=[[4,7]])
+clothlab_env_test(trace.tolerance_tunes "${CLOTHLAB_TUNE_CACHE}" 0
+  "solver\\.tolerance 20 mm: .* within 20 mm to 1 s"
+  trace ${CLOTHLAB_DEFAULT_SCENE} ${CLOTHLAB_SMALL_DEFAULT} --set solver.tolerance=0.02
+  --duration 0.1 --out ${CLOTHLAB_TRACE_OUT}/tolerance.csv)
+clothlab_env_test(trace.tolerance_cached "${CLOTHLAB_TUNE_CACHE}" 0
+  "solver\\.tolerance 5 mm: .* within 5 mm to 1 s.*\\(from the cache\\)"
+  trace ${CLOTHLAB_DEFAULT_SCENE} ${CLOTHLAB_SMALL_DEFAULT} --set solver.tolerance=0.005
+  --duration 0.1 --out ${CLOTHLAB_TRACE_OUT}/tolerance_cached.csv)
+clothlab_env_test(trace.tolerance_too_small "${CLOTHLAB_TUNE_CACHE}" 2
+  "solver\\.tolerance: 1e-09 mm is below the reference's own error to 1 s on this scene"
+  trace ${CLOTHLAB_DEFAULT_SCENE} ${CLOTHLAB_SMALL_DEFAULT} --set solver.tolerance=1e-12
+  --duration 0.1 --out ${CLOTHLAB_TRACE_OUT}/tolerance_small.csv)
+set_tests_properties(cli.trace.tolerance_tunes PROPERTIES FIXTURES_SETUP tune_cache)
+set_tests_properties(cli.trace.tolerance_cached cli.trace.tolerance_too_small PROPERTIES
+  FIXTURES_REQUIRED tune_cache)
+
 # `clothlab bench`: a reduced suite writes its tables; a bad suite name is bad input.
 clothlab_cli_test(bench.stability_quick 0 "Largest stable dt.*wrote .*stability\\.csv.*wrote .*stability_stress\\.csv"
   bench --suite stability --quick --out ${CLOTHLAB_TRACE_OUT}/bench/stability.csv)

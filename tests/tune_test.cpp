@@ -4,12 +4,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "load/scene_load.hpp"
 #include "sim/solver.hpp"
 #include "tune/ladder.hpp"
+#include "tune/tolerance.hpp"
 #include "tune/tune.hpp"
 
 namespace clothlab::tune {
@@ -88,20 +92,23 @@ std::vector<Vec3d> positions_at(const Scene& scene, double t) {
   return p;
 }
 
+// Without a wall-time limit, so that no row depends on the clock.
 TEST(Tune, TableErrorsEqualTwoRunsComparedDirectly) {
   Options o;
   o.duration = 0.25;
   o.samples = 2;
-  const Result r = run_tune(sheet_reader(), o);
-  ASSERT_EQ(r.rows.size(), ladder(Spectrum{}).size());
-  const Scene reference = sheet_reader()(r.reference.setting.overrides);
+  const Plan plan = plan_tune(sheet_reader(), o);
+  ASSERT_EQ(plan.ladder.size(), ladder(Spectrum{}).size());
+  const Scene reference = sheet_reader()(plan.reference.setting.overrides);
   int compared = 0;
-  for (const Row& row : r.rows) {
-    if (!row.ok() || row.setting.family == "implicit") continue;  // the cheap ones suffice
-    const Scene candidate = sheet_reader()(row.setting.overrides);
-    for (std::size_t k = 0; k < r.times.size(); ++k) {
-      const std::vector<Vec3d> a = positions_at(candidate, r.times[k]);
-      const std::vector<Vec3d> b = positions_at(reference, r.times[k]);
+  for (const Setting& setting : plan.ladder) {
+    if (setting.family == "implicit") continue;  // the cheap ones suffice
+    const Row row = measure(sheet_reader(), o, setting, plan.reference.run, plan.times, 0.0);
+    ASSERT_TRUE(row.ok()) << setting.label << ": " << row.status;
+    const Scene candidate = sheet_reader()(setting.overrides);
+    for (std::size_t k = 0; k < plan.times.size(); ++k) {
+      const std::vector<Vec3d> a = positions_at(candidate, plan.times[k]);
+      const std::vector<Vec3d> b = positions_at(reference, plan.times[k]);
       double sum = 0.0, most = 0.0;
       for (std::size_t i = 0; i < a.size(); ++i) {
         const double d2 = (a[i][0] - b[i][0]) * (a[i][0] - b[i][0]) +
@@ -110,12 +117,12 @@ TEST(Tune, TableErrorsEqualTwoRunsComparedDirectly) {
         sum += d2;
         most = std::max(most, std::sqrt(d2));
       }
-      EXPECT_DOUBLE_EQ(row.error[k].rms, std::sqrt(sum / double(a.size()))) << row.setting.label;
-      EXPECT_DOUBLE_EQ(row.error[k].max, most) << row.setting.label;
+      EXPECT_DOUBLE_EQ(row.error[k].rms, std::sqrt(sum / double(a.size()))) << setting.label;
+      EXPECT_DOUBLE_EQ(row.error[k].max, most) << setting.label;
     }
     ++compared;
   }
-  EXPECT_GE(compared, 10);
+  EXPECT_EQ(compared, 18);
 }
 
 Row made(const char* label, double cost, std::vector<double> rms, const char* status = "ok") {
@@ -198,6 +205,82 @@ TEST(Tune, TomlQuotesTheWordsAndKeepsTheNumbers) {
   EXPECT_EQ(pasted.solver.substeps, 0);
   EXPECT_EQ(pasted.solver.dt, set.solver.dt);
   EXPECT_EQ(pasted.solver.integrator, set.solver.integrator);
+}
+
+}  // namespace
+}  // namespace clothlab::tune
+
+namespace clothlab::tune {
+namespace {
+
+TuneSummary constructed_summary() {
+  TuneSummary s;
+  s.reference_error = 1e-4;
+  s.reference = {"reference", "rk4 (double), 40 substeps", {"solver.integrator=rk4"}};
+  Row a = made("cheap", 0.1, {0.05});
+  a.setting.overrides = {"solver.integrator=xpbd", "solver.substeps=5"};
+  Row b = made("dear", 0.3, {0.004});
+  b.setting.overrides = {"solver.integrator=symplectic_euler", "solver.substeps=40"};
+  Row c = made("diverged", 0.01, {}, "diverged: at t = 0.1 s");
+  s.rows = {a, b, c};
+  return s;
+}
+
+TEST(Tolerance, PicksTheCheapestWithinAndRefusesBelowTheReference) {
+  const TuneSummary s = constructed_summary();
+  EXPECT_EQ(pick(s, 0.1).setting.label, "cheap");
+  EXPECT_EQ(pick(s, 0.02).setting.label, "dear");
+  EXPECT_DOUBLE_EQ(pick(s, 0.02).worst_rms, 0.004);
+  const TolerancePick none = pick(s, 0.001);  // nothing within: the reference's own setting
+  EXPECT_TRUE(none.reference);
+  EXPECT_EQ(none.setting.overrides, s.reference.overrides);
+  try {
+    (void)pick(s, 1e-5);
+    ADD_FAILURE() << "a tolerance below the reference's error was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("0.01 mm is below the reference's own error to 1 s on "
+                                         "this scene (0.1 mm)"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(Tolerance, CacheEntryReadsBackAndIsUsedWithoutTuning) {
+  const std::string dir = ::testing::TempDir() + "clothlab_tolerance_cache";
+  const std::string file = dir + "/entry.toml";
+  std::filesystem::remove_all(dir);
+  const TuneSummary s = constructed_summary();
+  write_summary(file, s);
+  const std::optional<TuneSummary> back = read_summary(file);
+  ASSERT_TRUE(back);
+  EXPECT_EQ(back->reference_error, s.reference_error);
+  ASSERT_EQ(back->rows.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(back->rows[i].setting.overrides, s.rows[i].setting.overrides);
+    EXPECT_EQ(back->rows[i].worst_rms(), s.rows[i].worst_rms());
+    EXPECT_EQ(back->rows[i].cost, s.rows[i].cost);
+    EXPECT_EQ(back->rows[i].status, s.rows[i].status);
+  }
+  // A reader that fails shows that no tune runs while the entry is there.
+  const SceneReader never = [](const std::vector<std::string>&) -> Scene {
+    throw std::runtime_error("tuned although cached");
+  };
+  const TolerancePick p = resolve_tolerance(never, file, 0.02, nullptr);
+  EXPECT_TRUE(p.cached);
+  EXPECT_EQ(p.setting.label, "dear");
+  std::ofstream(file) << "not toml [";  // a damaged entry is tuned again
+  EXPECT_THROW(resolve_tolerance(never, file, 0.02, nullptr), std::runtime_error);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Tolerance, CacheKeyLeavesOutTheToleranceAndNothingElse) {
+  const std::string a = "[solver]\ntolerance = 0.02\ncg_tolerance = 1e-3\n";
+  const std::string b = "[solver]\ntolerance = 0.005\ncg_tolerance = 1e-3\n";
+  const std::string c = "[solver]\ntolerance = 0.02\ncg_tolerance = 1e-4\n";
+  EXPECT_EQ(cache_file(a, {}), cache_file(b, {}));
+  EXPECT_NE(cache_file(a, {}), cache_file(c, {}));
+  EXPECT_EQ(cache_file(a, {"solver.tolerance=0.01"}), cache_file(a, {}));
+  EXPECT_NE(cache_file(a, {"springs.stiffness=10"}), cache_file(a, {}));
 }
 
 }  // namespace

@@ -84,6 +84,11 @@ int run_trace_command(const TraceArgs& args);
 // exits with status 2).
 std::optional<Scene> load_scene(const char* command, const std::string& path,
                                 const std::vector<std::string>& overrides);
+// load_scene, then a solver.tolerance resolved to the cheapest setting `clothlab tune` finds
+// within it (from the cache, else tuned now: docs/tuning.md, "A tolerance in the scene"), whose
+// --set lines are added after `overrides`. Says the choice on stderr unless quiet.
+std::optional<Scene> load_scene_to_run(const char* command, const std::string& path,
+                                       const std::vector<std::string>& overrides, bool quiet);
 inline constexpr int kBadInput = 2;
 
 // The command line that replays a run, printed with runtime failures (pbrt's habit).

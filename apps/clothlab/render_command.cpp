@@ -202,7 +202,7 @@ int render_scene(const RenderArgs& args, Scene& scene) {
 }  // namespace
 
 int run_render(const RenderArgs& args) {
-  std::optional<Scene> loaded = load_scene("render", args.scene, args.overrides);
+  std::optional<Scene> loaded = load_scene_to_run("render", args.scene, args.overrides, args.quiet);
   if (!loaded) return kBadInput;
   std::error_code ec;
   if (!args.out.empty()) std::filesystem::create_directories(args.out, ec);

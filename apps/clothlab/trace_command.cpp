@@ -174,7 +174,7 @@ int unfinished(const TraceArgs& args, const Scene& scene, const Solver& solver,
 }  // namespace
 
 int run_trace_command(const TraceArgs& args) {
-  std::optional<Scene> loaded = load_scene("trace", args.scene, args.overrides);
+  std::optional<Scene> loaded = load_scene_to_run("trace", args.scene, args.overrides, args.quiet);
   if (!loaded) return kBadInput;
   Scene& scene = *loaded;
   GlContextHandle context;

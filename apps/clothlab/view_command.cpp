@@ -12,7 +12,7 @@ namespace clothlab::app {
 
 int run_view(const ViewArgs& args) {
   const std::string path = args.scene.empty() ? std::string(CLOTHLAB_DEFAULT_SCENE) : args.scene;
-  std::optional<Scene> loaded = load_scene("view", path, args.overrides);
+  std::optional<Scene> loaded = load_scene_to_run("view", path, args.overrides, false);
   if (!loaded) return kBadInput;
   Scene& scene = *loaded;
   try {

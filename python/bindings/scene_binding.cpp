@@ -174,6 +174,9 @@ void bind_scene(py::module_& m) {
       .def("update", &update_values, py::arg("values"),
            "set() for each key.path: value of a dict, the scene read once for all of them; a "
            "bad one raises SceneError and leaves the scene unchanged.")
+      .def("override", &add_overrides, py::arg("lines"),
+           "Applies command-line --set lines, each \"key.path=value\" with the value as TOML (or "
+           "a bare word), e.g. the `set` column of clothlab.tune's table split at spaces.")
       .def("get", &get_value, py::arg("key"),
            "The value at key.path: the file's or an override's, else the default.")
       .def("copy", [](const SceneSource& s) { return s; })

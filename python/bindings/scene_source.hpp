@@ -18,6 +18,9 @@ struct SceneSource {
   // The loaded, validated scene (files it names read): what `clothlab trace --set ...` reads.
   // Throws SceneError with the command line's message.
   Scene load() const;
+  // load(), then a solver.tolerance resolved as the command line does (tune/tolerance.hpp): the
+  // chosen setting's lines added to the overrides; `said` gets the choice in one line.
+  Scene load_to_run(std::string& said) const;
 };
 
 }  // namespace clothlab::py_bindings

@@ -94,9 +94,11 @@ class Simulation {
 };
 
 inline Simulation::Simulation(const SceneSource& source) : source_(source) {
-  const Scene scene = source.load();
+  std::string tolerance_note;
+  const Scene scene = source.load_to_run(tolerance_note);
   doubles_ = scene.solver.precision == Precision::f64;
   solver_ = make_headless_backend_solver(scene, context_, note_);
+  if (!tolerance_note.empty()) note_ += (note_.empty() ? "" : "; ") + tolerance_note;
   chunk_ = std::max(1L, std::lround(kSignalCheckSeconds / solver_->dt()));
 }
 
@@ -333,7 +335,8 @@ void bind_simulation(py::module_& m) {
       .def_property_readonly("backend",
                              [](const Simulation& s) { return backend_name(s.solver()); })
       .def_property_readonly("backend_note", &Simulation::note,
-                             "Why a GPU scene runs on the CPU here ('' otherwise).")
+                             "Why a GPU scene runs on the CPU here, and the setting "
+                             "solver.tolerance chose ('' when neither).")
       .def_property_readonly("threads", [](const Simulation& s) { return s.solver().threads(); })
       .def_property_readonly("solve_totals", [](const Simulation& s) {
         const SolveTotals& t = s.solver().solve_totals();

@@ -285,6 +285,14 @@ std::vector<Parameter> solver() {
                           "1/60 s (one per 10 vertices of a side beyond 100 where no coarse "
                           "stretch levels carry the corrections), every other method 1"},
           &special::substeps_values),
+      row<&SolverSpec::tolerance>(
+          {.name = "tolerance",
+           .range = kNonNegative,
+           .unit = "m",
+           .fallback = "0",
+           .description = "an accuracy instead of a step: trace and render take the cheapest "
+                          "setting `clothlab tune` finds within this RMS distance of the scene's "
+                          "reference to 1 s, kept in the cache (docs/tuning.md); 0: none"}),
       row<&SolverSpec::iterations>(
           {.name = "iterations",
            .range = between(0, 100000),

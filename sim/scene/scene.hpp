@@ -123,9 +123,12 @@ enum class LinearSolver { automatic, block_jacobi, multigrid };
 
 struct SolverSpec {
   IntegratorKind integrator = IntegratorKind::symplectic_euler;
-  double dt = 0.001;           // s, fixed step, > 0 (ignored when dt_auto)
-  bool dt_auto = false;        // dt = "auto": the step chosen from the highest frequency
-  int substeps = 0;            // integrator steps of dt / substeps per step, >= 1; 0 = "auto"
+  double dt = 0.001;     // s, fixed step, > 0 (ignored when dt_auto)
+  bool dt_auto = false;  // dt = "auto": the step chosen from the highest frequency
+  int substeps = 0;      // integrator steps of dt / substeps per step, >= 1; 0 = "auto"
+  // m: an accuracy instead of a step (docs/tuning.md): the commands replace the solver's settings
+  // with the cheapest that `clothlab tune` finds within it (0: none; the solver never reads it).
+  double tolerance = 0.0;
   int iterations = 0;          // xpbd: per substep (1); local_global: per step (10); vbd: (30)
   bool tethers = true;         // xpbd on grid cloths: long-range attachments to the pins
   bool coarse_stretch = true;  // xpbd on grid cloths: one-sided stretch constraints, coarser grids

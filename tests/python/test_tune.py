@@ -71,3 +71,19 @@ def test_errors_equal_the_command_lines(scene, small_scene_text, tmp_path):
         compared += 1
     assert compared >= 10
 
+
+
+def test_simulation_takes_the_tolerances_setting_from_the_cache(scene, tmp_path, monkeypatch):
+    monkeypatch.setenv("CLOTHLAB_CACHE_DIR", str(tmp_path / "cache"))
+    scene.set("solver.tolerance", 0.02)
+    first = clothlab.Simulation(scene)
+    assert "the cheapest of the tune within 20 mm to 1 s" in first.backend_note
+    assert "from the cache" not in first.backend_note
+    assert len(list((tmp_path / "cache").glob("tune-*.toml"))) == 1
+    scene.set("solver.tolerance", 0.005)  # another tolerance reads the same entry
+    second = clothlab.Simulation(scene)
+    assert "within 5 mm to 1 s" in second.backend_note
+    assert second.backend_note.endswith("(from the cache)")
+    scene.set("solver.tolerance", 1e-12)
+    with pytest.raises(clothlab.SceneError, match="below the reference's own error"):
+        clothlab.Simulation(scene)
