@@ -63,8 +63,8 @@ bench::Table data_table(const tune::Result& r) {
       const bool has = k < row.error.size();
       t.add({row.setting.label, row.setting.family, has ? exact(r.times[k]) : "-",
              has ? exact(row.error[k].rms) : "-", has ? exact(row.error[k].max) : "-",
-             has ? exact(row.energy_drift) : "-", exact(row.cost), on ? "yes" : "no",
-             row.status, joined(row.setting)});
+             has ? exact(row.energy_drift) : "-", exact(row.cost), on ? "yes" : "no", row.status,
+             joined(row.setting)});
     }
   }
   return t;

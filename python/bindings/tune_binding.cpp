@@ -1,7 +1,8 @@
 // The pieces of `clothlab tune` (tune/tune.hpp) that python/clothlab/tune.py runs as separate
 // tasks, on this machine or on a Dask cluster: the settings from a scene's spectrum, one run to
 // the sample times (a task), a run measured against the reference's (on the client), and the
-// frontier and recommendation of a table. Settings and rows cross as dicts, positions as numpy arrays.
+// frontier and recommendation of a table. Settings and rows cross as dicts, positions as numpy
+// arrays.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -55,7 +56,8 @@ tune::SampledRun run_of(const py::array_t<double>& positions, const std::vector<
   const auto r = positions.unchecked<3>();
   for (py::ssize_t k = 0; k < r.shape(0); ++k) {
     tune::Positions p(std::size_t(r.shape(1)));
-    for (py::ssize_t i = 0; i < r.shape(1); ++i) p[std::size_t(i)] = {r(k, i, 0), r(k, i, 1), r(k, i, 2)};
+    for (py::ssize_t i = 0; i < r.shape(1); ++i)
+      p[std::size_t(i)] = {r(k, i, 0), r(k, i, 1), r(k, i, 2)};
     run.at.push_back(std::move(p));
   }
   run.energy = energy;
