@@ -16,6 +16,7 @@
 #include <toml++/toml.h>
 
 #include "sim/core/temp_files.hpp"
+#include "sim/scene/scene_error.hpp"
 
 namespace clothlab::tune {
 
@@ -191,6 +192,21 @@ TolerancePick resolve_tolerance(const SceneReader& read, const std::string& cach
   TolerancePick p = pick(*summary, tolerance);
   p.cached = cached;
   return p;
+}
+
+TolerancePick resolve_scene_tolerance(const SceneReader& read, const Scene& scene,
+                                      const std::string& file, const std::string& cache_path,
+                                      std::ostream* log) {
+  const std::string key = "solver.tolerance";
+  const auto at = scene.locations.find(key);
+  const SourceLoc where = at != scene.locations.end() ? at->second : SourceLoc{file, 0, 0};
+  try {
+    return resolve_tolerance(read, cache_path, scene.solver.tolerance, log);
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(where, key, e.what());
+  } catch (const std::runtime_error& e) {  // a reference that diverges, a cache not written
+    throw SceneError(where, key, std::string("the scene cannot be tuned: ") + e.what());
+  }
 }
 
 }  // namespace clothlab::tune

@@ -58,4 +58,10 @@ TolerancePick pick(const TuneSummary& summary, double tolerance);
 TolerancePick resolve_tolerance(const SceneReader& read, const std::string& cache_path,
                                 double tolerance, std::ostream* log);
 
+// resolve_tolerance for `scene`'s solver.tolerance, with every failure a SceneError at that key
+// (at `file` when the key has no location): what the commands and the Python module call.
+TolerancePick resolve_scene_tolerance(const SceneReader& read, const Scene& scene,
+                                      const std::string& file, const std::string& cache_path,
+                                      std::ostream* log);
+
 }  // namespace clothlab::tune

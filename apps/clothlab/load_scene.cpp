@@ -1,7 +1,6 @@
 // Scene loading shared by the subcommands: bad input is reported the same way everywhere.
 #include <cstdio>
 #include <iostream>
-#include <stdexcept>
 
 #include "apps/clothlab/commands.hpp"
 #include "apps/clothlab/memory_check.hpp"
@@ -24,34 +23,14 @@ std::optional<Scene> load_scene(const char* command, const std::string& path,
   }
 }
 
-namespace {
-
-// The tolerance's setting (docs/tuning.md, "A tolerance in the scene"), or a SceneError at the
-// key when it cannot be met or the scene cannot be tuned.
-tune::TolerancePick pick_setting(const Scene& scene, const std::string& path,
-                                 const std::vector<std::string>& overrides, bool quiet) {
-  const std::string key = "solver.tolerance";
-  const auto at = scene.locations.find(key);
-  const SourceLoc where = at != scene.locations.end() ? at->second : SourceLoc{path, 0, 0};
-  const std::string cache = tune::cache_file(read_scene_text(path), overrides);
-  try {
-    return tune::resolve_tolerance(tune::file_reader(path, overrides), cache,
-                                   scene.solver.tolerance, quiet ? nullptr : &std::cerr);
-  } catch (const std::invalid_argument& e) {
-    throw SceneError(where, key, e.what());
-  } catch (const std::runtime_error& e) {  // a reference that diverges, a cache not written
-    throw SceneError(where, key, std::string("the scene cannot be tuned: ") + e.what());
-  }
-}
-
-}  // namespace
-
 std::optional<Scene> load_scene_to_run(const char* command, const std::string& path,
                                        const std::vector<std::string>& overrides, bool quiet) {
   std::optional<Scene> scene = load_scene(command, path, overrides);
   if (!scene || !(scene->solver.tolerance > 0.0)) return scene;
   try {
-    const tune::TolerancePick p = pick_setting(*scene, path, overrides, quiet);
+    const tune::TolerancePick p = tune::resolve_scene_tolerance(
+        tune::file_reader(path, overrides), *scene, path,
+        tune::cache_file(read_scene_text(path), overrides), quiet ? nullptr : &std::cerr);
     if (!quiet)
       std::fprintf(stderr, "clothlab %s: solver.tolerance %.3g mm: %s%s\n", command,
                    1e3 * scene->solver.tolerance, p.why.c_str(),

@@ -7,6 +7,7 @@
 
 #include "python/bindings/scene_source.hpp"
 #include "sim/divergence.hpp"
+#include "tune/tune.hpp"
 
 namespace clothlab::py_bindings {
 
@@ -15,6 +16,9 @@ void bind_simulation(pybind11::module_& m);
 void bind_trace(pybind11::module_& m);
 void bind_render(pybind11::module_& m);
 void bind_tune(pybind11::module_& m);
+
+// The scene read with extra --set lines after its own (tune/tune.hpp).
+tune::SceneReader reader_of(const SceneSource& source);
 
 // Raises clothlab.DivergenceError for `d` (throws pybind11::error_already_set).
 [[noreturn]] void raise_divergence(const Divergence& d);

@@ -13,8 +13,6 @@ namespace py = pybind11;
 
 namespace clothlab::py_bindings {
 
-namespace {
-
 tune::SceneReader reader_of(const SceneSource& source) {
   return [source](const std::vector<std::string>& extra) {
     SceneSource s = source;
@@ -22,6 +20,8 @@ tune::SceneReader reader_of(const SceneSource& source) {
     return s.load();
   };
 }
+
+namespace {
 
 tune::Options options_of(int threads) {
   tune::Options o;
