@@ -500,6 +500,18 @@ if(XVFB_RUN)
   # sanitizers the solver needs more than its share of a frame.
   clothlab_view_test(real_time "CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=30"
     "29 frames: .* (9[5-9]|100) % of real time simulated \\(1 copy, CPU backend")
+  # E turns the error view on: a reference run beside the shown one, the cloth coloured by the
+  # distance; P restarts the comparison from the pushed state; the window's summary counts the
+  # comparisons made (docs/tuning.md, "The error in the window").
+  set(CLOTHLAB_VIEW_ERROR_SHOT ${CLOTHLAB_TRACE_OUT}/view_error_view.png)
+  clothlab_view_test(error_view
+    "CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=40|CLOTHLAB_VIEW_SCREENSHOT=${CLOTHLAB_VIEW_ERROR_SHOT}|CLOTHLAB_VIEW_KEYS=,E,,,,,,,,,,,,,,,,,,,P"
+    "error view: reference rk4 \\(double\\), step [0-9.]+ ms, comparing from t = 0.00 s.*error view: comparing from t = [0-9.]+ s \\(push\\).*error view: [1-9][0-9]* comparisons to t = [0-9.]+ s")
+  add_test(NAME cli.view.error_view_screenshot
+    COMMAND ${CMAKE_COMMAND} -DFILE=${CLOTHLAB_VIEW_ERROR_SHOT} -DMIN_BYTES=30000
+      -P ${CMAKE_CURRENT_LIST_DIR}/check_png.cmake)
+  set_tests_properties(cli.view.error_view PROPERTIES FIXTURES_SETUP view_error)
+  set_tests_properties(cli.view.error_view_screenshot PROPERTIES FIXTURES_REQUIRED view_error)
   # D drops the cloth: the solver lets go of its pins (the window says so only when it has).
   clothlab_view_test(drop_key "CLOTHLAB_VIEW_EXIT_AFTER_FRAMES=6|CLOTHLAB_VIEW_KEYS=,,D"
     "clothlab view: pins released")

@@ -5,11 +5,13 @@
 
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include "sim/fields/frame_fields.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
+#include "vis/render/scalar_field.hpp"
 
 namespace clothlab {
 namespace {
@@ -23,6 +25,30 @@ std::unique_ptr<Solver> stretched_sheet(double factor, Vec3d shift) {
   }
   solver->set_state(x, v);
   return solver;
+}
+
+// The window's error view hands in each vertex's distance from its reference: the "error" colour
+// shows it in mm; a distance of another length (another cloth, or none yet) shows as zero, and
+// every frame starts without one.
+TEST(FrameFields, TheReferenceDistanceIsHandedInAndShownInMillimetres) {
+  std::unique_ptr<Solver> solver = stretched_sheet(1.0, {0.0, 0.0, 0.0});
+  const std::size_t n = solver->vertex_count();
+  FieldSnapshot snapshot;
+  snapshot.take(*solver, {});
+  std::vector<float> d(n);
+  for (std::size_t i = 0; i < n; ++i) d[i] = 1e-4f * float(i);
+  snapshot.set_reference_distance(d);
+  std::vector<float> mm;
+  vis::scalar_values(snapshot.fields(), vis::ScalarField::error, ForceSource::total, mm);
+  ASSERT_EQ(mm.size(), n);
+  for (std::size_t i = 0; i < n; ++i) EXPECT_NEAR(mm[i], 0.1 * double(i), 1e-5);
+  snapshot.set_reference_distance(std::vector<float>(n + 1, 1.0f));
+  vis::scalar_values(snapshot.fields(), vis::ScalarField::error, ForceSource::total, mm);
+  for (float v : mm) EXPECT_EQ(v, 0.0f);
+  EXPECT_TRUE(snapshot.take(*solver, {}).reference_distance.empty());
+  EXPECT_THROW(
+      vis::scalar_values(snapshot.fields(), vis::ScalarField::error, ForceSource::total, mm),
+      std::logic_error);
 }
 
 // A uniform stretch by s strains every spring, and so every vertex's mean, by s - 1; a

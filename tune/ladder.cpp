@@ -66,9 +66,13 @@ int substeps_for(double step) {
   return std::max(1, int(std::ceil(kFrame / step * (1.0 - 1e-12))));
 }
 
+int reference_substeps(const Spectrum& spectrum, double fraction, bool halved) {
+  const int n = substeps_for(fraction * limit_of(IntegratorKind::rk4, spectrum));
+  return halved ? 2 * n : n;
+}
+
 Setting reference_setting(const Spectrum& spectrum, double fraction, bool halved) {
-  int n = substeps_for(fraction * limit_of(IntegratorKind::rk4, spectrum));
-  if (halved) n *= 2;
+  const int n = reference_substeps(spectrum, fraction, halved);
   return {"reference", std::string("rk4 (double), ") + std::to_string(n) + " substeps",
           base("rk4", "double", n)};
 }

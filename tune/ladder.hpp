@@ -15,6 +15,8 @@ inline constexpr double kFrame = 1.0 / 60.0;  // s: the display step every setti
 // The reference: RK4 in double at `fraction` of its stability limit (Spectrum), the step
 // rounded down to divide a frame; `halved` gives the same at half that step.
 Setting reference_setting(const Spectrum& spectrum, double fraction, bool halved);
+// Its steps a frame: the frame divided by the step, rounded up.
+int reference_substeps(const Spectrum& spectrum, double fraction, bool halved);
 
 // The ladder, cheapest knob first within each family:
 //  explicit:    symplectic Euler (float) at 0.9 of its stability limit and at half that step,

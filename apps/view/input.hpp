@@ -24,6 +24,7 @@ enum class Action {
   toggle_force_arrows,   // F
   toggle_normal_arrows,  // N
   toggle_contact_view,   // C: colour by the gap to other cloth, crossings in magenta
+  toggle_error_view,     // E: a reference run beside the shown one; colour by the distance
   push,                  // P
   toggle_wind,           // W
   release_pins,          // D: drop the cloth (onto the colliders); R pins it again

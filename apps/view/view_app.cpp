@@ -115,7 +115,7 @@ void ViewApp::install_callbacks() {
     if (button != GLFW_MOUSE_BUTTON_LEFT) return;
     // Ctrl + left drag pulls the cloth: the vertex is picked in the frame's draw.
     if (action == GLFW_PRESS && !ui && (mods & GLFW_MOD_CONTROL)) app.grab_.press(x, y);
-    if (action == GLFW_RELEASE) app.grab_.release(app.session_.solver());
+    if (action == GLFW_RELEASE) app.grab_released(app.grab_.release(app.session_.solver()));
     if (action == GLFW_PRESS && !ui && !(mods & GLFW_MOD_CONTROL)) {
       app.left_press_ = std::array<double, 2>{x, y};
     } else if (action == GLFW_RELEASE && app.left_press_) {
@@ -144,6 +144,8 @@ int ViewApp::run() {
   }
   // Closing the window while recording finishes the file: it is complete, never cut short.
   if (session_.recording()) std::printf("clothlab view: %s\n", session_.stop_recording().c_str());
+  const std::string errors = error_.summary();
+  if (!errors.empty()) std::printf("clothlab view: %s\n", errors.c_str());
   // The run's timing in one line (the panel shows it live): what a benchmark of the window reads.
   if (run_frames_ > 0) {
     const double n = static_cast<double>(run_frames_);
@@ -196,6 +198,13 @@ void ViewApp::frame() {
   if (rendered_generation_ == session_.generation()) simulate(wall);
 
   if (const auto clicked = draw_control_panel(session_, view_, panel_, stats_)) dispatch(*clicked);
+  // Colouring by the error needs the reference: choosing it in the panel turns the view on.
+  if (view_.color.field == ScalarField::error && !error_.on()) toggle_error_view();
+  if (colour_by_error_ && error_.has_comparison()) {
+    view_.color.field = ScalarField::error;
+    colour_by_error_ = false;
+  }
+  error_.draw_panel();
   if (panel_.open_scene) {
     open_scene(*panel_.open_scene);
     panel_.open_scene.reset();
@@ -235,7 +244,9 @@ void ViewApp::simulate(double wall_seconds) {
     step_cost_ = 0.0;
   }
   const double before = session_.solver().time();
-  const bool running = !session_.paused && !session_.divergence();
+  // The error view's shown run waits while the reference is on its way to the last time.
+  const bool waiting = !error_.may_advance();
+  const bool running = !session_.paused && !session_.divergence() && !waiting;
   const double dt = session_.solver().dt();
   const StepCostProbe probe =
       running && step_cost_ == 0.0 ? time_first_steps(wall_seconds) : StepCostProbe{};
@@ -243,7 +254,8 @@ void ViewApp::simulate(double wall_seconds) {
   const double probed = double(probe.steps) * dt;  // simulated by the timed steps
   FrameCap cap = stepper_.cap(wall_seconds, step_cost_, dt);
   cap.seconds = std::max(0.0, cap.seconds - probed);
-  const double request = music_.frame_advance(session_, wall_seconds - probed, cap.seconds);
+  const double request =
+      waiting ? 0.0 : music_.frame_advance(session_, wall_seconds - probed, cap.seconds);
   const auto t0 = std::chrono::steady_clock::now();
   const FrameAdvance r = session_.advance(stepper_, request, cap);
   sample.step_seconds =
@@ -253,6 +265,7 @@ void ViewApp::simulate(double wall_seconds) {
   sample.requested = running ? request + probed : 0.0;
   sample.limit = r.capped ? r.limit : FrameLimit::none;
   stats_.add(sample);
+  error_.after_advance(session_, sample.step_seconds, sample.simulated, wall_seconds);
   if (running)
     session_.measured_frame(sample.steps, sample.step_seconds,
                             std::chrono::duration<double>(t0.time_since_epoch()).count());
@@ -377,6 +390,9 @@ void ViewApp::dispatch_session(Action action) {
     case Action::toggle_parallel:
       session_.toggle_parallel();
       break;
+    case Action::toggle_error_view:
+      toggle_error_view();
+      break;
     default:
       break;
   }
@@ -387,13 +403,39 @@ void ViewApp::push() {
   const glm::vec3 d = glm::normalize(view_.camera.target - view_.camera.eye());
   const double s = panel_.push_strength;
   session_.push(Vec3d{s * d.x, s * d.y, s * d.z});
+  restart_comparison("push");
 }
 
 // D: the cloth lets go of its pins and drops (onto the colliders); R pins it again.
 void ViewApp::release_pins() {
   session_.solver().release_pins();
   if (!session_.solver().pins_released()) return;
+  restart_comparison("drop");
   std::printf("clothlab view: %s\n", kPinsReleasedMessage);
+}
+
+// E (and the panel's colour-by "error"): the reference beside the shown run, the cloth coloured
+// by its distance; again: off, and the cloth's colours back to none.
+void ViewApp::toggle_error_view() {
+  panel_.message = error_.toggle(session_);
+  std::printf("clothlab view: %s\n", panel_.message.c_str());
+  // The cloth takes the error's colours with the first comparison (none before: not a distance
+  // of zero).
+  colour_by_error_ = error_.on();
+  if (!error_.on() && view_.color.field == ScalarField::error)
+    view_.color.field = ScalarField::none;
+}
+
+// A pull changed the shown run by hand: the comparison starts again from where it left the cloth.
+void ViewApp::grab_released(const std::string& line) {
+  if (!line.empty()) restart_comparison("pull");
+}
+
+// The shown run was changed by hand: the error view compares afresh from its state now.
+void ViewApp::restart_comparison(const char* why) {
+  if (!error_.on()) return;
+  error_.restart(session_, why);
+  std::printf("clothlab view: error view: %s\n", error_.note().c_str());
 }
 
 // The scripted Ctrl + left drag of CLOTHLAB_VIEW_DRAG: what the mouse callbacks would do.
@@ -413,6 +455,7 @@ void ViewApp::drag_hook() {
   } else if (frame_index_ == f1) {
     const std::string line = grab_.release(session_.solver());
     std::printf("clothlab view: grab: %s\n", line.empty() ? "nothing grabbed" : line.c_str());
+    grab_released(line);
   }
 }
 
@@ -467,7 +510,10 @@ void ViewApp::draw(int width, int height) {
   // snapshot per frame serves the cloth, the diagnostics, the probe and a grab's pick.
   const bool probing = panel_.probe || grab_.pending();
   if (!session_.divergence()) {
-    const FrameFields& fields = snapshot_.take(solver, frame_request(view_, *renderer_, probing));
+    snapshot_.take(solver, frame_request(view_, *renderer_, probing));
+    if (view_.color.field == ScalarField::error)
+      snapshot_.set_reference_distance(error_.per_vertex());
+    const FrameFields& fields = snapshot_.fields();
     renderer_->update_cloth(fields);
     diagnostics_->update(solver, fields, view_, *renderer_);
   }
@@ -475,7 +521,7 @@ void ViewApp::draw(int width, int height) {
   renderer_->draw(view_, width, height, covered_by_panel(width, height, window_w, window_h));
   diagnostics_->draw(view_, *renderer_);
   if (scene_target_) scene_target_->resolve_into(0);
-  draw_legends(view_, *diagnostics_, renderer_->strain_range());
+  draw_legends(view_, *diagnostics_, renderer_->strain_range(), error_.panel_bottom());
   if (grab_.pending() && session_.divergence()) grab_.forget();  // nothing sane to pull
   if (grab_.pending()) {
     grab_.pick(solver, snapshot_.fields(), *renderer_, field_pass_, view_, width, height, window_w,
@@ -534,6 +580,7 @@ void ViewApp::update_title() {
     title += " — diverged (R resets)";
   else if (session_.paused)
     title += " — paused";
+  if (error_.on()) title += " — " + error_.title_note();
   if (panel_.probe && !probe_title_.empty()) title += " — " + probe_title_;
   window_.set_title(title);
 }

@@ -12,6 +12,7 @@
 
 #include "apps/view/cloth_grab.hpp"
 #include "apps/view/control_panel.hpp"
+#include "apps/view/error_view.hpp"
 #include "apps/view/frame_stats.hpp"
 #include "apps/view/glfw_window.hpp"
 #include "apps/view/input.hpp"
@@ -102,7 +103,10 @@ class ViewApp {
   void update_title();
   void push();
   void release_pins();
-  void drag_hook();  // CLOTHLAB_VIEW_DRAG
+  void toggle_error_view();                     // E
+  void grab_released(const std::string& line);  // a pull ended: `line` says what was pulled
+  void restart_comparison(const char* why);     // push, drop, pull: the error view restarts
+  void drag_hook();                             // CLOTHLAB_VIEW_DRAG
   void open_scene(const std::string& path);
   void report_backend();            // prints the session's backend note when it changes
   std::string copies_text() const;  // "1 copy", "4 copies"
@@ -131,7 +135,9 @@ class ViewApp {
   ViewSettings view_;
   DisplayMode last_shaded_ = DisplayMode::lambert;
   MouseCamera mouse_;
-  ClothGrab grab_;  // Ctrl + left drag
+  ClothGrab grab_;                // Ctrl + left drag
+  ErrorView error_;               // E: the distance from a reference run beside this one
+  bool colour_by_error_ = false;  // E was pressed: colour by the error from its first comparison
   PanelState panel_;
   FrameStepper stepper_;
   double step_cost_ = 0.0;  // s of wall time per solver step, smoothed; 0: not measured yet

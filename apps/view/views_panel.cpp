@@ -1,5 +1,7 @@
 #include "apps/view/views_panel.hpp"
 
+#include <algorithm>
+
 #include <imgui.h>
 
 #include <string>
@@ -37,7 +39,7 @@ void draw_view_editors(ViewSettings& view) {
   const ScalarField before = c.field;
   enum_combo("colour by", c.field,
              {ScalarField::none, ScalarField::force, ScalarField::speed, ScalarField::strain,
-              ScalarField::height, ScalarField::contact},
+              ScalarField::height, ScalarField::contact, ScalarField::error},
              scalar_field_name);
   // A signed field starts on the diverging map with a symmetric range; the user may change it.
   if (c.field != before && scalar_field_signed(c.field)) {
@@ -80,12 +82,14 @@ void draw_view_editors(ViewSettings& view) {
 }
 
 void draw_legends(const ViewSettings& view, const Diagnostics& diagnostics,
-                  const std::optional<ScalarRange>& strain) {
+                  const std::optional<ScalarRange>& strain, float top) {
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   const ImVec2 max(viewport->WorkPos.x + viewport->WorkSize.x,
                    viewport->WorkPos.y + viewport->WorkSize.y);
   if (!view.legends) return;
-  draw_legends(ImGui::GetBackgroundDrawList(), viewport->WorkPos, max, view, diagnostics, strain);
+  const ImVec2 min(viewport->WorkPos.x,
+                   std::max(viewport->WorkPos.y, std::min(top, max.y - 100.0f)));
+  draw_legends(ImGui::GetBackgroundDrawList(), min, max, view, diagnostics, strain);
 }
 
 }  // namespace clothlab::vis

@@ -12,8 +12,9 @@ namespace clothlab::vis {
 void draw_view_editors(ViewSettings& view);
 
 // A colour bar for each view that maps a value to a colour (the cloth's scalar, the force
-// arrows' magnitude, mode 1's strain), with its range and unit, at the window's right edge.
+// arrows' magnitude, mode 1's strain), with its range and unit, at the window's right edge,
+// below `top` (window points: under a window drawn there, such as the error view's).
 void draw_legends(const ViewSettings& view, const Diagnostics& diagnostics,
-                  const std::optional<ScalarRange>& strain);
+                  const std::optional<ScalarRange>& strain, float top = 0.0f);
 
 }  // namespace clothlab::vis

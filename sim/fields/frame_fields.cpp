@@ -51,7 +51,16 @@ const FrameFields& FieldSnapshot::take(Solver& solver, const FieldRequest& reque
   }
   take_strain(solver, request);
   take_contact_gaps(solver, request);
+  f.reference_distance.clear();  // this frame's comes from set_reference_distance
   return f;
+}
+
+void FieldSnapshot::set_reference_distance(const std::vector<float>& distance) {
+  std::vector<float>& d = fields_.reference_distance;
+  if (distance.size() == fields_.vertices)
+    d.assign(distance.begin(), distance.end());
+  else
+    d.assign(fields_.vertices, 0.0f);
 }
 
 void FieldSnapshot::take_contact_gaps(const Solver& solver, const FieldRequest& request) {

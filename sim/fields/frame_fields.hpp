@@ -45,6 +45,9 @@ struct FrameFields {
   // solver's self_thickness); NaN where an edge crosses a triangle (sim/fields/contact_gaps.hpp).
   std::vector<float> contact_gap;
   double contact_range = 0.0;
+  // Per vertex, m: the distance from the window's live reference run (tune/live_reference.hpp),
+  // handed in by the window (set_reference_distance), never computed from the solver.
+  std::vector<float> reference_distance;
   // The GPU backend's buffers, whose normals are up to date with `positions`; null on the CPU.
   const DeviceCloth* device = nullptr;
 
@@ -66,6 +69,9 @@ class FieldSnapshot {
   // clock stay as they were.
   const FrameFields& take(Solver& solver, const FieldRequest& request);
   const FrameFields& fields() const { return fields_; }
+  // The live reference's distance of each vertex for this frame: `distance` when it has one per
+  // vertex, else zeros (before the first comparison). Allocates only when the count changes.
+  void set_reference_distance(const std::vector<float>& distance);
   // Forgets the springs' topology: call when the solver was rebuilt with other springs.
   void forget_topology() {
     strain_.reset();

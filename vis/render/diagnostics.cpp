@@ -1,5 +1,7 @@
 #include "vis/render/diagnostics.hpp"
 
+#include <algorithm>
+
 #include "sim/fields/frame_fields.hpp"
 #include "vis/passes/arrow_pass.hpp"
 #include "vis/render/frame_request.hpp"
@@ -12,6 +14,17 @@ namespace {
 // Normal arrows are this fraction of the spacing between shown vertices long; the shaft radius
 // is this fraction of the spacing.
 constexpr float kNormalLength = 0.7f, kShaftRadius = 0.06f;
+
+// The automatic ranges that start at zero: the contact gap from touching to out of reach, the
+// distance from the reference from none to the largest.
+std::optional<ScalarRange> own_range(const ViewSettings& view, const FrameFields& fields) {
+  if (view.color.range == RangeMode::fixed) return std::nullopt;
+  if (view.color.field == ScalarField::contact) return ScalarRange{0.0, fields.contact_range};
+  if (view.color.field != ScalarField::error) return std::nullopt;
+  float largest = 0.0f;
+  for (float d : fields.reference_distance) largest = std::max(largest, d);
+  return ScalarRange{0.0, std::max(1e3 * double(largest), 1e-3)};  // mm, as the scalars
+}
 
 }  // namespace
 
@@ -33,9 +46,8 @@ void Diagnostics::update(const SolverState& solver, const FrameFields& fields,
     scalars_ = {};
   } else {
     scalar_values(fields, view.color.field, view.force_source, scalars_);
-    color_range_ = view.color.field == ScalarField::contact && view.color.range != RangeMode::fixed
-                       ? ScalarRange{0.0, fields.contact_range}  // from touching to out of reach
-                       : choose_range(view.color.range, scalars_, view.color.fixed);
+    color_range_ = own_range(view, fields);
+    if (!color_range_) color_range_ = choose_range(view.color.range, scalars_, view.color.fixed);
     renderer.set_scalars(scalars_, *color_range_);
   }
 

@@ -25,6 +25,7 @@ void add_color_field(const ViewSettings& view, FieldRequest& r) {
       return;
     case ScalarField::none:
     case ScalarField::height:  // from the positions
+    case ScalarField::error:   // handed in by the window (FieldSnapshot::set_reference_distance)
       return;
   }
 }

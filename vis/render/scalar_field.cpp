@@ -13,13 +13,14 @@ struct FieldInfo {
   ScalarField field;
   std::string_view name, unit, title;
 };
-constexpr std::array<FieldInfo, 6> kFields{{
+constexpr std::array<FieldInfo, 7> kFields{{
     {ScalarField::none, "none", "", ""},
     {ScalarField::force, "force", "N", "|force|"},
     {ScalarField::speed, "speed", "m/s", "|velocity|"},
     {ScalarField::strain, "strain", "", "strain (l-l0)/l0"},
     {ScalarField::height, "height", "m", "height"},
     {ScalarField::contact, "contact", "m", "gap to cloth (magenta: crossed)"},
+    {ScalarField::error, "error", "mm", "distance from the reference"},
 }};
 
 const FieldInfo& info(ScalarField field) {
@@ -77,6 +78,10 @@ void scalar_values(const FrameFields& fields, ScalarField field, ForceSource sou
     case ScalarField::contact:
       require_field(fields.contact_gap, n, "the contact gaps");
       std::copy(fields.contact_gap.begin(), fields.contact_gap.end(), out.begin());
+      return;
+    case ScalarField::error:  // in mm: cloth errors of interest are millimetres to centimetres
+      require_field(fields.reference_distance, n, "the distances from the reference");
+      for (std::size_t v = 0; v < n; ++v) out[v] = 1e3f * fields.reference_distance[v];
       return;
   }
 }

@@ -25,7 +25,8 @@ bool scalar_field_signed(ScalarField field);
 // One scalar per vertex from the frame's snapshot into `out`: |force| of `source`, |velocity|,
 // strain (the mean engineering strain (l - l0) / l0 of the springs that end at the vertex,
 // sim/fields/spring_strain.hpp), height (world y) or contact (the gap to other cloth,
-// sim/fields/contact_gaps.hpp: NaN, the warning colour, where cloth crosses cloth). The snapshot
+// sim/fields/contact_gaps.hpp: NaN, the warning colour, where cloth crosses cloth) or error (the
+// distance from the window's live reference, in mm). The snapshot
 // must hold the field (frame_request asks for it); never allocates once `out` has the vertex count.
 void scalar_values(const FrameFields& fields, ScalarField field, ForceSource source,
                    std::vector<float>& out);

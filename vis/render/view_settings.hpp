@@ -58,8 +58,9 @@ struct OrbitCamera {
 
 // What the cloth is coloured by in modes 2 and 3 (none: the mode's own colours). Each scalar is
 // computed per vertex on the CPU only while it is shown (vis/render/scalar_field.hpp) and mapped
-// through the colour map per fragment.
-enum class ScalarField { none, force, speed, strain, height, contact };
+// through the colour map per fragment. error (the distance from the window's live reference run)
+// is the window's alone: only it runs a reference, so kColourScalars leaves it out.
+enum class ScalarField { none, force, speed, strain, height, contact, error };
 
 struct ColorSettings {
   ScalarField field = ScalarField::none;
