@@ -240,6 +240,18 @@ clothlab_cli_test(tune.negative_tolerance 2 "clothlab tune: --tolerance: Value -
   tune ${CLOTHLAB_DEFAULT_SCENE} --tolerance -1)
 clothlab_cli_test(tune.bad_scene 2 "clothlab tune: .*negative_dt\\.toml:6:[0-9]+: solver\\.dt: must be > 0"
   tune ${CLOTHLAB_BAD_SCENES}/negative_dt.toml)
+# --scheduler runs the settings on a Dask cluster through the Python module
+# (tests/python/test_tune.py runs one); an address that is not one is bad input, and a build
+# without the module (the sanitizers') says so.
+if(CLOTHLAB_PYTHON)
+  clothlab_cli_test(tune.scheduler_not_an_address 2
+    "clothlab tune: --scheduler nohost: not a scheduler's address"
+    tune ${CLOTHLAB_DEFAULT_SCENE} --scheduler nohost --out ${CLOTHLAB_TRACE_OUT}/tune_nohost.csv)
+else()
+  clothlab_cli_test(tune.scheduler_without_python 2
+    "clothlab tune: --scheduler: this build has no Python module"
+    tune ${CLOTHLAB_DEFAULT_SCENE} --scheduler nohost --out ${CLOTHLAB_TRACE_OUT}/tune_nohost.csv)
+endif()
 
 # solver.tolerance (docs/tuning.md, "A tolerance in the scene"): the first trace tunes the 8 x 8
 # scene to 1 s and keeps the table in the cache folder, the second reads it from there, and a

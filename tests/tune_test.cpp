@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "load/scene_load.hpp"
 #include "sim/solver.hpp"
 #include "tune/ladder.hpp"
+#include "tune/result_file.hpp"
 #include "tune/tolerance.hpp"
 #include "tune/tune.hpp"
 #include "tune_sheet.hpp"
@@ -169,6 +171,53 @@ TEST(Tune, DivergingStoppedAndInapplicableCasesAreRows) {
   const std::vector<Row> rows = {diverged, stopped, refused};
   EXPECT_TRUE(frontier(rows).empty());
   EXPECT_EQ(cheapest_within(rows, 1e9), std::nullopt);
+}
+
+// `clothlab tune --scheduler` reads back the table the Python module wrote: every number to the
+// bit (1/3, the smallest double, an infinite cost), the unfinished rows' missing times, every
+// word; a file that is not one names itself.
+TEST(Tune, ResultFileReadsBackExactly) {
+  Result r;
+  r.times = {1.0 / 60.0, 0.5, 1.0};
+  r.reference.setting = {"reference", "rk4 (double), 48 substeps", {"solver.integrator=rk4"}};
+  r.reference.self = {{1.0 / 3.0, 0.5}, {4.9e-324, 1e-300}, {1e-7, 2e-7}};
+  r.reference.cost = 0.4563;
+  r.reference.stop_after = 2.0 / 7.0;
+  r.rows = {made("a \"quoted\" label", 0.1, {0.05, 0.08, 0.07}),
+            made("d", std::numeric_limits<double>::infinity(), {0.001}, "diverged: x")};
+  r.rows[0].energy_drift = -1.0 / 7.0;
+  const std::string file = ::testing::TempDir() + "clothlab_tune_result.toml";
+  write_result(file, r);
+  const Result back = read_result(file);
+  EXPECT_EQ(back.times, r.times);
+  EXPECT_EQ(back.reference.setting.label, r.reference.setting.label);
+  EXPECT_EQ(back.reference.setting.overrides, r.reference.setting.overrides);
+  ASSERT_EQ(back.reference.self.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(back.reference.self[k].rms, r.reference.self[k].rms);
+    EXPECT_EQ(back.reference.self[k].max, r.reference.self[k].max);
+  }
+  EXPECT_EQ(back.reference.cost, r.reference.cost);
+  EXPECT_EQ(back.reference.stop_after, r.reference.stop_after);
+  ASSERT_EQ(back.rows.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(back.rows[i].setting.label, r.rows[i].setting.label);
+    EXPECT_EQ(back.rows[i].status, r.rows[i].status);
+    EXPECT_EQ(back.rows[i].cost, r.rows[i].cost);
+    EXPECT_EQ(back.rows[i].energy_drift, r.rows[i].energy_drift);
+    ASSERT_EQ(back.rows[i].error.size(), r.rows[i].error.size());
+    for (std::size_t k = 0; k < r.rows[i].error.size(); ++k)
+      EXPECT_EQ(back.rows[i].error[k].max, r.rows[i].error[k].max);
+  }
+  std::ofstream(file) << "times = []\n";
+  try {
+    read_result(file);
+    ADD_FAILURE() << "read an empty table";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(file + ": not a tune's result"), std::string::npos)
+        << e.what();
+  }
+  std::filesystem::remove(file);
 }
 
 TEST(Tune, TomlQuotesTheWordsAndKeepsTheNumbers) {

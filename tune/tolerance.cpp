@@ -1,7 +1,5 @@
 #include "tune/tolerance.hpp"
 
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -15,8 +13,8 @@
 
 #include <toml++/toml.h>
 
-#include "sim/core/temp_files.hpp"
 #include "sim/scene/scene_error.hpp"
+#include "tune/toml_io.hpp"
 
 namespace clothlab::tune {
 
@@ -71,36 +69,8 @@ std::string cache_file(const std::string& scene_text, const std::vector<std::str
   return cache_directory() + "/" + name;
 }
 
-namespace {
-
-// A double as a TOML string that std::strtod reads back to the same bits (the system's toml++
-// library rounds the last bits of some floats it parses).
-std::string exact(double v) {
-  char text[40];
-  std::snprintf(text, sizeof text, "\"%.17e\"", v);
-  return text;
-}
-
-double number(const toml::node_view<const toml::node>& n) {
-  const std::optional<std::string> text = n.value<std::string>();
-  return text ? std::strtod(text->c_str(), nullptr) : NAN;
-}
-
-void write_setting(std::ostream& out, const Setting& s) {
-  toml::array set;
-  for (const std::string& line : s.overrides) set.push_back(line);
-  out << "family = " << toml::value<std::string>(s.family)
-      << "\nlabel = " << toml::value<std::string>(s.label) << "\nset = " << set << "\n";
-}
-
-Setting setting_from(const toml::table& t) {
-  Setting s{t["family"].value_or(std::string()), t["label"].value_or(std::string()), {}};
-  if (const toml::array* set = t["set"].as_array())
-    for (const toml::node& n : *set) s.overrides.push_back(n.value_or(std::string()));
-  return s;
-}
-
-}  // namespace
+using toml_io::number;
+using toml_io::setting_from;
 
 std::optional<TuneSummary> read_summary(const std::string& path) {
   if (!std::filesystem::exists(path)) return std::nullopt;
@@ -126,28 +96,19 @@ std::optional<TuneSummary> read_summary(const std::string& path) {
 }
 
 void write_summary(const std::string& path, const TuneSummary& s) {
-  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
-  const TempFileGuard temp(path + ".tmp." + std::to_string(::getpid()));
-  {
-    std::ofstream out(temp.path());
+  toml_io::write_atomically(path, [&](std::ostream& out) {
     out << "# clothlab tune to " << kToleranceHorizon << " s (docs/tuning.md): the cache of "
-        << "solver.tolerance\nreference_error = " << exact(s.reference_error)
+        << "solver.tolerance\nreference_error = " << toml_io::exact(s.reference_error)
         << "\n\n[reference]\n";
-    write_setting(out, s.reference);
+    toml_io::write_setting(out, s.reference);
     for (const Row& r : s.rows) {
       out << "\n[[rows]]\n";
-      write_setting(out, r.setting);
-      out << "worst_rms = " << exact(r.worst_rms()) << "\ncost = " << exact(r.cost)
+      toml_io::write_setting(out, r.setting);
+      out << "worst_rms = " << toml_io::exact(r.worst_rms())
+          << "\ncost = " << toml_io::exact(r.cost)
           << "\nstatus = " << toml::value<std::string>(r.status) << "\n";
     }
-    if (!out) throw std::runtime_error("cannot write " + temp.path());
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp.path(), path, ec);
-  if (ec) {
-    std::filesystem::remove(temp.path());
-    throw std::runtime_error("cannot write " + path + ": " + ec.message());
-  }
+  });
 }
 
 TolerancePick pick(const TuneSummary& summary, double tolerance) {

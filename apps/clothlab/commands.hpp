@@ -70,6 +70,7 @@ struct TuneArgs {
   int threads = 0;                  // solver threads of every run; 0: the scene's own
   std::string out;                  // CSV file; the plot beside it as .png
   bool quiet = false;               // no progress lines
+  std::string scheduler;            // a Dask scheduler's address: the settings run there
 };
 int run_bench(const BenchArgs& args);
 int run_tune_command(const TuneArgs& args);

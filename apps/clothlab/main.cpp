@@ -294,6 +294,9 @@ CLI::App* add_tune(CLI::App& app, TuneArgs& tune) {
   cmd->add_option("--out", tune.out, "CSV file (default out/tune/SCENE.csv); the plot beside it")
       ->check(output_file());
   cmd->add_flag("--quiet", tune.quiet, "no progress lines");
+  cmd->add_option("--scheduler", tune.scheduler,
+                  "a Dask scheduler's address (tcp://host:8786): the runs go to its workers "
+                  "through the Python module (docs/tuning.md)");
   return cmd;
 }
 

@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "apps/clothlab/commands.hpp"
+#include "apps/clothlab/remote_tune.hpp"
 #include "bench/suites/report.hpp"
 #include "sim/scene/scene_error.hpp"
 #include "tune/work_precision_plot.hpp"
@@ -106,8 +107,8 @@ void print_recommendation(const tune::Result& r, double tolerance) {
   std::printf("\nwithin %s mm RMS up to %g s: ", mm(tolerance).c_str(), r.times.back());
   if (tolerance < r.reference.worst_self()) {
     std::printf(
-        "cannot be told: the reference itself is only good to %s mm (a shorter horizon "
-        "or a smaller tolerance of the reference would be needed)\n",
+        "cannot be told: the reference itself is only good to %s mm (ask for a larger "
+        "tolerance, or a shorter --duration, over which the reference is more accurate)\n",
         mm(r.reference.worst_self()).c_str());
     return;
   }
@@ -143,13 +144,19 @@ int run_tune_command(const TuneArgs& args) {
   o.threads = args.threads;
   o.log = args.quiet ? nullptr : &std::cerr;
   tune::Result result;
-  try {
-    result = tune::run_tune(tune::file_reader(args.scene, args.overrides), o);
-  } catch (const SceneError&) {
-    throw;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "clothlab tune: %s\n", e.what());
-    return 1;
+  if (!args.scheduler.empty()) {
+    RemoteTune remote = tune_on_scheduler(args);
+    if (!remote.result) return remote.status;
+    result = std::move(*remote.result);
+  } else {
+    try {
+      result = tune::run_tune(tune::file_reader(args.scene, args.overrides), o);
+    } catch (const SceneError&) {
+      throw;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "clothlab tune: %s\n", e.what());
+      return 1;
+    }
   }
   bench::print_table(std::cout, people_table(result));
   std::vector<double> tolerances = {0.06, 0.02, 0.005};

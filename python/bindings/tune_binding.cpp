@@ -2,11 +2,12 @@
 // tasks, on this machine or on a Dask cluster: the settings from a scene's spectrum, one run to
 // the sample times (a task), a run measured against the reference's (on the client), and the
 // frontier and recommendation of a table. Settings and rows cross as dicts, positions as numpy
-// arrays.
+// arrays; the whole table can be written for the command line to read back.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include "python/bindings/bindings.hpp"
+#include "tune/result_file.hpp"
 #include "tune/tune.hpp"
 
 namespace py = pybind11;
@@ -133,6 +134,20 @@ py::dict pick(const py::list& rows, std::optional<double> tolerance) {
   return d;
 }
 
+// The whole table as the command line reads it back (`clothlab tune --scheduler`).
+void write_result(const std::string& path, const std::vector<double>& times,
+                  const py::dict& reference, const std::vector<std::pair<double, double>>& self,
+                  double reference_cost, double stop_after, const py::list& rows) {
+  tune::Result r;
+  r.times = times;
+  r.reference.setting = setting_of(reference);
+  for (const auto& [rms, max] : self) r.reference.self.push_back({rms, max});
+  r.reference.cost = reference_cost;
+  r.reference.stop_after = stop_after;
+  for (const py::handle& row : rows) r.rows.push_back(row_of(row.cast<py::dict>()));
+  tune::write_result(path, r);
+}
+
 }  // namespace
 
 void bind_tune(py::module_& m) {
@@ -155,6 +170,8 @@ void bind_tune(py::module_& m) {
       },
       py::arg("a"), py::arg("b"));
   m.def("tune_pick", &pick, py::arg("rows"), py::arg("tolerance"));
+  m.def("tune_write_result", &write_result, py::arg("path"), py::arg("times"), py::arg("reference"),
+        py::arg("self_error"), py::arg("reference_cost"), py::arg("stop_after"), py::arg("rows"));
 }
 
 }  // namespace clothlab::py_bindings

@@ -32,7 +32,7 @@ def _runs_serial(scene, settings, times, threads, stop_slower):
     return coarse, fine, runs
 
 
-def _runs_on(client, scene, settings, times, threads, stop_slower):
+def _runs_on(client, scene, settings, times, threads, stop_slower, progress=None):
     # The finer reference first, so that it starts first; the ladder once the coarser one has
     # said how long a setting may take.
     fine = client.submit(_run, scene, settings["reference"], times, threads, 0.0, pure=False)
@@ -43,7 +43,41 @@ def _runs_on(client, scene, settings, times, threads, stop_slower):
     runs = client.map(
         _run, [scene] * n, settings["ladder"], [times] * n, [threads] * n, [limit] * n, pure=False
     )
+    if progress:
+        from dask.distributed import as_completed
+
+        labels = {f.key: s["label"] for f, s in zip(runs, settings["ladder"])}
+        for done, future in enumerate(as_completed(runs), 1):
+            progress(f"[{done}/{n}] {labels[future.key]}: {future.result()['failure'] or 'ok'}")
     return coarse, _checked(settings["reference"], fine.result()), client.gather(runs)
+
+
+def _measure(scene, duration, client, threads, samples, stop_slower, progress=None):
+    """The sample times, the settings, the two reference runs and the ladder's rows."""
+    times = _clothlab.tune_times(duration, samples)
+    settings = _clothlab.tune_settings(scene, threads)
+    if client == "serial":
+        coarse, fine, runs = _runs_serial(scene, settings, times, threads, stop_slower)
+    else:
+        coarse, fine, runs = _runs_on(
+            client, scene, settings, times, threads, stop_slower, progress
+        )
+    rows = [_clothlab.tune_row(s, r, fine, times) for s, r in zip(settings["ladder"], runs)]
+    return times, settings, coarse, fine, rows
+
+
+def write_result(path, scene, duration, client, threads=1, samples=4, progress=None):
+    """Runs the tune of `scene` on `client` and writes the whole table to `path` (TOML, exact
+    numbers) for the command line to read back (`clothlab tune --scheduler`,
+    tune/result_file.hpp)."""
+    times, settings, coarse, fine, rows = _measure(
+        scene, duration, client, threads, samples, True, progress
+    )
+    self_error = _clothlab.tune_distance(fine["positions"], coarse["positions"])
+    _clothlab.tune_write_result(
+        path, times, settings["reference"], self_error, fine["wall"] / times[-1],
+        2.0 * coarse["wall"], rows,
+    )
 
 
 def _frame(rows, reference, self_error, times, picked):
@@ -85,14 +119,10 @@ def tune(scene, duration=1.0, tolerance=None, client=None, threads=1, samples=4,
     if client is None:
         with local_client() as own:
             return tune(scene, duration, tolerance, own, threads, samples, stop_slower)
-    times = _clothlab.tune_times(duration, samples)
-    settings = _clothlab.tune_settings(scene, threads)
-    if client == "serial":
-        coarse, fine, runs = _runs_serial(scene, settings, times, threads, stop_slower)
-    else:
-        coarse, fine, runs = _runs_on(client, scene, settings, times, threads, stop_slower)
+    times, settings, coarse, fine, rows = _measure(
+        scene, duration, client, threads, samples, stop_slower
+    )
     self_error = _clothlab.tune_distance(fine["positions"], coarse["positions"])
-    rows = [_clothlab.tune_row(s, r, fine, times) for s, r in zip(settings["ladder"], runs)]
     picked = _clothlab.tune_pick(rows, tolerance)
     reference = dict(fine, setting=settings["reference"])
     frame = _frame(rows, reference, self_error, times, picked)

@@ -1,8 +1,12 @@
-"""Shared pieces of the Python module's tests: the repository, the command line and a small
-scene that runs in a fraction of a second."""
+"""Shared pieces of the Python module's tests: the repository, the command line, a small
+scene that runs in a fraction of a second and a Dask scheduler with two worker processes."""
+import contextlib
+import json
 import os
 import pathlib
 import subprocess
+import sys
+import time
 
 import pytest
 
@@ -65,3 +69,43 @@ def run_cli(*args):
     """Runs the command line; returns (exit status, stdout, stderr)."""
     r = subprocess.run([clothlab_binary(), *args], capture_output=True, text=True, timeout=300)
     return r.returncode, r.stdout, r.stderr
+
+
+def wait_for(path, seconds):
+    deadline = time.monotonic() + seconds
+    while not path.exists():
+        if time.monotonic() > deadline:
+            raise TimeoutError(f"{path} did not appear in {seconds} s")
+        time.sleep(0.1)
+
+
+@contextlib.contextmanager
+def scheduler_with_two_workers(folder):
+    """A Dask scheduler on this machine with two single-threaded worker processes, the way a
+    user starts one (python -m dask scheduler / worker); yields the scheduler file's path and the
+    scheduler's address, and stops them all on leaving."""
+    scheduler_file = folder / "scheduler.json"
+    quiet = {"stdout": subprocess.DEVNULL, "stderr": subprocess.DEVNULL}
+    processes = [
+        subprocess.Popen(
+            [sys.executable, "-m", "dask", "scheduler", "--host", "127.0.0.1",
+             "--port", "0", "--no-dashboard", "--scheduler-file", str(scheduler_file)],
+            **quiet,
+        )
+    ]
+    try:
+        wait_for(scheduler_file, 60)
+        for _ in range(2):
+            processes.append(subprocess.Popen(
+                [sys.executable, "-m", "dask", "worker", "--scheduler-file",
+                 str(scheduler_file), "--nthreads", "1", "--no-dashboard",
+                 "--local-directory", str(folder)],
+                **quiet,
+            ))
+        address = json.loads(scheduler_file.read_text())["address"]
+        yield scheduler_file, address
+    finally:
+        for p in reversed(processes):
+            p.terminate()
+        for p in processes:
+            p.wait(timeout=30)

@@ -1,14 +1,11 @@
 """clothlab.sweep: every case of a grid, on a LocalCluster and on a scheduler with two worker
 processes, equal to serial runs; failing cases are rows with their errors."""
-import subprocess
-import sys
-import time
-
 import numpy
 import pandas
 import pytest
 
 import clothlab
+from conftest import scheduler_with_two_workers
 
 # 2 x 2 x 2 cases: a step that diverges and a mass that is refused fail; the rest run.
 GRID = {
@@ -70,44 +67,14 @@ def test_local_cluster_sweep_equals_serial(scene):
     )
 
 
-def wait_for(path, seconds):
-    deadline = time.monotonic() + seconds
-    while not path.exists():
-        if time.monotonic() > deadline:
-            raise TimeoutError(f"{path} did not appear in {seconds} s")
-        time.sleep(0.1)
-
-
 def test_scheduler_and_two_worker_processes_equal_serial(scene, tmp_path):
     from dask.distributed import Client
 
-    scheduler_file = tmp_path / "scheduler.json"
-    quiet = {"stdout": subprocess.DEVNULL, "stderr": subprocess.DEVNULL}
-    processes = [
-        subprocess.Popen(
-            [sys.executable, "-m", "dask", "scheduler", "--host", "127.0.0.1",
-             "--port", "0", "--no-dashboard", "--scheduler-file", str(scheduler_file)],
-            **quiet,
-        )
-    ]
-    try:
-        wait_for(scheduler_file, 60)
-        for _ in range(2):
-            processes.append(subprocess.Popen(
-                [sys.executable, "-m", "dask", "worker", "--scheduler-file",
-                 str(scheduler_file), "--nthreads", "1", "--no-dashboard",
-                 "--local-directory", str(tmp_path)],
-                **quiet,
-            ))
+    with scheduler_with_two_workers(tmp_path) as (scheduler_file, _):
         with Client(scheduler_file=str(scheduler_file), timeout=60) as client:
             client.wait_for_workers(2, timeout=60)
             remote = clothlab.sweep(scene, GRID, DURATION, client=client)
             assert len(client.scheduler_info()["workers"]) == 2
-    finally:
-        for p in reversed(processes):
-            p.terminate()
-        for p in processes:
-            p.wait(timeout=30)
     serial = clothlab.sweep(scene, GRID, DURATION, client="serial")
     pandas.testing.assert_frame_equal(
         without_wall_time(remote), without_wall_time(serial), check_exact=True

@@ -1,11 +1,12 @@
 """clothlab.tune: the same table on a LocalCluster as serially and as the command line's CSV (the
-costs, and the frontier and recommendation they decide, aside), and a recommendation that is the
-cheapest finished setting within the tolerance."""
+costs, and the frontier and recommendation they decide, aside), the command line's on a Dask
+scheduler the same as its serial one, and a recommendation that is the cheapest finished setting
+within the tolerance."""
 import pandas
 import pytest
 
 import clothlab
-from conftest import run_cli
+from conftest import run_cli, scheduler_with_two_workers
 
 DURATION = 0.25
 TOLERANCE = 0.01
@@ -71,6 +72,36 @@ def test_errors_equal_the_command_lines(scene, small_scene_text, tmp_path):
         compared += 1
     assert compared >= 10
 
+
+
+def test_command_line_on_a_scheduler_equals_its_serial_table(small_scene_text, tmp_path):
+    scene_file = tmp_path / "sheet.toml"
+    scene_file.write_text(small_scene_text)
+    args = ["tune", str(scene_file), "--duration", repr(DURATION), "--tolerance",
+            repr(TOLERANCE), "--threads", "1"]
+    remote_csv, serial_csv = tmp_path / "remote.csv", tmp_path / "serial.csv"
+    with scheduler_with_two_workers(tmp_path) as (_, address):
+        code, stdout, err = run_cli(*args, "--scheduler", address, "--out", str(remote_csv))
+    assert code == 0, err
+    assert f"tune: on the scheduler at {address}" in err and "tune: [23/23]" in err
+    assert "within 10 mm RMS up to 0.25 s" in stdout
+    assert remote_csv.with_suffix(".png").stat().st_size > 10000
+    code, _, err = run_cli(*args, "--quiet", "--out", str(serial_csv))
+    assert code == 0, err
+    remote = pandas.read_csv(remote_csv, float_precision="round_trip")
+    serial = pandas.read_csv(serial_csv, float_precision="round_trip")
+    exact = ["rms error (m)", "max error (m)", "energy drift (J)"]
+    reference = remote.family == "reference"
+    assert (remote[reference][exact].values == serial[serial.family == "reference"][exact].values).all()
+    compared = 0
+    for setting in remote.setting.unique():
+        a = remote[(remote.setting == setting) & (remote.status == "ok")]
+        b = serial[(serial.setting == setting) & (serial.status == "ok")]
+        if len(a) != 4 or len(b) != 4 or setting == remote.setting[0]:
+            continue  # stopped by one side's clock, or the reference
+        assert (a[exact].values == b[exact].values).all(), setting
+        compared += 1
+    assert compared >= 10
 
 
 def test_simulation_takes_the_tolerances_setting_from_the_cache(scene, tmp_path, monkeypatch):
