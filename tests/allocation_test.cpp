@@ -116,7 +116,7 @@ TEST(StepLoop, SelfCollisionAllocatesNothingInDouble) {
 // second of steps allocates nothing.
 TEST(StepLoop, ClothContactAllocatesNothingOnceLanded) {
   const Scene scene =
-      read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/pile.toml", {"solver.threads=2"});
+      read_scene_file(std::string(CLOTHLAB_SOURCE_DIR "/scenes/pile.toml"), {"solver.threads=2"});
   const auto s = make_solver(scene);
   ASSERT_TRUE(s->advance(4.0).ok());
   const long before = g_allocations.load();
@@ -132,7 +132,7 @@ TEST(StepLoop, MeshClothOnARodAllocatesNothing) {
   ClothSpec c;
   c.shape = "mesh";
   c.mesh = std::make_shared<const TriangleMesh>(
-      load_obj(std::string(CLOTHLAB_SOURCE_DIR) + "/assets/meshes/round_cloth.obj", 0.3));
+      load_obj(std::string(CLOTHLAB_SOURCE_DIR "/assets/meshes/round_cloth.obj"), 0.3));
   c.resolution = {static_cast<int>(c.mesh->positions.size()), 1};
   c.origin = {0.0, 0.02, 0.0};
   c.mass = 0.1;
@@ -160,7 +160,7 @@ TEST(StepLoop, MeshClothOnARodAllocatesNothing) {
 // storage sized when the solver is built: scenes/drop_box.toml's sheet lying on the crate's
 // corners and edges allocates nothing over 400 steps on two threads.
 TEST(StepLoop, ClothOnACrateAllocatesNothing) {
-  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/drop_box.toml");
+  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR "/scenes/drop_box.toml"));
   scene.cloths[0].release_at = 0.0;
   scene.cloths[0].pins.clear();
   scene.solver.threads = 2;

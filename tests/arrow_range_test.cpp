@@ -47,7 +47,7 @@ double share_visible(Solver& s, ForceSource source) {
 // of the free magnitudes at least 80 % of the arrows show (3 px or more) for the total and for
 // the spring forces alike; sized by the largest, as before, a few near the pins did.
 TEST(ForceArrows, MostArrowsShowAtTheDefaultSheetsRest) {
-  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/default.toml");
+  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR "/scenes/default.toml"));
   scene.forces.wind.enabled = false;
   std::unique_ptr<Solver> s = make_solver(scene);
   ASSERT_TRUE(s->advance(4.0).ok());
@@ -57,7 +57,7 @@ TEST(ForceArrows, MostArrowsShowAtTheDefaultSheetsRest) {
 
 // One outlier (a thousand times the rest) leaves the range's top where the others put it.
 TEST(ForceArrows, RangeTopIgnoresOneOutlier) {
-  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/default.toml");
+  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR "/scenes/default.toml"));
   std::unique_ptr<Solver> s = make_solver(scene);
   const vis::ArrowLayout layout = vis::arrow_layout(*s, 0);
   std::vector<float> vectors(3 * s->vertex_count(), 0.0f);

@@ -44,7 +44,7 @@ TEST(Divergence, UnstableStepIsReportedWithStepTimeVertexAndQuantity) {
 // check (run where the energy is computed anyway: a trace's rows and summary) catches it and
 // names a vertex. The state at rest passes it.
 TEST(Divergence, ElasticEnergyBeyondTheScaleIsADivergence) {
-  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/default.toml");
+  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR "/scenes/default.toml"));
   scene.solver.integrator = IntegratorKind::explicit_euler;
   scene.solver.dt_auto = false;
   scene.solver.dt = 1e-3;

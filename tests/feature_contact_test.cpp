@@ -106,7 +106,7 @@ TEST(SharpFeatures, MeshCreasesButNotFlatDiagonals) {
 // collider's thickness (5 mm). Before the crate's corners were contact points they came within
 // 0.3 mm of the cloth's surface and showed through it as light specks.
 TEST(FeatureContacts, NoCrateCornerInsideTheClothsThickness) {
-  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/drop_box.toml");
+  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR "/scenes/drop_box.toml"));
   scene.cloths[0].release_at = 0.3;
   const ColliderSpec& box = scene.colliders[0];
   ASSERT_EQ(box.kind, ColliderKind::box);
@@ -125,7 +125,7 @@ TEST(FeatureContacts, NoCrateCornerInsideTheClothsThickness) {
 // vertices (the corners of its seat, backrest and legs) comes nearer the cloth than half the
 // collider's 6 mm thickness over 2 s of fall and drape (before: 0.16 mm, at the impact).
 TEST(FeatureContacts, NoChairCornerInsideTheClothsThickness) {
-  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/chair.toml");
+  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR "/scenes/chair.toml"));
   const ColliderSpec& chair = scene.colliders[0];
   ASSERT_EQ(chair.kind, ColliderKind::mesh);
   const std::vector<V3> corners(chair.mesh->positions.begin(), chair.mesh->positions.end());
@@ -139,7 +139,7 @@ TEST(FeatureContacts, NoChairCornerInsideTheClothsThickness) {
 // within the thickness of every triangle, took 0.36 s a step. One just thinner than the edge
 // keeps its features.
 TEST(FeatureContacts, NoneForAColliderAtLeastOneEdgeThick) {
-  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/drop_box.toml");
+  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR "/scenes/drop_box.toml"));
   const Model<double> model = build_model<double>(scene);
   const double edge = 0.05;
   scene.colliders[0].thickness = edge;
@@ -151,7 +151,7 @@ TEST(FeatureContacts, NoneForAColliderAtLeastOneEdgeThick) {
 // The feature contacts run serially over the triangles after per-block marking, so the crate drop
 // gives the same result on 1 and 2 threads, bit for bit.
 TEST(FeatureContacts, SameResultForAnyThreadCount) {
-  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/drop_box.toml");
+  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR "/scenes/drop_box.toml"));
   scene.cloths[0].release_at = 0.0;
   scene.cloths[0].origin = {-0.3, 1.1, -0.6};  // centred over the crate
   scene.cloths[0].resolution = {40, 40};       // several blocks of vertices

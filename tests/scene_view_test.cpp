@@ -40,9 +40,9 @@ TEST(SceneView, FloorAndFramingComeFromTheColliders) {
 // A mesh collider is framed by its OBJ's box, as an analytic one is (the shipped chair placed
 // 3 m off along x draws the view's target that way).
 TEST(SceneView, MeshCollidersAreFramedToo) {
-  const std::string mesh =
-      std::string("[cloth]\nresolution = [8, 8]\n\n[[colliders]]\ntype = \"mesh\"\nfile = \"") +
-      CLOTHLAB_SOURCE_DIR + "/assets/meshes/chair.obj\"\ncenter = [3, 0, 0]\n";
+  const std::string mesh(
+      "[cloth]\nresolution = [8, 8]\n\n[[colliders]]\ntype = \"mesh\"\nfile = "
+      "\"" CLOTHLAB_SOURCE_DIR "/assets/meshes/chair.obj\"\ncenter = [3, 0, 0]\n");
   const Scene scene = read_scene_string(mesh, "t.toml");
   const std::unique_ptr<Solver> solver = make_solver(scene);
   const vis::ViewSettings plain = vis::default_view(*solver);

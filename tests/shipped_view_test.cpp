@@ -46,7 +46,7 @@ class ShippedView : public ::testing::Test {
   // t = 0), coloured by height when `by_height` (legends off either way).
   static Frame render(const std::string& name, vis::DisplayMode mode, double t = 0.0,
                       bool by_height = false) {
-    const Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/" + name);
+    const Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR "/scenes/") + name);
     std::unique_ptr<Solver> solver = make_solver(scene);
     vis::ViewSettings view = vis::scene_view(scene, *solver);
     if (t > 0.0) {
@@ -202,7 +202,7 @@ std::vector<float> arrow_pixels(const vis::HeadlessRenderer& r, const vis::ViewS
 // pins, only the pins' arrows showed). In its gusts the arrows show the total, at least 60 % of
 // them 3 pixels or more (measured 78 %; the wind's force varies over the sheet).
 TEST_F(ShippedView, ForceArrowsShowAtRest) {
-  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/default.toml");
+  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR "/scenes/default.toml"));
   for (bool wind : {false, true}) {
     SCOPED_TRACE(wind ? "in the wind" : "at rest");
     scene.forces.wind.enabled = wind;

@@ -200,7 +200,7 @@ double hem_radius(const Solver& s, int nu, int nv) {
 }
 
 TEST(SpringClasses, SkirtFlaresWhenItsBodyTurns) {
-  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/skirt.toml");
+  Scene scene = read_scene_file(std::string(CLOTHLAB_SOURCE_DIR "/scenes/skirt.toml"));
   ColliderMotion& body = scene.colliders[0].motion;
   body.angular_velocity = {0.0, 0.0, 0.0};
   body.keys.push_back({});
