@@ -153,21 +153,11 @@ void LiveReference::run_request() {
   // itself, as when both runs share a step) its state is read as it is.
   const double s = std::clamp((target - (solver_->time() - step_)) / step_, 0.0, 1.0);
   const bool at_end = s > 1.0 - 1e-9;
-  const std::size_t n = shown_.size();
-  std::vector<float>& d = work_;
-  d.resize(n);
-  Distance total;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3d r =
+  reference_.resize(shown_.size());
+  for (std::size_t i = 0; i < shown_.size(); ++i)
+    reference_[i] =
         at_end ? after_[i] : hermite(before_[i], velocity_[i], after_[i], velocity1_[i], step_, s);
-    double d2 = 0.0;
-    for (int c = 0; c < 3; ++c) d2 += (r[c] - shown_[i][c]) * (r[c] - shown_[i][c]);
-    const double di = std::sqrt(d2);
-    d[i] = float(di);
-    total.rms += di * di;
-    total.max = std::max(total.max, di);
-  }
-  total.rms = n > 0 ? std::sqrt(total.rms / double(n)) : 0.0;
+  const Distance total = distance(reference_, shown_, &work_);
   std::lock_guard lock(mutex_);
   result_.time = request_time_;
   result_.distance = total;

@@ -86,6 +86,7 @@ class LiveReference {
   Positions shown_;              // the request's positions
   Positions before_, velocity_;  // the reference's state one step before the request's time
   Positions after_, velocity1_;  // and one after
+  Positions reference_;          // the reference read at the request's time
   std::vector<float> work_;      // the thread's distances, swapped into result_
   LiveComparison result_;
   std::string failure_;

@@ -53,13 +53,15 @@ SampledRun run_sampled(const Scene& scene, const std::vector<double>& times, dou
   return run;
 }
 
-Distance distance(const Positions& a, const Positions& b) {
+Distance distance(const Positions& a, const Positions& b, std::vector<float>* per_vertex) {
   Distance d;
+  if (per_vertex) per_vertex->resize(a.size());
   for (std::size_t i = 0; i < a.size(); ++i) {
     double d2 = 0.0;
     for (int c = 0; c < 3; ++c) d2 += (a[i][c] - b[i][c]) * (a[i][c] - b[i][c]);
     d.rms += d2;
     d.max = std::max(d.max, std::sqrt(d2));
+    if (per_vertex) (*per_vertex)[i] = float(std::sqrt(d2));
   }
   d.rms = a.empty() ? 0.0 : std::sqrt(d.rms / double(a.size()));
   return d;

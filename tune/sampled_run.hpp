@@ -38,6 +38,7 @@ SampledRun run_sampled(const Scene& scene, const std::vector<double>& times, dou
 struct Distance {
   double rms = 0.0, max = 0.0;
 };
-Distance distance(const Positions& a, const Positions& b);
+// With `per_vertex`, each vertex's distance too (resized to the vertex count).
+Distance distance(const Positions& a, const Positions& b, std::vector<float>* per_vertex = nullptr);
 
 }  // namespace clothlab::tune

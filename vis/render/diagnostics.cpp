@@ -16,14 +16,14 @@ namespace {
 constexpr float kNormalLength = 0.7f, kShaftRadius = 0.06f;
 
 // The automatic ranges that start at zero: the contact gap from touching to out of reach, the
-// distance from the reference from none to the largest.
-std::optional<ScalarRange> own_range(const ViewSettings& view, const FrameFields& fields) {
+// distance from the reference (`scalars`, in mm) from none to the largest.
+std::optional<ScalarRange> own_range(const ViewSettings& view, const FrameFields& fields,
+                                     const std::vector<float>& scalars) {
   if (view.color.range == RangeMode::fixed) return std::nullopt;
   if (view.color.field == ScalarField::contact) return ScalarRange{0.0, fields.contact_range};
   if (view.color.field != ScalarField::error) return std::nullopt;
-  float largest = 0.0f;
-  for (float d : fields.reference_distance) largest = std::max(largest, d);
-  return ScalarRange{0.0, std::max(1e3 * double(largest), 1e-3)};  // mm, as the scalars
+  const float largest = scalars.empty() ? 0.0f : *std::max_element(scalars.begin(), scalars.end());
+  return ScalarRange{0.0, std::max(double(largest), 1e-3)};
 }
 
 }  // namespace
@@ -46,7 +46,7 @@ void Diagnostics::update(const SolverState& solver, const FrameFields& fields,
     scalars_ = {};
   } else {
     scalar_values(fields, view.color.field, view.force_source, scalars_);
-    color_range_ = own_range(view, fields);
+    color_range_ = own_range(view, fields, scalars_);
     if (!color_range_) color_range_ = choose_range(view.color.range, scalars_, view.color.fixed);
     renderer.set_scalars(scalars_, *color_range_);
   }
