@@ -12,7 +12,8 @@ foreach(i RANGE ${last})
 endforeach()
 foreach(test Multigrid.IterationsStayNearlyFlatAsTheGridGrows ShippedView.ForceArrowsShowAtRest
              Dance.SameResultForAnyThreadCount ClothContact.FastDropLandsOnTheThinTable
-             ShippedScenes.DropBoxSheetSlidesOffOntoTheFloor)
+             ShippedScenes.DropBoxSheetSlidesOffOntoTheFloor cli.render.video_dance
+             ImplicitEuler.MatchesRk4OnTheFallingSheetAtSmallSteps)
   string(REGEX MATCH "${regex}" hit "${test}")
   if(NOT hit)
     message(FATAL_ERROR "the debug preset's exclusions do not exclude ${test}")
