@@ -31,6 +31,10 @@ void vertex_buffer(GLuint vao, GLuint binding, GLuint buffer, std::size_t offset
                    std::size_t stride);
 // `vao`'s index buffer.
 void element_buffer(GLuint vao, GLuint buffer);
+// Where 32-bit index `first` of the bound index buffer starts, as glDrawElements takes it.
+inline const void* element_offset(std::size_t first) {
+  return reinterpret_cast<const void*>(first * sizeof(std::uint32_t));
+}
 
 // An immutable buffer holding `data` (at least one byte, so an empty vector is a valid buffer).
 template <class T>

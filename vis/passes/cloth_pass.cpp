@@ -77,7 +77,8 @@ void ClothPass::draw(const ViewSettings& view, ClothGeometry& cloth, ScalarRange
   if (view.mode == DisplayMode::weave) set_weave(view, cloth, diffusion);
   if (view.mode == DisplayMode::cloth_brdf) set_brdf(view, cloth);
   glBindVertexArray(cloth.cloth_vao());
-  glDrawElements(GL_TRIANGLES, cloth.triangle_indices(), GL_UNSIGNED_INT, nullptr);
+  const ClothGeometry::Drawn& drawn = cloth.drawn();
+  glDrawElements(GL_TRIANGLES, drawn.count, GL_UNSIGNED_INT, element_offset(drawn.first));
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
 }

@@ -1,6 +1,7 @@
 #include "vis/passes/shadow_pass.hpp"
 
 #include "gl/program.hpp"
+#include "gl/uploads.hpp"
 
 namespace clothlab::vis {
 namespace {
@@ -64,11 +65,12 @@ void ShadowPass::begin(int size) {
   glUseProgram(program_.get());
 }
 
-void ShadowPass::draw_triangles(GLuint vao, GLsizei index_count, const glm::mat4& model) {
+void ShadowPass::draw_triangles(GLuint vao, GLsizei index_count, const glm::mat4& model,
+                                std::size_t first_index) {
   glProgramUniformMatrix4fv(program_.get(), kModel, 1, GL_FALSE, &model[0][0]);
   glProgramUniform1i(program_.get(), kFloor, 0);
   glBindVertexArray(vao);
-  glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, nullptr);
+  glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, element_offset(first_index));
 }
 
 void ShadowPass::draw_floor(float height, float half_size) {
@@ -122,9 +124,9 @@ void ShadowPass::begin_transmittance() {
   glUseProgram(transmittance_program_.get());
 }
 
-void ShadowPass::draw_transmittance(GLuint vao, GLsizei index_count, GLuint albedo, float repeat,
-                                    glm::vec3 flat_albedo, bool use_flat, float coverage,
-                                    float transmission) {
+void ShadowPass::draw_transmittance(GLuint vao, GLsizei index_count, std::size_t first_index,
+                                    GLuint albedo, float repeat, glm::vec3 flat_albedo,
+                                    bool use_flat, float coverage, float transmission) {
   const GLuint p = transmittance_program_.get();
   glProgramUniform1f(p, 0, repeat);
   glProgramUniform3f(p, 1, flat_albedo.r, flat_albedo.g, flat_albedo.b);
@@ -132,7 +134,7 @@ void ShadowPass::draw_transmittance(GLuint vao, GLsizei index_count, GLuint albe
   glProgramUniform2f(p, 3, coverage, transmission);
   glBindTextureUnit(0, albedo);
   glBindVertexArray(vao);
-  glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, nullptr);
+  glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, element_offset(first_index));
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
 }

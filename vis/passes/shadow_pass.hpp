@@ -4,6 +4,8 @@
 // PCSS's blocker search and the depth view.
 #pragma once
 
+#include <cstddef>
+
 #include <glm/glm.hpp>
 
 #include "gl/objects.hpp"
@@ -19,7 +21,8 @@ class ShadowPass {
   // slope-scaled polygon offset. Needs the Frame block (light_view_proj) bound.
   void begin(int size);
   // Casters with positions at attribute 0 of `vao`.
-  void draw_triangles(GLuint vao, GLsizei index_count, const glm::mat4& model);
+  void draw_triangles(GLuint vao, GLsizei index_count, const glm::mat4& model,
+                      std::size_t first_index = 0);
   void draw_floor(float height, float half_size);
   // Restores the state begin() changed (not the framebuffer: the caller binds its own).
   void end();
@@ -31,8 +34,9 @@ class ShadowPass {
   // The colour map as the target, cleared to white: draw the translucent casters with
   // draw_transmittance (multiplicative blending, no depth test: layers multiply).
   void begin_transmittance();
-  void draw_transmittance(GLuint vao, GLsizei index_count, GLuint albedo, float repeat,
-                          glm::vec3 flat_albedo, bool use_flat, float coverage, float transmission);
+  void draw_transmittance(GLuint vao, GLsizei index_count, std::size_t first_index, GLuint albedo,
+                          float repeat, glm::vec3 flat_albedo, bool use_flat, float coverage,
+                          float transmission);
   bool translucent() const { return translucent_; }
 
   // Binds the maps for sampling as shaders/lighting.glsl expects: units 6 (comparing) and 7

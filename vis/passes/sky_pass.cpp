@@ -1,5 +1,7 @@
 #include "vis/passes/sky_pass.hpp"
 
+#include <cmath>
+
 #include "gl/program.hpp"
 #include "vis/sky/preetham_sky.hpp"
 
@@ -40,7 +42,10 @@ void SkyPass::bake(glm::vec3 sun, float turbidity) {
 }
 
 GLuint SkyPass::prepare(glm::vec3 sun, float turbidity) {
-  if (!cube_ || sun != baked_sun_ || turbidity != baked_turbidity_) bake(sun, turbidity);
+  const float turned = glm::dot(glm::normalize(sun), glm::normalize(baked_sun_));
+  if (!cube_ || !(turned >= std::cos(glm::radians(kSkySunToleranceDeg))) ||
+      turbidity != baked_turbidity_)
+    bake(sun, turbidity);
   // No seams between the faces (docs/rendering.md section 7), for the sky and the floor's haze.
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
   return cube_.get();

@@ -25,7 +25,11 @@ void ClothGeometry::build(const SolverState& solver) {
   static_vbo_ = static_buffer(layout_.fixed);
   scalar_vbo_ = dynamic_float_buffer(rn);
   tangent_vbo_ = dynamic_float_buffer(4 * rn);
-  triangle_ebo_ = static_buffer(layout_.triangles);
+  detail_ = make_cloth_detail(layout_);
+  std::vector<std::uint32_t> elements = layout_.triangles;
+  elements.insert(elements.end(), detail_.indices.begin(), detail_.indices.end());
+  triangle_ebo_ = static_buffer(elements);
+  drawn_ = {triangle_indices_, 0, 1};
   line_ebo_ = static_buffer(layout_.lines);
   tangents_.assign(4 * rn, 0.0f);
   tangents_stale_ = true;
@@ -34,6 +38,15 @@ void ClothGeometry::build(const SolverState& solver) {
   draw_positions_from(dynamic_vbo_.get(), 3 * sizeof(float));
   staging_.resize(6 * rn);
   scalar_staging_.resize(rn);
+}
+
+void ClothGeometry::set_detail(double pixels_per_metre) {
+  drawn_ = {triangle_indices_, 0, 1};
+  if (!(pixels_per_metre > 0.0)) return;
+  const int stride = detail_stride(detail_, pixels_per_metre);
+  for (const DetailLevel& level : detail_.levels)
+    if (level.stride == stride)
+      drawn_ = {static_cast<GLsizei>(level.count), layout_.triangles.size() + level.first, stride};
 }
 
 // Two vertex arrays over the same vertex buffers: triangles and spring lines. Attributes:

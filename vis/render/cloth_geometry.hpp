@@ -12,6 +12,7 @@
 
 #include "gl/objects.hpp"
 #include "vis/passes/cloth_pack_pass.hpp"
+#include "vis/render/cloth_detail.hpp"
 #include "vis/render/cloth_layout.hpp"
 #include "vis/render/view_settings.hpp"
 
@@ -49,7 +50,20 @@ class ClothGeometry {
 
   GLuint cloth_vao() const { return cloth_vao_.get(); }
   GLuint line_vao() const { return line_vao_.get(); }
+  // Every triangle (the probe's field pass, translucency's diffusion and the checks for a
+  // surface draw them all).
   GLsizei triangle_indices() const { return triangle_indices_; }
+  // The triangles the cloth and its shadow are drawn with: every one, or a coarser level of a
+  // large grid cloth (cloth_detail.hpp) chosen by set_detail; `first` indexes the element buffer.
+  struct Drawn {
+    GLsizei count = 0;
+    std::size_t first = 0;
+    int stride = 1;
+  };
+  const Drawn& drawn() const { return drawn_; }
+  // Draws the coarsest level whose cells cover at most kDetailCellPixels when a metre at the
+  // cloth's nearest point covers pixels_per_metre pixels; 0 (or less) draws every triangle.
+  void set_detail(double pixels_per_metre);
   GLsizei line_indices() const { return line_indices_; }
   // The buffer the positions are drawn from and its stride (bytes): the vertex buffer's, or the
   // transform-feedback backend's captured buffer (vec4 per vertex) while flat_normals().
@@ -79,6 +93,8 @@ class ClothGeometry {
   Buffer tangent_vbo_;  // modes 4-6: per-vertex tangent frame (xyz, handedness)
   VertexArray cloth_vao_, line_vao_;
   GLsizei triangle_indices_ = 0, line_indices_ = 0;
+  ClothDetail detail_;  // coarse levels after the triangles in triangle_ebo_
+  Drawn drawn_;
   std::vector<float> staging_;         // positions, then normals, per render vertex
   std::vector<float> scalar_staging_;  // the colour-by scalar per render vertex
   std::vector<float> tangents_, tangent_scratch_;

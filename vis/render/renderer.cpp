@@ -125,6 +125,11 @@ void Renderer::draw_at(const ViewSettings& view, bool fast, int width, int heigh
   const bool translucent =
       view.mode == DisplayMode::translucent && view.shadows != ShadowFilter::none;
   const glm::mat4 view_proj = upload_frame(view, width, height, translucent);
+  // Fast quality draws a large grid cloth as coarse as its size on screen allows.
+  cloth_.set_detail(fast && coarse_cloth_
+                        ? pixels_per_metre(view.camera.eye(), cloth_.lo(), cloth_.hi(),
+                                           view.camera.fov_deg, height)
+                        : 0.0);
   const ShadingVariant variant{shadows ? view.shadows : ShadowFilter::none, translucent, fast};
   const std::string shading = variant.defines();
   if (shadows) {
@@ -256,8 +261,9 @@ void Renderer::draw_shadow_map(const ViewSettings& view, bool translucent) {
   if (!shadow_) shadow_ = std::make_unique<ShadowPass>();
   shadow_->begin(view.shadow_map_size);
   // The floor last: it covers the whole map, and the depth test skips it behind the casters.
-  if (cloth_.triangle_indices() > 0)
-    shadow_->draw_triangles(cloth_.cloth_vao(), cloth_.triangle_indices(), glm::mat4(1.0f));
+  const ClothGeometry::Drawn& drawn = cloth_.drawn();
+  if (drawn.count > 0)
+    shadow_->draw_triangles(cloth_.cloth_vao(), drawn.count, glm::mat4(1.0f), drawn.first);
   draw_shadow_casters();
   shadow_->draw_floor(view.floor_height, view.floor_half_size);
   if (translucent) {
@@ -268,7 +274,7 @@ void Renderer::draw_shadow_map(const ViewSettings& view, bool translucent) {
       shadow_->begin_transmittance();
       const auto& c = view.look.color;
       const glm::vec3 flat = c ? glm::vec3((*c)[0], (*c)[1], (*c)[2]) : glm::vec3(1.0f);
-      shadow_->draw_transmittance(cloth_.cloth_vao(), cloth_.triangle_indices(),
+      shadow_->draw_transmittance(cloth_.cloth_vao(), drawn.count, drawn.first,
                                   cloth_pass_.fabric(), fabric_repeat_of(view), flat, c.has_value(),
                                   float(view.look.opacity), float(view.look.transmission));
     }

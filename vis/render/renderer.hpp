@@ -71,6 +71,11 @@ class Renderer {
   // view.quality for this context's GL renderer: full or fast (render_quality.hpp).
   RenderQuality quality(const ViewSettings& view) const;
   const std::string& gl_renderer() const { return gl_renderer_; }
+  // Fast quality draws a large grid cloth as coarse as its size on screen allows (on by
+  // default; cloth_detail.hpp); off draws every triangle at either quality (tests compare the
+  // two). The stride of the last draw(): every stride-th vertex of a row and a column.
+  void enable_coarse_cloth(bool on) { coarse_cloth_ = on; }
+  int cloth_stride() const { return cloth_.drawn().stride; }
   // Time per pass (benchmarks): on, draw() brackets its passes (gl/pass_timer.hpp).
   void enable_pass_timing(bool on);
   PassTimer* pass_timer() { return timer_.get(); }
@@ -120,6 +125,7 @@ class Renderer {
   void draw_sky(const ViewSettings& view, const glm::mat4& view_proj);
 
   ClothGeometry cloth_;
+  bool coarse_cloth_ = true;
   FloorPass floor_;
   ClothPass cloth_pass_;
   SpringsPass springs_;

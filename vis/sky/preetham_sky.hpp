@@ -16,6 +16,10 @@
 
 namespace clothlab::vis {
 
+// How far the sun may turn before the sky pass bakes its cube map again (vis/passes/sky_pass.hpp);
+// tests/sky_test.cpp measures what the sky away from the sun's disc moves by within it.
+inline constexpr float kSkySunToleranceDeg = 0.25f;
+
 struct SkyParams {
   // Towards the sun (need not be normalised). Below the horizon the model is evaluated with the
   // sun on the horizon (Preetham's fit is for daylight only).
