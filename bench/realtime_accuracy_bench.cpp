@@ -1,11 +1,12 @@
-// Real time at scale against accuracy (issue 36): the accuracy sheet (bench/suites/lab_scenes.hpp:
-// 1 m, 0.2 kg, k0 = 1e3 N/m, damping 0.05, two corners pinned, falling from horizontal) at
-// res x res, each setting in float at dt = 1/60 s on `threads` threads: RMS distance of all
-// vertices at t = 0.2 s from a double RK4 run of the same sheet, and the median wall time of
-// one 1/60 s frame. The RK4 reference is cached in a file (it costs minutes at 256^2).
+// Real time at scale against accuracy (issues 36 and 54): the accuracy sheet
+// (bench/suites/lab_scenes.hpp: 1 m, 0.2 kg, k0 = 1e3 N/m, damping 0.05, two corners pinned,
+// falling from horizontal) at res x res, each setting in float at dt = 1/60 s on `threads`
+// threads: RMS distance of all vertices at t = 0.2, 0.5 and 1.0 s from a double RK4 run of the
+// same sheet, and the median wall time of one 1/60 s frame. The RK4 reference is cached in a file
+// (it costs minutes at 256^2).
 //
 //   build/release/bench/realtime_accuracy_bench [res=256] [threads=2] [csv=realtime_accuracy.csv]
-//                                               [reference=out/bench/rk4_<res>.bin]
+//                                               [reference=out/bench/rk4_<res>_1s.bin]
 //                                               [only=the settings whose label starts so;
 //                                                ending in $, the one so labelled]
 #include <algorithm>
@@ -24,8 +25,8 @@ namespace clothlab {
 namespace {
 
 constexpr double kFrame = 1.0 / 60.0;
-constexpr double kHorizon = 0.2;
-constexpr int kFrames = 12;  // kHorizon / kFrame
+constexpr int kHorizonFrames[] = {12, 30, 60};  // 0.2, 0.5 and 1.0 s
+constexpr int kHorizons = 3;
 
 struct Setting {
   std::string label;
@@ -62,10 +63,12 @@ std::vector<double> positions(const Solver& solver) {
   return p;
 }
 
-// Double RK4 at 1e-5 s to kHorizon (its automatic step's halving changed nothing above 1e-7 m at
-// 256^2, docs/solver.md), read from `path` when a run of the same size is there.
+// Double RK4 at 1e-5 s to each horizon, one after another in one vector (its automatic step's
+// halving changed nothing above 1e-7 m at 256^2 and 0.2 s, docs/solver.md), read from `path`
+// when a run of the same size is there.
 std::vector<double> reference(int res, int threads, const std::string& path) {
-  std::vector<double> p(static_cast<std::size_t>(res) * res * 3);
+  const std::size_t n = static_cast<std::size_t>(res) * res * 3;
+  std::vector<double> p(kHorizons * n);
   std::ifstream in(path, std::ios::binary);
   if (in.read(reinterpret_cast<char*>(p.data()), std::streamsize(p.size() * sizeof(double))))
     return p;
@@ -73,8 +76,15 @@ std::vector<double> reference(int res, int threads, const std::string& path) {
   scene.solver.precision = Precision::f64;
   scene.solver.dt = 1e-5;
   auto solver = make_solver(scene);
-  solver->step(std::lround(kHorizon / 1e-5));
-  p = positions(*solver);
+  long done = 0;
+  p.clear();
+  for (int frames : kHorizonFrames) {
+    const long steps = std::lround(frames * kFrame / 1e-5);
+    solver->step(steps - done);
+    done = steps;
+    const std::vector<double> now = positions(*solver);
+    p.insert(p.end(), now.begin(), now.end());
+  }
   const std::string tmp = path + ".tmp";
   std::ofstream(tmp, std::ios::binary)
       .write(reinterpret_cast<const char*>(p.data()), std::streamsize(p.size() * sizeof(double)));
@@ -82,16 +92,25 @@ std::vector<double> reference(int res, int threads, const std::string& path) {
   return p;
 }
 
-// The median wall time of `frames` frames of 1/60 s (s).
-double median_frame(Solver& solver, int frames) {
-  std::vector<double> times;
+// Steps `frames` frames of 1/60 s, adding the wall time of each to `times` (s).
+void time_frames(Solver& solver, int frames, std::vector<double>& times) {
   for (int f = 0; f < frames; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
     solver.step(1);
     times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
-  std::nth_element(times.begin(), times.begin() + frames / 2, times.end());
-  return times[static_cast<std::size_t>(frames / 2)];
+}
+
+double median(std::vector<double> times) {
+  std::nth_element(times.begin(), times.begin() + long(times.size() / 2), times.end());
+  return times[times.size() / 2];
+}
+
+// The median wall time of `frames` frames of 1/60 s (s).
+double median_frame(Solver& solver, int frames) {
+  std::vector<double> times;
+  time_frames(solver, frames, times);
+  return median(times);
 }
 
 // The largest square sheet a method runs at 60 Hz with its defaults (median of 9 frames after 2,
@@ -112,10 +131,28 @@ int largest_real_time(const Setting& s, int threads) {
   return largest;
 }
 
-double rms(const std::vector<double>& a, const std::vector<double>& b) {
+// RMS distance of positions `a` from horizon h of the reference `ref`.
+double rms(const std::vector<double>& a, const std::vector<double>& ref, int h) {
+  const double* b = ref.data() + std::size_t(h) * a.size();
   double sum = 0.0;
   for (std::size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]) * (a[i] - b[i]);
   return std::sqrt(sum / double(a.size() / 3));
+}
+
+struct Measured {
+  double rms[kHorizons] = {};
+  double frame = 0.0;  // median s a frame over the whole second
+};
+
+Measured measure(Solver& solver, const std::vector<double>& ref) {
+  Measured m;
+  std::vector<double> times;
+  for (int h = 0; h < kHorizons; ++h) {
+    time_frames(solver, kHorizonFrames[h] - int(times.size()), times);
+    m.rms[h] = rms(positions(solver), ref, h);
+  }
+  m.frame = median(times);
+  return m;
 }
 
 }  // namespace
@@ -127,13 +164,17 @@ int main(int argc, char** argv) {
   const int res = argc > 1 ? std::atoi(argv[1]) : 256;
   const int threads = argc > 2 ? std::atoi(argv[2]) : 2;
   const std::string csv_path = argc > 3 ? argv[3] : "realtime_accuracy.csv";
-  const std::string ref_path = argc > 4 ? argv[4] : "out/bench/rk4_" + std::to_string(res) + ".bin";
+  const std::string ref_path =
+      argc > 4 ? argv[4] : "out/bench/rk4_" + std::to_string(res) + "_1s.bin";
   const std::vector<double> ref = reference(res, threads, ref_path);
   using K = IntegratorKind;
   const std::vector<Setting> settings = {
       {"xpbd auto", K::xpbd},
       {"xpbd x5", K::xpbd, 5},
       {"xpbd x20", K::xpbd, 20},
+      {"xpbd x40", K::xpbd, 40},
+      {"xpbd x80", K::xpbd, 80},
+      {"xpbd x10 iterations 2", K::xpbd, 10, 2},
       {"xpbd x10 tethers only", K::xpbd, 10, 0, true, false},
       {"xpbd x26 tethers only", K::xpbd, 26, 0, true, false},
       {"xpbd x10 coarse only", K::xpbd, 10, 0, false, true},
@@ -160,28 +201,30 @@ int main(int argc, char** argv) {
       {"implicit_euler multigrid", K::implicit_euler, 0, 0, true, true, 0, LinearSolver::multigrid},
   };
   const std::string only = argc > 5 ? argv[5] : "";
-  std::printf("%d^2 sheet, k0 = 1e3, dt = 1/60 s, float, %d threads: RMS at %.1f s from RK4\n", res,
-              threads, kHorizon);
-  std::printf("%-22s %-9s %-12s %s\n", "setting", "substeps", "rms (mm)", "ms per frame");
+  std::printf("%d^2 sheet, k0 = 1e3, dt = 1/60 s, float, %d threads: RMS from RK4 (mm)\n", res,
+              threads);
+  std::printf("%-28s %-9s %-8s %-8s %-8s %s\n", "setting", "substeps", "0.2 s", "0.5 s", "1.0 s",
+              "ms per frame");
   const std::string tmp = csv_path + ".tmp";
   std::FILE* csv = std::fopen(tmp.c_str(), "w");
   if (!csv) return 1;
-  std::fprintf(csv, "setting,substeps,resolution,threads,rms_m,seconds_per_frame\n");
+  std::fprintf(csv,
+               "setting,substeps,resolution,threads,rms_0.2s_m,rms_0.5s_m,rms_1.0s_m,"
+               "seconds_per_frame\n");
   for (const Setting& s : settings) {
     const bool exact = !only.empty() && only.back() == '$';
     if (exact ? s.label != only.substr(0, only.size() - 1) : s.label.find(only) != 0) continue;
     auto solver = make_solver(sheet(res, s, threads));
-    const double frame = median_frame(*solver, kFrames);
-    const double e = rms(positions(*solver), ref);
-    std::printf("%-22s %-9d %-12.1f %.2f", s.label.c_str(), solver->substeps(), 1e3 * e,
-                1e3 * frame);
+    const Measured m = measure(*solver, ref);
+    std::printf("%-28s %-9d %-8.1f %-8.1f %-8.1f %.2f", s.label.c_str(), solver->substeps(),
+                1e3 * m.rms[0], 1e3 * m.rms[1], 1e3 * m.rms[2], 1e3 * m.frame);
     const SolveTotals& t = solver->solve_totals();
     if (t.solves > 0)  // the implicit methods: Newton iterations a frame, PCG iterations each
       std::printf("  (%.1f solves a frame, %.1f iterations a solve)",
                   double(t.solves) / double(t.substeps), double(t.iterations) / double(t.solves));
     std::printf("\n");
-    std::fprintf(csv, "%s,%d,%d,%d,%.6g,%.6g\n", s.label.c_str(), solver->substeps(), res, threads,
-                 e, frame);
+    std::fprintf(csv, "%s,%d,%d,%d,%.6g,%.6g,%.6g,%.6g\n", s.label.c_str(), solver->substeps(), res,
+                 threads, m.rms[0], m.rms[1], m.rms[2], m.frame);
   }
   std::fclose(csv);
   std::rename(tmp.c_str(), csv_path.c_str());
