@@ -352,6 +352,12 @@ clothlab_cli_test(render.small 0
 clothlab_cli_test(render.quality_set 0 "quality full\\) on "
   render ${CLOTHLAB_DEFAULT_SCENE} --frames 2 --size 64x48 --set render.quality=\"full\"
   --out ${CLOTHLAB_TRACE_OUT}/render_full)
+# The large sheet at fast quality: drawn coarser, and the summary says how (docs/rendering.md
+# section 9).
+clothlab_cli_test(render.large_sheet_coarser 0
+  "quality fast, cloth drawn at every [0-9]+(nd|th) vertex\\) on "
+  render ${PROJECT_SOURCE_DIR}/scenes/large_sheet.toml --frames 1 --size 320x180
+  --set render.quality=\"fast\" --out ${CLOTHLAB_TRACE_OUT}/render_large_sheet)
 clothlab_cli_test(render.nothing_to_write 2 "nothing to write: give --out DIR"
   render ${CLOTHLAB_DEFAULT_SCENE} --frames 2)
 clothlab_cli_test(render.bad_size 2 "--size: must be WxH"

@@ -45,6 +45,13 @@ TEST(ClothDetail, LinesKeepEveryStrideAndTheLast) {
   EXPECT_EQ(vis::detail_lines(5, 1), (std::vector<int>{0, 1, 2, 3, 4}));
 }
 
+TEST(ClothDetail, NoteNamesTheStride) {
+  EXPECT_EQ(vis::detail_note(1), "");
+  EXPECT_EQ(vis::detail_note(2), "every 2nd vertex");
+  EXPECT_EQ(vis::detail_note(4), "every 4th vertex");
+  EXPECT_EQ(vis::detail_note(32), "every 32nd vertex");
+}
+
 TEST(ClothDetail, LevelsCoverTheSheetWithTheSolversWinding) {
   const auto solver = testing::solver<float>(large_sheet(65));
   const vis::ClothLayout l = vis::make_cloth_layout(*solver);

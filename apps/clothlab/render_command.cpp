@@ -17,6 +17,7 @@
 #include "sim/fields/frame_fields.hpp"
 #include "sim/scene/scene_parser.hpp"
 #include "sim/solver.hpp"
+#include "vis/render/cloth_detail.hpp"
 #include "vis/render/headless_renderer.hpp"
 #include "vis/render/scalar_field.hpp"
 #include "vis/textures/image.hpp"
@@ -156,9 +157,12 @@ void print_summary(const RenderArgs& args, const FrameTimes& t, const Solver& so
                    const MusicTrack* music) {
   const double frames = args.frames;
   const RenderQuality quality = renderer.renderer().quality(view);
-  const std::string chosen = view.quality == RenderQuality::automatic
-                                 ? std::string(to_string(quality)) + " (auto)"
-                                 : std::string(to_string(quality));
+  std::string chosen = view.quality == RenderQuality::automatic
+                           ? std::string(to_string(quality)) + " (auto)"
+                           : std::string(to_string(quality));
+  // Fast quality's coarser drawing of a large grid cloth (vis/render/cloth_detail.hpp).
+  const std::string detail = vis::detail_note(renderer.renderer().cloth_stride());
+  if (!detail.empty()) chosen += ", cloth drawn at " + detail;
   const std::string written =
       args.out + (args.out.empty() || args.video.empty() ? "" : " and ") + args.video;
   std::printf(

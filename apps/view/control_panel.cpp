@@ -14,6 +14,7 @@
 #include "apps/view/scene_edit.hpp"
 #include "apps/view/views_panel.hpp"
 #include "sim/scene/parameter_keys.hpp"
+#include "vis/render/cloth_detail.hpp"
 #include "vis/render/render_quality.hpp"
 
 namespace clothlab::vis {
@@ -70,7 +71,8 @@ bool structure_editors(Scene& draft) {
 
 // Shadows: the filter and the map's size (docs/rendering.md section 6).
 // render.quality: auto says what it chose for this GL renderer.
-void quality_editor(ViewSettings& view, const std::string& gl_renderer) {
+void quality_editor(ViewSettings& view, const PanelState& state) {
+  const std::string& gl_renderer = state.gl_renderer;
   const RenderQuality chosen = resolve_quality(view.quality, gl_renderer);
   // auto says what it chose and why inside the combo, which is as wide as the panel allows.
   const std::string why = software_renderer(gl_renderer) ? " (software GL)" : " (GPU)";
@@ -82,6 +84,8 @@ void quality_editor(ViewSettings& view, const std::string& gl_renderer) {
       if (ImGui::Selectable(name, quality == view.quality)) view.quality = quality;
     ImGui::EndCombo();
   }
+  if (state.cloth_stride > 1)
+    ImGui::TextDisabled("large cloth drawn at %s", detail_note(state.cloth_stride).c_str());
 }
 
 void shadow_editors(ViewSettings& view) {
@@ -292,7 +296,7 @@ std::optional<Action> draw_control_panel(SimSession& session, ViewSettings& view
   clicked = buttons(session);
   if (const auto edited = scene_editors(session, state)) clicked = edited;
   display_mode_editor(view);
-  quality_editor(view, state.gl_renderer);
+  quality_editor(view, state);
   shadow_editors(view);
   ImGui::Text("probe (8 force, 9 velocity, 0 position): %s",
               state.probe ? field_name(*state.probe) : "off");

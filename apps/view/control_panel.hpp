@@ -31,6 +31,7 @@ struct PanelState {
   std::vector<std::string> scene_files;
   std::optional<std::string> open_scene;
   std::string gl_renderer;  // GL_RENDERER, for what render.quality = "auto" chose
+  int cloth_stride = 1;     // the last frame drew every cloth_stride-th vertex of a large grid
   bool panel_open = false;  // not collapsed to its title bar last frame
   // The panel's rectangle last frame (window points, origin top-left): the scene is not shaded
   // under it while it is open.

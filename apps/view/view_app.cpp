@@ -519,6 +519,7 @@ void ViewApp::draw(int width, int height) {
   }
   bind_scene_target(width, height);
   renderer_->draw(view_, width, height, covered_by_panel(width, height, window_w, window_h));
+  panel_.cloth_stride = renderer_->cloth_stride();
   diagnostics_->draw(view_, *renderer_);
   if (scene_target_) scene_target_->resolve_into(0);
   draw_legends(view_, *diagnostics_, renderer_->strain_range(), error_.panel_bottom());

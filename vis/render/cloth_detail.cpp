@@ -82,6 +82,12 @@ int detail_stride(const ClothDetail& detail, double pixels_per_metre) {
   return stride;
 }
 
+std::string detail_note(int stride) {
+  if (stride <= 1) return "";
+  const bool nd = stride % 10 == 2 && stride % 100 != 12;
+  return "every " + std::to_string(stride) + (nd ? "nd" : "th") + " vertex";
+}
+
 double pixels_per_metre(glm::vec3 eye, glm::vec3 lo, glm::vec3 hi, float fov_deg, int height) {
   const double d = glm::length(eye - glm::clamp(eye, lo, hi));
   const double half = std::tan(0.5 * double(glm::radians(fov_deg)));

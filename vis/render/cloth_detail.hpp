@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -45,6 +46,9 @@ ClothDetail make_cloth_detail(const ClothLayout& layout);
 // The stride to draw with when a metre at the cloth's nearest point covers pixels_per_metre
 // pixels: the largest level's whose cells stay within kDetailCellPixels, else 1 (every vertex).
 int detail_stride(const ClothDetail& detail, double pixels_per_metre);
+
+// How a drawing at `stride` reads: "every 2nd vertex", "every 4th vertex", ...; empty at 1.
+std::string detail_note(int stride);
 
 // The pixels a metre covers at the point of the box [lo, hi] nearest the eye, seen with a
 // vertical field of view of fov_deg over `height` pixels; infinite with the eye in the box.
