@@ -5,10 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
+#include <cstdio>
 #include <set>
 #include <vector>
 
+#include "image_compare.hpp"
 #include "render_frame.hpp"
 #include "test_scenes.hpp"
 #include "vis/render/cloth_detail.hpp"
@@ -122,25 +123,6 @@ TEST(ClothDetail, StrideFollowsTheSizeOnScreen) {
   EXPECT_TRUE(std::isinf(vis::pixels_per_metre({0, 0, 0}, {-1, -1, -1}, {1, 1, 1}, 40.0f, 720)));
 }
 
-// Mean |difference| over all channels in 1/255, and the share of pixels with a channel off by
-// more than 8/255.
-std::pair<double, double> difference(const std::vector<std::uint8_t>& a,
-                                     const std::vector<std::uint8_t>& b) {
-  double sum = 0.0;
-  long over = 0;
-  const std::size_t pixels = a.size() / 4;
-  for (std::size_t p = 0; p < pixels; ++p) {
-    int worst = 0;
-    for (std::size_t c = 0; c < 3; ++c) {
-      const int d = std::abs(int(a[4 * p + c]) - int(b[4 * p + c]));
-      worst = std::max(worst, d);
-      sum += d;
-    }
-    over += worst > 8;
-  }
-  return {sum / (3.0 * double(pixels)), double(over) / double(pixels)};
-}
-
 TEST(ClothDetail, FastQualityDrawsALargeSheetCoarserWithTheSameLook) {
   vis::HeadlessRenderer renderer(320, 240);
   auto solver = testing::solver<float>(large_sheet(129));
@@ -148,17 +130,18 @@ TEST(ClothDetail, FastQualityDrawsALargeSheetCoarserWithTheSameLook) {
   renderer.set_cloth(*solver);
   vis::ViewSettings view = vis::default_view(*solver);
   view.quality = RenderQuality::fast;
-  const auto coarse = test::render_frame(renderer, *solver, view);
+  Image coarse(320, 240), every(320, 240);
+  coarse.rgba = test::render_frame(renderer, *solver, view);
   const int stride = renderer.renderer().cloth_stride();
   EXPECT_GT(stride, 1);
   renderer.renderer().enable_coarse_cloth(false);
-  const auto every = test::render_frame(renderer, *solver, view);
+  every.rgba = test::render_frame(renderer, *solver, view);
   EXPECT_EQ(renderer.renderer().cloth_stride(), 1);
-  const auto [mean, over] = difference(coarse, every);
+  const testing::Comparison c = testing::compare(coarse, every);
   std::printf("[ stride %d vs 1 ] mean %.3f/255, %.2f %% of pixels off by more than 8/255\n",
-              stride, mean, 100.0 * over);
-  EXPECT_LT(mean, 0.5);
-  EXPECT_LT(over, 0.005);
+              stride, c.mean_abs, 100.0 * c.fraction_over);
+  EXPECT_LT(c.mean_abs, 0.5);
+  EXPECT_LT(c.fraction_over, 0.005);
   // Full quality draws every triangle.
   renderer.renderer().enable_coarse_cloth(true);
   view.quality = RenderQuality::full;

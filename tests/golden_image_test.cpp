@@ -17,6 +17,7 @@
 #include <string>
 
 #include "factory/solver_factory.hpp"
+#include "image_compare.hpp"
 #include "render_frame.hpp"
 #include "sim/solver.hpp"
 #include "test_scenes.hpp"
@@ -39,33 +40,8 @@ Scene golden_scene() {
   return s;
 }
 
-struct Comparison {
-  double fraction_over = 0.0;  // pixels with a channel off by more than 8/255
-  double mean_abs = 0.0;       // mean |difference| over all channels, in 1/255
-};
-
-Comparison compare(const Image& actual, const Image& golden, Image& diff) {
-  Comparison c;
-  long over = 0;
-  double sum = 0.0;
-  diff = Image(actual.width, actual.height);
-  for (int y = 0; y < actual.height; ++y) {
-    for (int x = 0; x < actual.width; ++x) {
-      int worst = 0;
-      for (int ch = 0; ch < 3; ++ch) {
-        const int d = std::abs(int(actual.at(x, y)[ch]) - int(golden.at(x, y)[ch]));
-        worst = std::max(worst, d);
-        sum += d;
-        diff.at(x, y)[ch] = static_cast<std::uint8_t>(std::min(255, 8 * d));
-      }
-      over += worst > 8;
-    }
-  }
-  const double pixels = double(actual.width) * actual.height;
-  c.fraction_over = over / pixels;
-  c.mean_abs = sum / (3.0 * pixels);
-  return c;
-}
+using testing::compare;
+using testing::Comparison;
 
 class GoldenImage : public ::testing::TestWithParam<int> {
  protected:
@@ -119,7 +95,7 @@ Image check_golden(vis::HeadlessRenderer& renderer, Solver& solver, const vis::V
   EXPECT_EQ(golden.height, kHeight);
   if (golden.width != kWidth || golden.height != kHeight) return actual;
   Image diff;
-  const Comparison c = compare(actual, golden, diff);
+  const Comparison c = compare(actual, golden, &diff);
   const bool ok = c.fraction_over <= 0.005 && c.mean_abs < 1.0;
   if (!ok) {
     const fs::path out = fs::current_path() / "golden_out";
@@ -353,8 +329,7 @@ TEST_F(GoldenImage, FastKeepsTheLookOfFull) {
     const fs::path full_path =
         fs::path(CLOTHLAB_SOURCE_DIR) / "tests" / "golden" / (g.name + ".png");
     const Image full = read_png(full_path.string());
-    Image diff;
-    const Comparison c = compare(fast, full, diff);
+    const Comparison c = compare(fast, full);
     std::printf("[ fast vs full ] %s: mean %.3f/255, %.2f %% of pixels off by more than 8/255\n",
                 g.name.c_str(), c.mean_abs, 100.0 * c.fraction_over);
     EXPECT_LE(c.mean_abs, kFastMeanLimit) << g.name;
