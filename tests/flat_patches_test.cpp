@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -160,6 +162,71 @@ self_thickness = 0.004
   EXPECT_EQ(c.candidates, 0);
   EXPECT_EQ(c.flat_patches, 1);
   EXPECT_EQ(c.flat_triangles, 2 * 63 * 63);
+}
+
+// The broad phase's pieces for threads (TriangleBvh::tasks): two sheets 1 cm apart, both waved,
+// report every pair of overlapping triangles the whole traversal does, each once, also with the
+// pair of cloths cut into many pieces; a node culled within itself and a pair of nodes culled
+// between them report none of their pairs from any piece.
+TEST(TriangleBvh, PiecesReportEveryPairOnceAndCullsHoldInEveryPiece) {
+  const auto waved = [](double lift) {
+    return [lift](int i, int j) {
+      return V3(0.05 * i, lift + 0.02 * std::sin(0.9 * i) * std::cos(0.7 * j), 0.05 * j);
+    };
+  };
+  Mesh m;
+  add_grid(m, 16, 16, 0, waved(0.0));
+  add_grid(m, 16, 16, 1, waved(0.01));
+  TriangleBvh bvh(triangle_centroids(m.triangles, m.x), m.groups);
+  fill_triangle_boxes(m.triangles, m.x, 0.01, bvh.leaf_boxes());
+  bvh.refit();
+  using Pairs = std::vector<std::pair<int, int>>;
+  const auto ordered = [](int a, int b) { return std::pair(std::min(a, b), std::max(a, b)); };
+  Pairs whole;
+  bvh.self_pairs([&](int a, int b) { return whole.push_back(ordered(a, b)), true; });
+  std::sort(whole.begin(), whole.end());
+  const int cloth_a = bvh.left(0), cloth_b = bvh.right(0);
+  const auto under = [&](int n, int top) {
+    return bvh.triangles_begin(n) >= bvh.triangles_begin(top) &&
+           bvh.triangles_end(n) <= bvh.triangles_end(top);
+  };
+  const int b_left = bvh.left(cloth_b), b_right = bvh.right(cloth_b);
+  struct Cull {
+    std::function<bool(int)> self_fn;
+    std::function<bool(int, int)> pair_fn;
+    bool self(int n) const { return self_fn(n); }
+    bool pair(int a, int b) const { return pair_fn(a, b); }
+  };
+  const Cull none{[](int) { return false; }, [](int, int) { return false; }};
+  // Cloth a within itself, and the two halves of cloth b against each other.
+  const Cull some{[&](int n) { return n == cloth_a; },
+                  [&](int a, int b) {
+                    return (under(a, b_left) && under(b, b_right)) ||
+                           (under(a, b_right) && under(b, b_left));
+                  }};
+  const std::vector<TriangleBvh::Task> tasks = bvh.tasks(5);
+  EXPECT_GT(std::count_if(tasks.begin(), tasks.end(),
+                          [](const TriangleBvh::Task& t) { return t.within == 0; }),
+            64);  // the cloths against each other: 4^4 pieces
+  const auto run = [&](const Cull& cull) {
+    Pairs out;
+    for (const TriangleBvh::Task& t : tasks)
+      bvh.run(t, cull, [&](int a, int b) { return out.push_back(ordered(a, b)), true; });
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  ASSERT_GT(whole.size(), 1000u);
+  EXPECT_EQ(run(none), whole);  // sorted: any pair twice would show
+  Pairs expected;
+  const auto in = [&](int t, int top) {
+    return std::find(bvh.triangles_begin(top), bvh.triangles_end(top), t) != bvh.triangles_end(top);
+  };
+  for (const auto& [a, b] : whole)
+    if (!(in(a, cloth_a) && in(b, cloth_a)) && !(in(a, b_left) && in(b, b_right)) &&
+        !(in(a, b_right) && in(b, b_left)))
+      expected.push_back({a, b});
+  ASSERT_LT(expected.size() + 1000, whole.size());  // the culls remove many pairs
+  EXPECT_EQ(run(some), expected);
 }
 
 }  // namespace

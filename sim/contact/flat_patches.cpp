@@ -1,7 +1,10 @@
 #include "sim/contact/flat_patches.hpp"
 
+#include <omp.h>
+
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "sim/core/parallel.hpp"
@@ -35,10 +38,11 @@ FlatPatches<T>::FlatPatches(const TriangleBvh& bvh, const SurfaceFeatures& f,
   patch_of_.assign(f.triangles.size(), -1);
   block_ok_.assign(block_count(f.triangles.size()), 1);
   block_failure_.assign(block_count(f.triangles.size()), 0);
-  std::size_t longest = 0;  // the longest rim
   for (std::size_t n = 0; n + 1 < topology_.rim_begin.size(); ++n)
-    longest = std::max(longest, std::size_t(topology_.rim_begin[n + 1] - topology_.rim_begin[n]));
-  rim_.reserve(longest);
+    longest_rim_ =
+        std::max(longest_rim_, std::size_t(topology_.rim_begin[n + 1] - topology_.rim_begin[n]));
+  rims_.resize(1);
+  rims_[0].reserve(longest_rim_);
 }
 
 template <class T>
@@ -99,7 +103,7 @@ void FlatPatches<T>::visit(int node, std::size_t hint, const TriangleBvh& bvh,
       failed = hint;
     } else {
       failed = first + first_failure(size, threads, fails);
-      if (failed == first + size && rim_simple(node, axis, x0, x1)) {
+      if (failed == first + size && rim_simple(node, axis, x0, x1, rims_[0])) {
         choose_node(node, axis, begin, size);
         return;
       }
@@ -139,22 +143,44 @@ template <class T>
 bool FlatPatches<T>::still_flat(const SurfaceFeatures& f, const Vec3Array<T>& x0,
                                 const Vec3Array<T>& x1, int threads) {
   if (patches_.empty()) return true;
-  for_each_block_indexed(work_.size(), threads_for(work_.size(), threads),
-                         [&](std::size_t b, std::size_t lo, std::size_t hi) {
-                           std::uint8_t ok = 1;
-                           for (std::size_t k = lo; k < hi && ok; ++k) {
-                             const auto t = std::size_t(work_[k].triangle);
-                             ok = clears(f.triangles[t],
-                                         patches_[std::size_t(work_[k].patch)].axis_t,
-                                         T(kKeepBound) * rest_area2_[t], x0, x1);
-                           }
-                           block_ok_[b] = ok;
-                         });
+  for_each_block_indexed(
+      work_.size(), threads_for(work_.size(), threads, kParallelMinContactVertices),
+      [&](std::size_t b, std::size_t lo, std::size_t hi) {
+        std::uint8_t ok = 1;
+        for (std::size_t k = lo; k < hi && ok; ++k) {
+          const auto t = std::size_t(work_[k].triangle);
+          ok = clears(f.triangles[t], patches_[std::size_t(work_[k].patch)].axis_t,
+                      T(kKeepBound) * rest_area2_[t], x0, x1);
+        }
+        block_ok_[b] = ok;
+      });
   if (!std::all_of(block_ok_.begin(), block_ok_.begin() + long(block_count(work_.size())),
                    [](std::uint8_t ok) { return ok != 0; }))
     return false;
-  return std::all_of(patches_.begin(), patches_.end(),
-                     [&](const Patch& p) { return rim_simple(p.node, p.axis, x0, x1); });
+  return rims_simple(x0, x1, threads);
+}
+
+// The rims of the patches in parallel (dynamic: their lengths differ), each thread with its own
+// scratch; all stop once one fails. Whether all pass is the same for any thread count.
+template <class T>
+bool FlatPatches<T>::rims_simple(const Vec3Array<T>& x0, const Vec3Array<T>& x1, int threads) {
+  const int team = threads_for(patches_.size(), threads, kParallelRims);
+  while (rims_.size() < std::size_t(team)) {  // once, the first time a team is this large
+    rims_.emplace_back();
+    rims_.back().reserve(longest_rim_);
+  }
+  std::atomic<bool> failed{false};
+  const long count = long(patches_.size());
+  run_team(team, [&] {
+    std::vector<RimEdge>& rim = rims_[std::size_t(omp_get_thread_num())];
+#pragma omp for schedule(dynamic, 4)
+    for (long k = 0; k < count; ++k) {
+      if (failed.load(std::memory_order_relaxed)) continue;
+      const Patch& p = patches_[std::size_t(k)];
+      if (!rim_simple(p.node, p.axis, x0, x1, rim)) failed.store(true, std::memory_order_relaxed);
+    }
+  });
+  return !failed.load();
 }
 
 // The three Bernstein coefficients of the triangle's normal along the axis over the motion
@@ -178,7 +204,7 @@ bool FlatPatches<T>::clears(const std::array<int, 3>& t, const Axis& axis, T bou
 // line (sort and sweep along the plane's first axis).
 template <class T>
 bool FlatPatches<T>::rim_simple(int node, const V3& axis, const Vec3Array<T>& x0,
-                                const Vec3Array<T>& x1) {
+                                const Vec3Array<T>& x1, std::vector<RimEdge>& rim) const {
   const std::size_t begin = std::size_t(topology_.rim_begin[std::size_t(node)]);
   const std::size_t end = std::size_t(topology_.rim_begin[std::size_t(node) + 1]);
   const V3 u = axis.unitOrthogonal(), w = axis.cross(u);
@@ -188,7 +214,7 @@ bool FlatPatches<T>::rim_simple(int node, const V3& axis, const Vec3Array<T>& x0
       motion += load3(x1, std::size_t(v)) - load3(x0, std::size_t(v));
   motion /= double(2 * (end - begin));
   const auto plane = [&](const V3& x) { return V2(u.dot(x), w.dot(x)); };
-  rim_.clear();
+  rim.clear();
   for (std::size_t k = begin; k < end; ++k) {
     RimEdge e;
     e.v = topology_.rim[k];
@@ -203,13 +229,13 @@ bool FlatPatches<T>::rim_simple(int node, const V3& axis, const Vec3Array<T>& x0
         e.lo[a] = std::min(e.lo[a], p[long(a)]);
         e.hi[a] = std::max(e.hi[a], p[long(a)]);
       }
-    rim_.push_back(e);
+    rim.push_back(e);
   }
-  std::sort(rim_.begin(), rim_.end(),
+  std::sort(rim.begin(), rim.end(),
             [](const RimEdge& a, const RimEdge& b) { return a.lo[0] < b.lo[0]; });
-  for (std::size_t i = 0; i < rim_.size(); ++i)
-    for (std::size_t j = i + 1; j < rim_.size() && rim_[j].lo[0] <= rim_[i].hi[0] + margin_; ++j) {
-      const RimEdge &a = rim_[i], &b = rim_[j];
+  for (std::size_t i = 0; i < rim.size(); ++i)
+    for (std::size_t j = i + 1; j < rim.size() && rim[j].lo[0] <= rim[i].hi[0] + margin_; ++j) {
+      const RimEdge &a = rim[i], &b = rim[j];
       const bool touch =
           a.v[0] == b.v[0] || a.v[0] == b.v[1] || a.v[1] == b.v[0] || a.v[1] == b.v[1];
       if (touch || a.lo[1] > b.hi[1] + margin_ || b.lo[1] > a.hi[1] + margin_) continue;

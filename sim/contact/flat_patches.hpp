@@ -36,6 +36,8 @@ class FlatPatches {
   static constexpr double kKeepBound = 0.1;
   // Smaller nodes are never skipped (their few pairs cost less than the test).
   static constexpr std::size_t kMinTriangles = 16;
+  // Patches whose rims are worth a second thread (a rim's test takes microseconds).
+  static constexpr std::size_t kParallelRims = 16;
 
   // margin: m, how far apart in the plane the rim's edges must stay.
   FlatPatches(const TriangleBvh& bvh, const SurfaceFeatures& f, const Vec3Array<T>& rest,
@@ -83,7 +85,9 @@ class FlatPatches {
   bool clears(const std::array<int, 3>& t, const Axis& axis, T bound, const Vec3Array<T>& x0,
               const Vec3Array<T>& x1) const;
   bool rim_simple(int node, const Eigen::Vector3d& axis, const Vec3Array<T>& x0,
-                  const Vec3Array<T>& x1);
+                  const Vec3Array<T>& x1, std::vector<RimEdge>& rim) const;
+  // Whether every patch's rim stays simple (rim_simple), the patches shared among the threads.
+  bool rims_simple(const Vec3Array<T>& x0, const Vec3Array<T>& x1, int threads);
   bool apart(const RimEdge& a, const RimEdge& b) const;
 
   PatchTopology topology_;
@@ -96,7 +100,8 @@ class FlatPatches {
   std::vector<std::int32_t> patch_of_;      // per triangle: its chosen patch, or -1
   std::vector<std::uint8_t> block_ok_;      // per block of a parallel test
   std::vector<std::size_t> block_failure_;  // per block: its first failing triangle
-  std::vector<RimEdge> rim_;                // scratch for one rim
+  std::vector<std::vector<RimEdge>> rims_;  // per thread: scratch for one rim
+  std::size_t longest_rim_ = 0;
 };
 
 extern template class FlatPatches<float>;

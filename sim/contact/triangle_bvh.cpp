@@ -103,12 +103,24 @@ std::vector<TriangleBvh::Task> TriangleBvh::tasks(int depth) const {
 void TriangleBvh::split(int n, int depth, std::vector<Task>& out) const {
   const Node& node = nodes_[std::size_t(n)];
   if (depth == 0 || node.left < 0) {
-    out.push_back({n, n});
+    out.push_back({n, n, n});
     return;
   }
   split(node.left, depth - 1, out);
   split(node.right, depth - 1, out);
-  out.push_back({node.left, node.right});
+  split_pair(node.left, node.right, depth - 1, n, out);
+}
+
+// pair(a, b) = the four pairs of their children, unrolled `depth` levels (or to a leaf). Each
+// piece tests its own boxes: an overlap of descendants implies one of their ancestors.
+void TriangleBvh::split_pair(int a, int b, int depth, int within, std::vector<Task>& out) const {
+  const Node &na = nodes_[std::size_t(a)], &nb = nodes_[std::size_t(b)];
+  if (depth == 0 || na.left < 0 || nb.left < 0) {
+    out.push_back({a, b, within});
+    return;
+  }
+  for (int ca : {na.left, na.right})
+    for (int cb : {nb.left, nb.right}) split_pair(ca, cb, depth - 1, within, out);
 }
 
 void TriangleBvh::refit() {

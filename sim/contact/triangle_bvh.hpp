@@ -72,22 +72,26 @@ class TriangleBvh {
   const int* triangles_end(int n) const { return order_.data() + nodes_[std::size_t(n)].end; }
 
   // The same traversal cut into independent pieces for threads: the nodes `depth` levels down
-  // each against themselves, and the pairs of siblings above them against each other. Run in
-  // the listed order, the pieces report the pairs in the order self_pairs does.
+  // each against themselves, and the pairs of siblings above them against each other, each such
+  // pair cut again into the pairs of their descendants down to that depth (two cloths against
+  // each other are one pair of siblings at the root: uncut, it was one piece holding most of
+  // the work). The pieces report every pair self_pairs does, each once; run in the listed
+  // order, in an order that depends on the tree alone.
   struct Task {
     int a = 0, b = 0;  // a == b: node a against itself
+    int within = 0;  // the node the piece lies in (a, or the siblings' parent a and b descend from)
   };
   std::vector<Task> tasks(int depth) const;
   // cull.self(n): node n reports no pair within itself (nor do the nodes under it);
-  // cull.pair(a, b): nodes a and b report no pair between them (nor do the nodes under them).
+  // cull.pair(a, b): nodes a and b report no pair between them (nor do the nodes under them: a
+  // cull must then hold for every pair of their descendants too, since a piece may start below).
   struct NoCull {
     bool self(int) const { return false; }
     bool pair(int, int) const { return false; }
   };
   template <class Cull, class Fn>
   bool run(const Task& t, const Cull& cull, Fn&& fn) const {
-    // The piece lies within node a (a against itself) or within the parent of siblings a, b.
-    for (int n = t.a == t.b ? t.a : parent(t.a); n >= 0; n = parent(n))
+    for (int n = t.within; n >= 0; n = parent(n))
       if (cull.self(n)) return true;
     return t.a == t.b ? self(t.a, cull, fn) : pair(t.a, t.b, cull, fn);
   }
@@ -101,6 +105,7 @@ class TriangleBvh {
     int begin = 0, end = 0;     // its triangles: order_[begin, end)
   };
   void split(int n, int depth, std::vector<Task>& out) const;
+  void split_pair(int a, int b, int depth, int within, std::vector<Task>& out) const;
   int build(std::vector<int>& order, std::size_t begin, std::size_t end,
             const std::vector<Eigen::Vector3d>& centroids, const std::vector<int>& groups);
   // A split of order[begin, end) between groups nearest its middle; 0 when it holds one group.
