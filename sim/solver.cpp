@@ -163,6 +163,7 @@ AdvanceResult SolverT<T>::step(long count) {
       sync_state();
       self_->find_pairs(model_, state_, dt_, threads_);
     }
+    int pass_begin = 0, pass_end = 0;  // triangle contact's pass: its substeps
     for (int sub = 0; sub < substeps_; ++sub) {
       const double t = t0 + sub * h;
       if (contacts_) {
@@ -174,8 +175,10 @@ AdvanceResult SolverT<T>::step(long count) {
         moving_pins_->drive(model_, state_, t, h);
         mirror_written();
       }
-      if (cloth_contact_) {
+      if (cloth_contact_ && sub == pass_end) {
         sync_state();
+        pass_begin = sub;
+        pass_end = sub + cloth_contact_->pass_span(state_, h, substeps_ - sub, threads_);
         cloth_contact_->begin(state_, threads_);
       }
       record(integrate(sys, t, h));
@@ -199,9 +202,10 @@ AdvanceResult SolverT<T>::step(long count) {
         if (self_->respond(model_, state_, h)) corrected = true;
       }
       // Last: the fail-safe's guarantee holds for the positions it leaves.
-      if (cloth_contact_) {
+      if (cloth_contact_ && sub + 1 == pass_end) {
         sync_state();
-        if (cloth_contact_->respond(model_, state_, h, threads_)) corrected = true;
+        const double span = (pass_end - pass_begin) * h;
+        if (cloth_contact_->respond(model_, state_, span, threads_)) corrected = true;
         tangles_.count(cloth_contact_->last().overflow, t);
       }
       if (corrected) state_corrected();

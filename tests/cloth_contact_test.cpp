@@ -486,6 +486,32 @@ TEST(ClothContact, RenumberedVerticesGetTheSameResponse) {
   EXPECT_LT(worst, 1e-12);
 }
 
+// A pass of triangle contact spans several substeps while no vertex moves, relative to the mean
+// velocity of all, more than half the 4 mm thickness over it, and at most 1/150 s: the stack
+// falling as one spans 4 of xpbd's 1/600 s substeps (3 when only 3 are left in the step); one
+// vertex 0.5 m/s faster than the rest allows 2 (0.83 mm a substep), 1 m/s only 1.
+TEST(ClothContact, PassesSpanSubstepsWhileNothingMovesFastRelativeToTheRest) {
+  const Scene scene = shipped("stack_on_ball.toml");
+  const Model<double> m = build_model<double>(scene);
+  TriangleContact<double> contact(m, scene.solver);
+  State<double> s;
+  s.pos = m.rest_positions;
+  s.vel.resize(m.n);
+  const auto falling = [&](double extra) {
+    for (std::size_t i = 0; i < m.n; ++i) s.vel.set(i, 0.2, -3.0 - (i == 7 ? extra : 0.0), 0.0);
+  };
+  constexpr double h = 1.0 / 600.0;
+  for (int threads = 1; threads <= 2; ++threads) {
+    falling(0.0);
+    EXPECT_EQ(contact.pass_span(s, h, 10, threads), 4);
+    EXPECT_EQ(contact.pass_span(s, h, 3, threads), 3);
+    falling(0.5);
+    EXPECT_EQ(contact.pass_span(s, h, 10, threads), 2);
+    falling(1.0);
+    EXPECT_EQ(contact.pass_span(s, h, 10, threads), 1);
+  }
+}
+
 // A large sheet that swings without ever touching itself moves exactly as it does without
 // contact: no push, no rollback. (Its swing strays a centimetre from the mean motion in one
 // substep, which once grew the skin until the pairs overflowed and the sheet was stopped dead; a

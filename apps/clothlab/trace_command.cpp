@@ -129,11 +129,11 @@ void print_summary(const TraceArgs& args, const Scene& scene, const Solver& solv
       r.final_energy.total(), r.final_energy.kinetic, r.final_energy.elastic,
       r.final_energy.gravity, args.out.c_str(), r.written_steps);
   // Cloth through cloth at the end (sim/contact/intersections.hpp), and what triangle contact did
-  // in the last substep when it is on.
+  // in its last pass when it is on.
   std::printf("contact: %ld crossing edge/triangle pairs at the end", solver.intersections());
   if (const auto c = solver.last_cloth_contact())
     std::printf(
-        "; cloth contact in the last substep: %d candidate pairs, %d pushed apart, %d "
+        "; cloth contact in its last pass: %d candidate pairs, %d pushed apart, %d "
         "vertices rolled back, %d triangles in %d flat patches",
         c->candidates, c->contacts, c->rolled_back, c->flat_triangles, c->flat_patches);
   if (const auto c = solver.last_cloth_contact(); c && c->overflow)

@@ -3,7 +3,7 @@
 // on `--threads` solver threads (the targets are stated for 2): the largest count of crossing
 // edge/triangle pairs over the 60 Hz frames (sim/contact/intersections.hpp), the count at the end,
 // the time a 1/60 s frame takes (the count is not timed) and its ratio to the same scene without
-// contact, and what contact did in the last substep (pairs, pushes, and the triangles its flat
+// contact, and what contact did in its last pass (pairs, pushes, and the triangles its flat
 // patches skipped). docs/contact.md section 7 quotes it.
 #include <filesystem>
 #include <ostream>

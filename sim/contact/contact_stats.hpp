@@ -1,6 +1,6 @@
 // What the collision responses did: the colliders' in the last substep
 // (sim/contact/contact_response.hpp), self-collision's in the last step
-// (sim/contact/self_collision.hpp), triangle contact's in the last substep.
+// (sim/contact/self_collision.hpp), triangle contact's in its last pass (one or more substeps).
 #pragma once
 
 namespace clothlab {
@@ -18,13 +18,13 @@ struct SelfCollisionStats {
   double query_radius = 0.0;  // m: thickness + 2 vmax dt of this step
 };
 
-// Triangle contact's last substep (sim/contact/triangle_contact.hpp).
+// Triangle contact's last pass (sim/contact/triangle_contact.hpp).
 struct ClothContactStats {
   int candidates = 0;        // vertex-triangle and edge-edge pairs the broad phase found
   int contacts = 0;          // pairs the proximity pass pushed apart to the thickness
-  int rolled_back = 0;       // vertices the fail-safe returned to their start of the substep
+  int rolled_back = 0;       // vertices the fail-safe returned to their start of the pass
   int unresolved = 0;        // flagged pairs with no free vertex left to return (pins that move)
-  bool overflow = false;     // a tangle beyond the pair bound: the substep was undone
+  bool overflow = false;     // a tangle beyond the pair bound: the pass was undone
   bool collected = false;    // the broad phase ran (a vertex left its widened box)
   bool recollected = false;  // again after the proximity pass moved a vertex out of its box
   int flat_patches = 0;      // patches skipped as flat (sim/contact/flat_patches.hpp)

@@ -93,34 +93,37 @@ void fill_triangle_boxes(const std::vector<std::array<int, 3>>& triangles,
   }
 }
 
-std::vector<TriangleBvh::Task> TriangleBvh::tasks(int depth) const {
+std::vector<TriangleBvh::Task> TriangleBvh::tasks(int depth, int min_pair_triangles) const {
   std::vector<Task> out;
-  if (!nodes_.empty()) split(0, depth, out);
+  if (!nodes_.empty()) split(0, depth, min_pair_triangles, out);
   return out;
 }
 
 // self(n) = self(left), self(right), pair(left, right), unrolled `depth` levels.
-void TriangleBvh::split(int n, int depth, std::vector<Task>& out) const {
+void TriangleBvh::split(int n, int depth, int min_pair, std::vector<Task>& out) const {
   const Node& node = nodes_[std::size_t(n)];
   if (depth == 0 || node.left < 0) {
     out.push_back({n, n, n});
     return;
   }
-  split(node.left, depth - 1, out);
-  split(node.right, depth - 1, out);
-  split_pair(node.left, node.right, depth - 1, n, out);
+  split(node.left, depth - 1, min_pair, out);
+  split(node.right, depth - 1, min_pair, out);
+  split_pair(node.left, node.right, depth - 1, n, min_pair, out);
 }
 
-// pair(a, b) = the four pairs of their children, unrolled `depth` levels (or to a leaf). Each
-// piece tests its own boxes: an overlap of descendants implies one of their ancestors.
-void TriangleBvh::split_pair(int a, int b, int depth, int within, std::vector<Task>& out) const {
+// pair(a, b) = the four pairs of their children, unrolled `depth` levels (or to a leaf, or to
+// pairs smaller than min_pair triangles). Each piece tests its own boxes: an overlap of
+// descendants implies one of their ancestors.
+void TriangleBvh::split_pair(int a, int b, int depth, int within, int min_pair,
+                             std::vector<Task>& out) const {
   const Node &na = nodes_[std::size_t(a)], &nb = nodes_[std::size_t(b)];
-  if (depth == 0 || na.left < 0 || nb.left < 0) {
+  if (depth == 0 || na.left < 0 || nb.left < 0 ||
+      (na.end - na.begin) + (nb.end - nb.begin) < min_pair) {
     out.push_back({a, b, within});
     return;
   }
   for (int ca : {na.left, na.right})
-    for (int cb : {nb.left, nb.right}) split_pair(ca, cb, depth - 1, within, out);
+    for (int cb : {nb.left, nb.right}) split_pair(ca, cb, depth - 1, within, min_pair, out);
 }
 
 void TriangleBvh::refit() {

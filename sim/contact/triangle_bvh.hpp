@@ -81,7 +81,9 @@ class TriangleBvh {
     int a = 0, b = 0;  // a == b: node a against itself
     int within = 0;  // the node the piece lies in (a, or the siblings' parent a and b descend from)
   };
-  std::vector<Task> tasks(int depth) const;
+  // A pair is cut only while its two nodes hold at least min_pair_triangles triangles together
+  // (each piece costs a little to start: a small cloth's pieces would cost more than they gain).
+  std::vector<Task> tasks(int depth, int min_pair_triangles = 0) const;
   // cull.self(n): node n reports no pair within itself (nor do the nodes under it);
   // cull.pair(a, b): nodes a and b report no pair between them (nor do the nodes under them: a
   // cull must then hold for every pair of their descendants too, since a piece may start below).
@@ -104,8 +106,8 @@ class TriangleBvh {
     int triangle = -1;          // the leaf's triangle
     int begin = 0, end = 0;     // its triangles: order_[begin, end)
   };
-  void split(int n, int depth, std::vector<Task>& out) const;
-  void split_pair(int a, int b, int depth, int within, std::vector<Task>& out) const;
+  void split(int n, int depth, int min_pair, std::vector<Task>& out) const;
+  void split_pair(int a, int b, int depth, int within, int min_pair, std::vector<Task>& out) const;
   int build(std::vector<int>& order, std::size_t begin, std::size_t end,
             const std::vector<Eigen::Vector3d>& centroids, const std::vector<int>& groups);
   // A split of order[begin, end) between groups nearest its middle; 0 when it holds one group.

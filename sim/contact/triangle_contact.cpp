@@ -14,7 +14,9 @@
 namespace clothlab {
 namespace {
 
-// Gauss-Seidel sweeps over the pairs a substep (a second cost 1.1x the frame, docs/contact.md).
+// Gauss-Seidel sweeps over the pairs per substep of a pass (a second cost 1.1x the frame,
+// docs/contact.md). A pass of several substeps sweeps as many times: with one sweep, passes of up
+// to four substeps left the landed pile's layers 0.79 of the thickness apart, with four 0.93.
 constexpr int kProximityIterations = 1;
 constexpr double kFriction = 0.3;  // cloth on cloth (cotton on cotton 0.3 to 0.5)
 // Candidate pairs reserved per triangle when built: the pair list grows past it only in a
@@ -26,12 +28,22 @@ constexpr std::size_t kPairsPerTriangle = 16;
 // the cap keeps an exploding large cloth's list under 100 MB.
 constexpr std::size_t kMaxPairsPerTriangle = 256;
 constexpr std::size_t kMaxPairs = std::size_t(1) << 22;
+// A pass may span several substeps while no vertex moves, relative to the mean velocity of all,
+// more than kPassReach thicknesses over it, and for at most kMaxPassTime (docs/contact.md section
+// 7, "Passes"): cloth at rest or moving as one needs contact far less often than the integrator
+// needs its substeps.
+constexpr double kPassReach = 0.5;
+constexpr double kMaxPassTime = 1.0 / 150.0;  // s
 // Rounds of the fail-safe before every free vertex returns.
 constexpr int kMaxRounds = 16;
 // Leaf pairs a broad-phase piece visits between adding its counts to the shared totals.
 constexpr std::size_t kFlush = 256;
 // Levels of the tree unrolled into pieces for threads (2^kTaskDepth nodes against themselves).
 constexpr int kTaskDepth = 5;
+// Triangles in a pair of nodes below which the pair is not cut into smaller pieces: the stack on
+// the ball's two cloths (6400 triangles) against each other in 64 pieces, the 32 x 32 default
+// sheet's two halves in 4.
+constexpr int kMinPairPiece = 1024;
 // The least a vertex may stray before the pairs are collected again, in thicknesses.
 constexpr double kSkin = 1.0;
 // At least this many times the vertex's stray in the substep that needed the pairs again, so
@@ -176,10 +188,9 @@ TriangleContact<T>::TriangleContact(const Model<T>& m, const SolverSpec& spec,
   flag_.reserve(pairs_.capacity());
   margins_.slack.reserve(pairs_.capacity());
   margins_.moved.assign(m.n, 0.0f);
-  tasks_ = bvh_.tasks(kTaskDepth);
-  task_pairs_.resize(tasks_.size());
-  task_done_.assign(tasks_.size(), 1);
-  for (auto& part : task_pairs_) part.reserve(pairs_.capacity() / tasks_.size() + 64);
+  tasks_ = bvh_.tasks(kTaskDepth, kMinPairPiece);
+  task_lists_.resize(tasks_.size());
+  pool_.reserve(pairs_.capacity(), tasks_.size());
   returned_round_.assign(m.n, 0);
   returned_.reserve(m.n);
   block_sums_.assign(kBlockSums * block_count(m.n), 0.0);
@@ -189,6 +200,33 @@ TriangleContact<T>::TriangleContact(const Model<T>& m, const SolverSpec& spec,
   strays_.dev1.assign(m.n, 0.0f);
   moved_.assign(m.n, 0);
   moved_list_.reserve(m.n);
+}
+
+template <class T>
+int TriangleContact<T>::pass_span(const State<T>& s, double h, int most, int threads) {
+  const std::size_t n = s.vel.size(), blocks = block_count(n);
+  if (most <= 1 || n == 0) return span_ = 1;
+  for_each_block_indexed(n, team(n, threads), [&](std::size_t b, std::size_t lo, std::size_t hi) {
+    V3 sum = V3::Zero();
+    for (std::size_t i = lo; i < hi; ++i) sum += load3(s.vel, i);
+    for (long a = 0; a < 3; ++a) block_sums_[3 * b + std::size_t(a)] = sum[a];
+  });
+  V3 mean = V3::Zero();
+  for (std::size_t b = 0; b < blocks; ++b)
+    mean += V3(block_sums_[3 * b], block_sums_[3 * b + 1], block_sums_[3 * b + 2]);
+  mean /= double(n);
+  for_each_block_indexed(n, team(n, threads), [&](std::size_t b, std::size_t lo, std::size_t hi) {
+    double fastest = 0.0;
+    for (std::size_t i = lo; i < hi; ++i)
+      fastest = std::max(fastest, (load3(s.vel, i) - mean).squaredNorm());
+    block_sums_[b] = fastest;
+  });
+  const double fastest =
+      std::sqrt(*std::max_element(block_sums_.begin(), block_sums_.begin() + long(blocks)));
+  const double by_speed = kPassReach * thickness_ / std::max(fastest * h, 1e-300);
+  const double by_time = kMaxPassTime / h * (1.0 + 1e-9);
+  span_ = int(std::clamp(std::floor(std::min(by_speed, by_time)), 1.0, double(most)));
+  return span_;
 }
 
 template <class T>
@@ -391,12 +429,7 @@ bool TriangleContact<T>::gather_pairs(int threads) {
     boxes[t] = {V3(b.lo[0], b.lo[1], b.lo[2]), V3(b.hi[0], b.hi[1], b.hi[2])};
   }
   bvh_.refit();
-  // The pieces add their leaf pairs and pairs to shared totals every kFlush leaves; once a total
-  // passes the bound every piece stops. The true totals alone decide whether they pass it, so
-  // the outcome (a tangle or the full list) is the same for any thread count, and a tangle is
-  // found after about the bound's worth of work.
   const std::size_t bound = std::min(kMaxPairsPerTriangle * boxes.size(), kMaxPairs);
-  const long count = long(tasks_.size());
   // What the first tree's traversal skips: its own flat patches within themselves, and pairs of
   // nodes inside one flat patch of the second tree.
   struct Cull {
@@ -409,44 +442,55 @@ bool TriangleContact<T>::gather_pairs(int threads) {
     }
   };
   const Cull cull{flat_, seam_patch_};
-  std::atomic<std::size_t> all_leaves{0}, all_pairs{0};
-  std::atomic<bool> tangle{false};
-  run_team(threads, [&] {
-#pragma omp for schedule(dynamic, 1)
-    for (long k = 0; k < count; ++k) {
-      std::vector<Pair>& out = task_pairs_[std::size_t(k)];
-      out.clear();
-      std::size_t leaves = 0, flushed = 0;
-      const auto flush = [&] {
-        const bool past =
-            all_leaves.fetch_add(leaves) + leaves > bound ||
-            all_pairs.fetch_add(out.size() - flushed) + (out.size() - flushed) > bound;
-        leaves = 0;
-        flushed = out.size();
-        if (past) tangle.store(true, std::memory_order_relaxed);
-        return !past && !tangle.load(std::memory_order_relaxed);
-      };
-      const bool ran = bvh_.run(tasks_[std::size_t(k)], cull, [&](int ta, int tb) {
-        add_pairs(ta, tb, out);
-        return ++leaves < kFlush || flush();
-      });
-      task_done_[std::size_t(k)] = ran && flush();
-    }
-  });
-  std::size_t total = 0;
-  bool done = true;
-  for (std::size_t k = 0; k < task_pairs_.size(); ++k) {
-    total += task_pairs_[k].size();
-    done = done && task_done_[k];
+  for (;;) {
+    const Gathered g = run_pieces(threads, bound, cull);
+    if (g == Gathered::tangle) return false;
+    if (g == Gathered::all) break;
+    pool_.grow();  // the pool ran out before the bound: once, when the list outgrows it
   }
-  if (!done || total > bound) return false;
-  for (const std::vector<Pair>& part : task_pairs_)
-    pairs_.insert(pairs_.end(), part.begin(), part.end());
+  for (const PairPool::List& list : task_lists_) pool_.append_to(list, pairs_);
   flag_.resize(pairs_.size());
   margins_.slack.resize(pairs_.size());
   margins_.max_dist = 0.0;
   for (const Pair& p : pairs_) margins_.max_dist = std::max(margins_.max_dist, double(p.dist));
   return true;
+}
+
+// The broad phase's pieces on the threads, each into its own list of the pool.
+template <class T>
+template <class Cull>
+typename TriangleContact<T>::Gathered TriangleContact<T>::run_pieces(int threads, std::size_t bound,
+                                                                     const Cull& cull) {
+  pool_.clear();
+  const long count = long(tasks_.size());
+  // The pieces add their leaf pairs and pairs to shared totals every kFlush leaves; once a total
+  // passes the bound every piece stops. The true totals alone decide whether they pass it, so
+  // the outcome (a tangle or the full list) is the same for any thread count, and a tangle is
+  // found after about the bound's worth of work.
+  std::atomic<std::size_t> all_leaves{0}, all_pairs{0};
+  std::atomic<bool> tangle{false};
+  run_team(threads, [&] {
+#pragma omp for schedule(dynamic, 1)
+    for (long k = 0; k < count; ++k) {
+      PairPool::List& list = task_lists_[std::size_t(k)];
+      list = {};
+      std::size_t leaves = 0, flushed = 0;
+      const auto flush = [&] {
+        const bool past = all_leaves.fetch_add(leaves) + leaves > bound ||
+                          all_pairs.fetch_add(list.size - flushed) + (list.size - flushed) > bound;
+        leaves = 0;
+        flushed = list.size;
+        if (past) tangle.store(true, std::memory_order_relaxed);
+        return !past && !tangle.load(std::memory_order_relaxed);
+      };
+      bvh_.run(tasks_[std::size_t(k)], cull, [&](int ta, int tb) {
+        return add_pairs(ta, tb, list) && (++leaves < kFlush || flush());
+      });
+      flush();
+    }
+  });
+  if (tangle.load()) return Gathered::tangle;
+  return pool_.exhausted() ? Gathered::out_of_room : Gathered::all;
 }
 
 // For each node of the first tree, the second tree's flat patch that holds all its triangles, or
@@ -465,7 +509,7 @@ void TriangleContact<T>::seam_patches() {
 }
 
 template <class T>
-void TriangleContact<T>::add_pairs(int ta, int tb, std::vector<Pair>& out) const {
+bool TriangleContact<T>::add_pairs(int ta, int tb, PairPool::List& out) {
   const auto& A = features_.triangles[std::size_t(ta)];
   const auto& B = features_.triangles[std::size_t(tb)];
   const auto points_on = [&](int owner, const std::array<int, 3>& P, int face) {
@@ -474,15 +518,16 @@ void TriangleContact<T>::add_pairs(int ta, int tb, std::vector<Pair>& out) const
     for (int k = 0; k < 3; ++k) {
       const int v = P[std::size_t(k)];
       if ((mask & (1u << k)) && !shares_vertex(F, v) &&
-          near(point_box(v), triangle_box_[std::size_t(face)]))
-        keep_if_close({{v, F[0], F[1], F[2]}, false}, out);
+          near(point_box(v), triangle_box_[std::size_t(face)]) &&
+          !keep_if_close({{v, F[0], F[1], F[2]}, false}, out))
+        return false;
     }
+    return true;
   };
-  points_on(ta, A, tb);
-  points_on(tb, B, ta);
+  if (!points_on(ta, A, tb) || !points_on(tb, B, ta)) return false;
   const std::uint8_t ma = features_.owned_edges[std::size_t(ta)];
   const std::uint8_t mb = features_.owned_edges[std::size_t(tb)];
-  if (!ma || !mb) return;
+  if (!ma || !mb) return true;
   for (int i = 0; i < 3; ++i) {
     if (!(ma & (1u << i))) continue;
     const auto ei = std::size_t(features_.triangle_edges[std::size_t(ta)][std::size_t(i)]);
@@ -491,25 +536,27 @@ void TriangleContact<T>::add_pairs(int ta, int tb, std::vector<Pair>& out) const
       if (!(mb & (1u << j))) continue;
       const auto fj = std::size_t(features_.triangle_edges[std::size_t(tb)][std::size_t(j)]);
       const auto& f = features_.edges[fj];
-      if (!shares_vertex(e, f) && near(edge_box_[ei], edge_box_[fj]))
-        keep_if_close({{e[0], e[1], f[0], f[1]}, true}, out);
+      if (!shares_vertex(e, f) && near(edge_box_[ei], edge_box_[fj]) &&
+          !keep_if_close({{e[0], e[1], f[0], f[1]}, true}, out))
+        return false;
     }
   }
+  return true;
 }
 
 // A pair is kept when its distance at xc is within the thickness and the allowances of its two
 // sides (a point of a triangle or an edge strays no farther than its farthest vertex).
 template <class T>
-void TriangleContact<T>::keep_if_close(const Pair& p, std::vector<Pair>& out) const {
+bool TriangleContact<T>::keep_if_close(Pair p, PairPool::List& out) {
   const auto a = [&](int k) { return strays_.allow[std::size_t(p.v[std::size_t(k)])]; };
   const float first = p.edge_edge ? std::max(a(0), a(1)) : a(0);
   const float other = std::max({a(2), a(3), p.edge_edge ? a(2) : a(1)});
   const double d = thickness_ + double(first) + double(other);
   const double dist2 = pair_dist2(
       p.edge_edge ? PrimitivePair::edge_edge : PrimitivePair::point_triangle, gather(xc_, p.v));
-  if (dist2 > d * d) return;
-  out.push_back(p);
-  out.back().dist = float(std::sqrt(dist2) * (1.0 - 1e-6));
+  if (dist2 > d * d) return true;
+  p.dist = float(std::sqrt(dist2) * (1.0 - 1e-6));
+  return pool_.push(out, p);
 }
 
 template <class T>
@@ -735,7 +782,10 @@ int TriangleContact<T>::return_all(const Model<T>& m, State<T>& s) {
   return count;
 }
 
-// Velocities take the position change of the pushes over h (only the vertices they moved).
+// Velocities take the position change of the pushes over h, the pass's duration (only the
+// vertices they moved): a pair that closed over the pass has its closing speed taken away, not
+// reversed, also when the pass spans several substeps (over the last substep alone, the push of a
+// pass of k substeps would send it apart at up to k times that speed).
 // Returns the longest of those changes.
 template <class T>
 double TriangleContact<T>::update_velocities(State<T>& s, double h) {
@@ -811,11 +861,11 @@ bool TriangleContact<T>::respond(const Model<T>& m, State<T>& s, double h, int t
     if (!collect_pairs(s, threads)) return undo(m, s);
   }
   // Which pairs need a push, in parallel; then sweeps of pushes over those, serially in pair
-  // order (a pair that a neighbour's push brings within the thickness waits for the next
-  // substep; the fail-safe holds meanwhile).
+  // order, kProximityIterations per substep of the pass (a pair that a neighbour's push brings
+  // within the thickness waits for the next pass; the fail-safe holds meanwhile).
   int contacts = 0;
   flag_proximity(s, threads);
-  for (int it = 0; it < kProximityIterations; ++it)
+  for (int it = 0; it < kProximityIterations * span_; ++it)
     for (std::size_t k = 0; k < pairs_.size(); ++k)
       if (flag_[k] == PairFlag::hit && push_apart(m, s, pairs_[k])) ++contacts;
   stats_.contacts = contacts;

@@ -1,6 +1,7 @@
 // Cloth against cloth, within a cloth and between cloths, with triangles (docs/contact.md section
-// 7; solver.cloth_contact). After every integrator substep, on the positions x1 and velocities it
-// made from the substep's start x0:
+// 7; solver.cloth_contact). After every pass, on the positions x1 and velocities the integrator
+// (and the colliders) made from the pass's start x0. A pass is one substep, or several while no
+// vertex moves fast relative to the rest (pass_span); below, "substep" means the pass:
 //  1. Broad phase: a material-space tree over the triangles (sim/contact/triangle_bvh.hpp)
 //     refitted to each triangle's box swept from x0 to x1 yields the pairs of triangles within
 //     a thickness, and of those the vertex-triangle and edge-edge pairs (each once,
@@ -42,6 +43,7 @@
 
 #include "sim/contact/contact_stats.hpp"
 #include "sim/contact/flat_patches.hpp"
+#include "sim/contact/pair_pool.hpp"
 #include "sim/contact/stray_bounds.hpp"
 #include "sim/contact/surface_features.hpp"
 #include "sim/contact/triangle_bvh.hpp"
@@ -64,9 +66,13 @@ class TriangleContact {
   };
   TriangleContact(const Model<T>& m, const SolverSpec& spec, const RestLayout& rest);
 
-  // Before a substep: where it starts.
+  // How many of the next substeps (each of length h, at most `most`) one pass spans: as many as
+  // keep every vertex's motion, at its speed now relative to the mean velocity of all vertices,
+  // within kPassReach thicknesses over the pass, and within kMaxPassTime; at least one.
+  int pass_span(const State<T>& s, double h, int most, int threads);
+  // Before a pass: where it starts.
   void begin(const State<T>& s, int threads);
-  // After the substep of length h. Returns true when it changed some vertex.
+  // After the pass, of duration h. Returns true when it changed some vertex.
   bool respond(const Model<T>& m, State<T>& s, double h, int threads);
 
   const ClothContactStats& last() const { return stats_; }
@@ -108,8 +114,14 @@ class TriangleContact {
   void measure_stray1(const State<T>& s, int threads);
   FloatBox point_box(int v) const;
   void seam_patches();
-  void add_pairs(int ta, int tb, std::vector<Pair>& out) const;
-  void keep_if_close(const Pair& p, std::vector<Pair>& out) const;
+  // What a run of the broad phase's pieces found: every pair, more than the bound, or more
+  // than the pool has room for.
+  enum class Gathered { all, tangle, out_of_room };
+  template <class Cull>
+  Gathered run_pieces(int threads, std::size_t bound, const Cull& cull);
+  // These two return false when the pool has no room left.
+  bool add_pairs(int ta, int tb, PairPool::List& out);
+  bool keep_if_close(Pair p, PairPool::List& out);
   void feature_boxes(int threads);
   bool needs_push(const Pair& p, const Vec3Array<T>& x) const;
   bool push_apart(const Model<T>& m, State<T>& s, const Pair& p);
@@ -144,9 +156,10 @@ class TriangleContact {
   PairMargins margins_;                   // the proximity pass's, at its last full pass
   std::vector<FloatBox> triangle_box_, edge_box_;  // around their vertices at xc
   std::vector<TriangleBvh::Task> tasks_;           // the broad phase's pieces for threads
-  std::vector<std::vector<Pair>> task_pairs_;      // per piece: the pairs it found
-  std::vector<std::uint8_t> task_done_;            // per piece: it ran to the end
+  PairPool pool_;                                  // the pairs the pieces found
+  std::vector<PairPool::List> task_lists_;         // per piece: its pairs in the pool
   bool stale_ = true;                              // a vertex left its box between substeps
+  int span_ = 1;                                   // substeps in the pass under way
   bool tangled_ = false;                           // the last collection, at xc, was a tangle
   int kept_choices_ = 0;  // collections since the flat patches were last chosen
   std::vector<Pair> pairs_;
