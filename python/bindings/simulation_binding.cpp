@@ -324,7 +324,7 @@ void bind_simulation(py::module_& m) {
             d["flat_triangles"] = c->flat_triangles;
             return d;
           },
-          "Triangle contact's last substep (None with solver.cloth_contact off): candidate pairs, "
+          "Triangle contact's last pass (None with solver.cloth_contact off): candidate pairs, "
           "pairs pushed apart, vertices the fail-safe returned, whether the pairs were collected, "
           "flat patches and their triangles.")
       .def("push", &Simulation::push, py::arg("impulse"), py::arg("center") = py::none(),
