@@ -143,17 +143,17 @@ template <class T>
 bool FlatPatches<T>::still_flat(const SurfaceFeatures& f, const Vec3Array<T>& x0,
                                 const Vec3Array<T>& x1, int threads) {
   if (patches_.empty()) return true;
-  for_each_block_indexed(
-      work_.size(), threads_for(work_.size(), threads, kParallelMinContactVertices),
-      [&](std::size_t b, std::size_t lo, std::size_t hi) {
-        std::uint8_t ok = 1;
-        for (std::size_t k = lo; k < hi && ok; ++k) {
-          const auto t = std::size_t(work_[k].triangle);
-          ok = clears(f.triangles[t], patches_[std::size_t(work_[k].patch)].axis_t,
-                      T(kKeepBound) * rest_area2_[t], x0, x1);
-        }
-        block_ok_[b] = ok;
-      });
+  for_each_block_indexed(work_.size(), contact_threads(work_.size(), threads),
+                         [&](std::size_t b, std::size_t lo, std::size_t hi) {
+                           std::uint8_t ok = 1;
+                           for (std::size_t k = lo; k < hi && ok; ++k) {
+                             const auto t = std::size_t(work_[k].triangle);
+                             ok = clears(f.triangles[t],
+                                         patches_[std::size_t(work_[k].patch)].axis_t,
+                                         T(kKeepBound) * rest_area2_[t], x0, x1);
+                           }
+                           block_ok_[b] = ok;
+                         });
   if (!std::all_of(block_ok_.begin(), block_ok_.begin() + long(block_count(work_.size())),
                    [](std::uint8_t ok) { return ok != 0; }))
     return false;

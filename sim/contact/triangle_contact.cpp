@@ -72,14 +72,6 @@ constexpr std::size_t kBlockSums = 15;
 
 using V3 = Eigen::Vector3d;
 
-// The threads for a pass over n vertices, triangles or pairs: a second thread pays from far
-// fewer items with triangle contact than for the solver's cheap vertex loops (sim/core/
-// parallel.hpp), and a pass run on one thread between parallel ones lets the other fall asleep:
-// waking it again costs tens of microseconds, several times a substep.
-int team(std::size_t n, int threads) {
-  return threads_for(n, threads, kParallelMinContactVertices);
-}
-
 template <class T>
 std::array<V3, 4> gather(const Vec3Array<T>& a, const std::array<std::int32_t, 4>& v) {
   return {load3(a, std::size_t(v[0])), load3(a, std::size_t(v[1])), load3(a, std::size_t(v[2])),
@@ -205,27 +197,31 @@ TriangleContact<T>::TriangleContact(const Model<T>& m, const SolverSpec& spec,
 template <class T>
 int TriangleContact<T>::pass_span(const State<T>& s, double h, int most, int threads) {
   const std::size_t n = s.vel.size(), blocks = block_count(n);
-  if (most <= 1 || n == 0) return span_ = 1;
-  for_each_block_indexed(n, team(n, threads), [&](std::size_t b, std::size_t lo, std::size_t hi) {
-    V3 sum = V3::Zero();
-    for (std::size_t i = lo; i < hi; ++i) sum += load3(s.vel, i);
-    for (long a = 0; a < 3; ++a) block_sums_[3 * b + std::size_t(a)] = sum[a];
-  });
+  // The time allows at most `cap` substeps; with one, no need to look at the velocities.
+  const double cap = std::min(double(most), std::floor(kMaxPassTime / h * (1.0 + 1e-9)));
+  if (cap <= 1.0 || n == 0) return span_ = 1;
+  for_each_block_indexed(n, contact_threads(n, threads),
+                         [&](std::size_t b, std::size_t lo, std::size_t hi) {
+                           V3 sum = V3::Zero();
+                           for (std::size_t i = lo; i < hi; ++i) sum += load3(s.vel, i);
+                           for (long a = 0; a < 3; ++a)
+                             block_sums_[3 * b + std::size_t(a)] = sum[a];
+                         });
   V3 mean = V3::Zero();
   for (std::size_t b = 0; b < blocks; ++b)
     mean += V3(block_sums_[3 * b], block_sums_[3 * b + 1], block_sums_[3 * b + 2]);
   mean /= double(n);
-  for_each_block_indexed(n, team(n, threads), [&](std::size_t b, std::size_t lo, std::size_t hi) {
-    double fastest = 0.0;
-    for (std::size_t i = lo; i < hi; ++i)
-      fastest = std::max(fastest, (load3(s.vel, i) - mean).squaredNorm());
-    block_sums_[b] = fastest;
-  });
+  for_each_block_indexed(n, contact_threads(n, threads),
+                         [&](std::size_t b, std::size_t lo, std::size_t hi) {
+                           double fastest = 0.0;
+                           for (std::size_t i = lo; i < hi; ++i)
+                             fastest = std::max(fastest, (load3(s.vel, i) - mean).squaredNorm());
+                           block_sums_[b] = fastest;
+                         });
   const double fastest =
       std::sqrt(*std::max_element(block_sums_.begin(), block_sums_.begin() + long(blocks)));
   const double by_speed = kPassReach * thickness_ / std::max(fastest * h, 1e-300);
-  const double by_time = kMaxPassTime / h * (1.0 + 1e-9);
-  span_ = int(std::clamp(std::floor(std::min(by_speed, by_time)), 1.0, double(most)));
+  span_ = int(std::clamp(std::floor(by_speed), 1.0, cap));
   return span_;
 }
 
@@ -249,19 +245,20 @@ void TriangleContact<T>::begin(const State<T>& s, int threads) {
 template <class T>
 RigidFit TriangleContact<T>::fit_rigid(const Vec3Array<T>& x, int threads) {
   const std::size_t n = xc_.size(), blocks = block_count(n);
-  for_each_block_indexed(n, team(n, threads), [&](std::size_t b, std::size_t lo, std::size_t hi) {
-    V3 sum_c = V3::Zero(), sum_x = V3::Zero();
-    Eigen::Matrix3d cross = Eigen::Matrix3d::Zero();
-    for (std::size_t i = lo; i < hi; ++i) {
-      const V3 c = load3(xc_, i), p = load3(x, i);
-      sum_c += c;
-      sum_x += p;
-      cross.noalias() += c * p.transpose();
-    }
-    double* out = &block_sums_[kBlockSums * b];
-    for (long a = 0; a < 3; ++a) out[a] = sum_c[a], out[3 + a] = sum_x[a];
-    for (long a = 0; a < 9; ++a) out[6 + a] = cross.data()[a];
-  });
+  for_each_block_indexed(n, contact_threads(n, threads),
+                         [&](std::size_t b, std::size_t lo, std::size_t hi) {
+                           V3 sum_c = V3::Zero(), sum_x = V3::Zero();
+                           Eigen::Matrix3d cross = Eigen::Matrix3d::Zero();
+                           for (std::size_t i = lo; i < hi; ++i) {
+                             const V3 c = load3(xc_, i), p = load3(x, i);
+                             sum_c += c;
+                             sum_x += p;
+                             cross.noalias() += c * p.transpose();
+                           }
+                           double* out = &block_sums_[kBlockSums * b];
+                           for (long a = 0; a < 3; ++a) out[a] = sum_c[a], out[3 + a] = sum_x[a];
+                           for (long a = 0; a < 9; ++a) out[6 + a] = cross.data()[a];
+                         });
   RigidFit fit;
   Eigen::Matrix3d cross = Eigen::Matrix3d::Zero();
   for (std::size_t b = 0; b < blocks; ++b) {
@@ -286,18 +283,21 @@ StraySummary TriangleContact<T>::deviations(const Vec3Array<T>& x, const RigidFi
                                             int threads) {
   const std::size_t n = xc_.size(), blocks = block_count(n);
   const double slack = (1.0 - strays_.shrink) * 0.5 * thickness_;
-  for_each_block_indexed(n, team(n, threads), [&](std::size_t b, std::size_t lo, std::size_t hi) {
-    double most = 0.0, excess = -INFINITY;
-    for (std::size_t i = lo; i < hi; ++i) {
-      const double d = (load3(x, i) - fit.to - fit.rotation * (load3(xc_, i) - fit.from)).norm();
-      dev[i] = float(d * (1.0 + 1e-6) + 1e-12);  // rounded up
-      most = std::max(most, d);
-      const float moved = also ? std::max(dev[i], (*also)[i]) : dev[i];
-      excess = std::max(excess, double(moved) + slack - strays_.shrink * double(strays_.allow[i]));
-    }
-    block_sums_[2 * b] = most;
-    block_sums_[2 * b + 1] = excess;
-  });
+  for_each_block_indexed(
+      n, contact_threads(n, threads), [&](std::size_t b, std::size_t lo, std::size_t hi) {
+        double most = 0.0, excess = -INFINITY;
+        for (std::size_t i = lo; i < hi; ++i) {
+          const double d =
+              (load3(x, i) - fit.to - fit.rotation * (load3(xc_, i) - fit.from)).norm();
+          dev[i] = float(d * (1.0 + 1e-6) + 1e-12);  // rounded up
+          most = std::max(most, d);
+          const float moved = also ? std::max(dev[i], (*also)[i]) : dev[i];
+          excess =
+              std::max(excess, double(moved) + slack - strays_.shrink * double(strays_.allow[i]));
+        }
+        block_sums_[2 * b] = most;
+        block_sums_[2 * b + 1] = excess;
+      });
   Stray out{0.0, -INFINITY};
   for (std::size_t b = 0; b < blocks; ++b) {
     out.most = std::max(out.most, block_sums_[2 * b]);
@@ -315,7 +315,7 @@ template <class T>
 void TriangleContact<T>::set_allowances(double growth, int threads) {
   const double base = kSkin * thickness_, extra = kSkinExtra * thickness_;
   const double slack = (1.0 - strays_.shrink) * 0.5 * thickness_;
-  for_each_block(strays_.allow.size(), team(strays_.allow.size(), threads),
+  for_each_block(strays_.allow.size(), contact_threads(strays_.allow.size(), threads),
                  [&](std::size_t begin, std::size_t end) {
                    for (std::size_t i = begin; i < end; ++i) {
                      const double d = double(strays_.dev0[i]);
@@ -348,12 +348,12 @@ void TriangleContact<T>::feature_boxes(int threads) {
     }
     return b;
   };
-  for_each_block(triangle_box_.size(), team(triangle_box_.size(), threads),
+  for_each_block(triangle_box_.size(), contact_threads(triangle_box_.size(), threads),
                  [&](std::size_t begin, std::size_t end) {
                    for (std::size_t t = begin; t < end; ++t)
                      triangle_box_[t] = box_of(features_.triangles[t]);
                  });
-  for_each_block(edge_box_.size(), team(edge_box_.size(), threads),
+  for_each_block(edge_box_.size(), contact_threads(edge_box_.size(), threads),
                  [&](std::size_t begin, std::size_t end) {
                    for (std::size_t e = begin; e < end; ++e)
                      edge_box_[e] = box_of(features_.edges[e]);
@@ -658,9 +658,10 @@ bool TriangleContact<T>::meets(const Pair& p, const Vec3Array<T>& x) const {
 template <class T>
 template <class Test>
 void TriangleContact<T>::flag_pairs(int threads, Test&& test) {
-  for_each_block(pairs_.size(), team(pairs_.size(), threads), [&](std::size_t b, std::size_t e) {
-    for (std::size_t k = b; k < e; ++k) flag_[k] = test(k, pairs_[k]);
-  });
+  for_each_block(pairs_.size(), contact_threads(pairs_.size(), threads),
+                 [&](std::size_t b, std::size_t e) {
+                   for (std::size_t k = b; k < e; ++k) flag_[k] = test(k, pairs_[k]);
+                 });
 }
 
 // Vertex i back where the substep started, at rest.
@@ -753,12 +754,14 @@ void TriangleContact<T>::flag_proximity(const State<T>& s, int threads) {
 template <class T>
 double TriangleContact<T>::growth_since_margins(int threads) {
   const std::size_t n = margins_.moved.size(), blocks = block_count(n);
-  for_each_block_indexed(n, team(n, threads), [&](std::size_t b, std::size_t lo, std::size_t hi) {
-    double most = 0.0;  // in double: the exact difference
-    for (std::size_t v = lo; v < hi; ++v)
-      most = std::max(most, double(strays_.moved_by(std::int32_t(v))) - double(margins_.moved[v]));
-    block_sums_[b] = most;
-  });
+  for_each_block_indexed(
+      n, contact_threads(n, threads), [&](std::size_t b, std::size_t lo, std::size_t hi) {
+        double most = 0.0;  // in double: the exact difference
+        for (std::size_t v = lo; v < hi; ++v)
+          most =
+              std::max(most, double(strays_.moved_by(std::int32_t(v))) - double(margins_.moved[v]));
+        block_sums_[b] = most;
+      });
   return *std::max_element(block_sums_.begin(), block_sums_.begin() + long(blocks));
 }
 

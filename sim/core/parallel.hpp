@@ -28,6 +28,14 @@ inline int threads_for(std::size_t n, int threads, std::size_t min_items = kPara
   return n >= min_items ? threads : 1;
 }
 
+// The threads for triangle contact's loops over vertices, triangles, pairs or patches
+// (sim/contact/): a second thread pays from far fewer items there, and a loop run on one thread
+// between parallel ones lets the other fall asleep (waking it costs tens of microseconds, several
+// times a substep).
+inline int contact_threads(std::size_t n, int threads) {
+  return threads_for(n, threads, kParallelMinContactVertices);
+}
+
 inline std::size_t block_count(std::size_t n) {
   return (n + kBlockSize - 1) / kBlockSize;
 }
