@@ -18,6 +18,9 @@ namespace {
 // docs/contact.md). A pass of several substeps sweeps as many times: with one sweep, passes of up
 // to four substeps left the landed pile's layers 0.79 of the thickness apart, with four 0.93.
 constexpr int kProximityIterations = 1;
+// Pairs to push from which the two halves push on two threads (push_sweeps): a try costs about
+// 0.1 us, a thread's wake-up tens.
+constexpr std::size_t kParallelMinPushes = 512;
 constexpr double kFriction = 0.3;  // cloth on cloth (cotton on cotton 0.3 to 0.5)
 // Candidate pairs reserved per triangle when built: the pair list grows past it only in a
 // tangle denser than that, once.
@@ -190,8 +193,10 @@ TriangleContact<T>::TriangleContact(const Model<T>& m, const SolverSpec& spec,
   strays_.dev0.assign(m.n, 0.0f);
   seam_patch_.assign(bvh_.node_count(), -1);
   strays_.dev1.assign(m.n, 0.0f);
-  moved_.assign(m.n, 0);
-  moved_list_.reserve(m.n);
+  push_.pushed_at.assign(m.n, 0);
+  for (auto& list : push_.moved) list.reserve(m.n);
+  push_.hits.reserve(pairs_.capacity());
+  push_.cut_values.reserve(m.n);
 }
 
 template <class T>
@@ -450,6 +455,11 @@ bool TriangleContact<T>::gather_pairs(int threads) {
   }
   for (const PairPool::List& list : task_lists_) pool_.append_to(list, pairs_);
   flag_.resize(pairs_.size());
+  push_.hits.reserve(pairs_.capacity());
+  push_.cut_axis = widest_axis(xc_);
+  const auto& along = xc_.axis(push_.cut_axis);
+  push_.cut_values.assign(along.begin(), along.end());
+  push_.cut = median_of(push_.cut_values);
   margins_.slack.resize(pairs_.size());
   margins_.max_dist = 0.0;
   for (const Pair& p : pairs_) margins_.max_dist = std::max(margins_.max_dist, double(p.dist));
@@ -586,7 +596,8 @@ bool TriangleContact<T>::needs_push(const Pair& p, const Vec3Array<T>& x) const 
 // between the closest points now, or at x0 when the pair has passed through since (the two
 // disagree), so a pair that crossed in the substep is pushed back to the side it came from.
 template <class T>
-bool TriangleContact<T>::push_apart(const Model<T>& m, State<T>& s, const Pair& p) {
+bool TriangleContact<T>::push_apart(const Model<T>& m, State<T>& s, const Pair& p,
+                                    std::uint64_t stamp, std::vector<std::int32_t>& moved) {
   const std::array<V3, 4> x = gather(s.pos, p.v);
   // Farther apart than the thickness along some axis: nothing to do (most candidates). A pair
   // that passed through each other by more than that is the fail-safe's.
@@ -624,16 +635,72 @@ bool TriangleContact<T>::push_apart(const Model<T>& m, State<T>& s, const Pair& 
   const V3 correction = (depth * n + stop) / W;
   for (std::size_t k = 0; k < 4; ++k) {
     const auto i = std::size_t(p.v[k]);
-    if (!moved_[i]) {  // where the integrator left it, for the velocity
-      moved_[i] = 1;
-      moved_list_.push_back(p.v[k]);
+    if (push_.pushed_at[i] == 0) {  // where the integrator left it, for the velocity
+      moved.push_back(p.v[k]);
       x_step_.x[i] = s.pos.x[i];
       x_step_.y[i] = s.pos.y[i];
       x_step_.z[i] = s.pos.z[i];
     }
+    push_.pushed_at[i] = stamp;
     store3(s.pos, i, V3(x[k] + w[k] * inv[k] * correction));
   }
   return true;
+}
+
+// kProximityIterations sweeps per substep of the pass over the pairs flagged hit, Gauss-Seidel
+// in pair order within each half of the vertices (sim/contact/push_halves.hpp): the two halves at
+// once on two threads, then the pairs across the cut, each sweep. A pair is tried again only
+// once a push since its last try moved one of its vertices: push_apart reads nothing else that
+// changes within the pass, so the try skipped would have found nothing to do.
+template <class T>
+int TriangleContact<T>::push_sweeps(const Model<T>& m, State<T>& s, int threads) {
+  const auto& coordinate = xc_.axis(push_.cut_axis);
+  const T cut = push_.cut;
+  std::array<std::size_t, 3> count{};
+  for (std::size_t k = 0; k < pairs_.size(); ++k)
+    if (flag_[k] == PairFlag::hit) ++count[std::size_t(pair_half(pairs_[k].v, coordinate, cut))];
+  push_.hits.resize(count[0] + count[1] + count[2]);
+  push_.begin = {0, count[0], count[0] + count[1], push_.hits.size()};
+  std::array<std::size_t, 3> next{push_.begin[0], push_.begin[1], push_.begin[2]};
+  for (std::size_t k = 0; k < pairs_.size(); ++k)
+    if (flag_[k] == PairFlag::hit)
+      push_.hits[next[std::size_t(pair_half(pairs_[k].v, coordinate, cut))]++] = {std::uint32_t(k),
+                                                                                  0};
+  const int sweeps = kProximityIterations * span_;
+  std::array<int, 3> pushes{};
+  run_team(threads_for(push_.hits.size(), threads, kParallelMinPushes) > 1 ? 2 : 1, [&] {
+    for (int it = 0; it < sweeps; ++it) {
+#pragma omp for schedule(static)
+      for (int half = 0; half < 2; ++half) pushes[std::size_t(half)] += push_sweep(m, s, it, half);
+#pragma omp single
+      pushes[2] += push_sweep(m, s, it, 2);
+    }
+  });
+  return pushes[0] + pushes[1] + pushes[2];
+}
+
+// Stamps grow along the serial order: sweep after sweep, in each the first half, the second and
+// the pairs across the cut, each taking room for one push per hit.
+template <class T>
+int TriangleContact<T>::push_sweep(const Model<T>& m, State<T>& s, int sweep, int half) {
+  const std::uint64_t room = push_.hits.size() + 1;
+  std::uint64_t last = (std::uint64_t(sweep) * 3 + std::uint64_t(half)) * room;
+  int pushes = 0;
+  for (std::size_t h = push_.begin[std::size_t(half)]; h < push_.begin[std::size_t(half) + 1];
+       ++h) {
+    auto& hit = push_.hits[h];
+    const Pair& p = pairs_[hit.pair];
+    if (sweep > 0 && std::none_of(p.v.begin(), p.v.end(), [&](std::int32_t v) {
+          return push_.pushed_at[std::size_t(v)] > hit.tried;
+        }))
+      continue;
+    hit.tried = last;
+    if (push_apart(m, s, p, last + 1, push_.moved[std::size_t(half)])) {
+      ++last;
+      ++pushes;
+    }
+  }
+  return pushes;
 }
 
 template <class T>
@@ -794,14 +861,16 @@ template <class T>
 double TriangleContact<T>::update_velocities(State<T>& s, double h) {
   const double inv_h = 1.0 / h;
   double most = 0.0;
-  for (std::int32_t v : moved_list_) {
-    const auto i = std::size_t(v);
-    const V3 change = load3(s.pos, i) - load3(x_step_, i);
-    most = std::max(most, change.norm());
-    store3(s.vel, i, V3(load3(s.vel, i) + inv_h * change));
-    moved_[i] = 0;
+  for (std::vector<std::int32_t>& moved : push_.moved) {
+    for (std::int32_t v : moved) {
+      const auto i = std::size_t(v);
+      const V3 change = load3(s.pos, i) - load3(x_step_, i);
+      most = std::max(most, change.norm());
+      store3(s.vel, i, V3(load3(s.vel, i) + inv_h * change));
+      push_.pushed_at[i] = 0;
+    }
+    moved.clear();
   }
-  moved_list_.clear();
   return most;
 }
 
@@ -866,11 +935,8 @@ bool TriangleContact<T>::respond(const Model<T>& m, State<T>& s, double h, int t
   // Which pairs need a push, in parallel; then sweeps of pushes over those, serially in pair
   // order, kProximityIterations per substep of the pass (a pair that a neighbour's push brings
   // within the thickness waits for the next pass; the fail-safe holds meanwhile).
-  int contacts = 0;
   flag_proximity(s, threads);
-  for (int it = 0; it < kProximityIterations * span_; ++it)
-    for (std::size_t k = 0; k < pairs_.size(); ++k)
-      if (flag_[k] == PairFlag::hit && push_apart(m, s, pairs_[k])) ++contacts;
+  const int contacts = push_sweeps(m, s, threads);
   stats_.contacts = contacts;
   const double pushed = update_velocities(s, h);
   // The fail-safe needs every pair whose swept boxes meet: new ones if a push left a box, or if

@@ -44,6 +44,7 @@
 #include "sim/contact/contact_stats.hpp"
 #include "sim/contact/flat_patches.hpp"
 #include "sim/contact/pair_pool.hpp"
+#include "sim/contact/push_halves.hpp"
 #include "sim/contact/stray_bounds.hpp"
 #include "sim/contact/surface_features.hpp"
 #include "sim/contact/triangle_bvh.hpp"
@@ -52,18 +53,25 @@
 
 namespace clothlab {
 
+// What triangle contact's constructor reads from the rest shape once: each vertex's and
+// triangle's cloth and the triangles' centroids.
+struct ContactRestLayout {
+  std::vector<std::int32_t> vertex_cloth;
+  std::vector<int> triangle_cloth;
+  std::vector<Eigen::Vector3d> centroids;
+};
+
+// A box in float, around a feature's vertices at the collection positions.
+struct ContactFloatBox {
+  std::array<float, 3> lo{}, hi{};
+};
+
 template <class T>
 class TriangleContact {
  public:
   TriangleContact(const Model<T>& m, const SolverSpec& spec);
 
-  // What the constructor reads from the rest shape once: each vertex's and triangle's cloth and
-  // the triangles' centroids.
-  struct RestLayout {
-    std::vector<std::int32_t> vertex_cloth;
-    std::vector<int> triangle_cloth;
-    std::vector<Eigen::Vector3d> centroids;
-  };
+  using RestLayout = ContactRestLayout;
   TriangleContact(const Model<T>& m, const SolverSpec& spec, const RestLayout& rest);
 
   // How many of the next substeps (each of length h, at most `most`) one pass spans: as many as
@@ -84,9 +92,7 @@ class TriangleContact {
   const std::vector<Pair>& pairs() const { return pairs_; }
 
  private:
-  struct FloatBox {
-    std::array<float, 3> lo{}, hi{};
-  };
+  using FloatBox = ContactFloatBox;
   // Returns false when the tangle was beyond the bound.
   bool collect_pairs(const State<T>& s, int threads);
   // The pairs again when a vertex strayed past its skin or a flat patch bent (with `flag` set in
@@ -124,7 +130,14 @@ class TriangleContact {
   bool keep_if_close(Pair p, PairPool::List& out);
   void feature_boxes(int threads);
   bool needs_push(const Pair& p, const Vec3Array<T>& x) const;
-  bool push_apart(const Model<T>& m, State<T>& s, const Pair& p);
+  // Pushes the pair apart if it needs it, stamping its vertices with `stamp` and listing those
+  // pushed for the first time in this pass in `moved`; whether it did.
+  bool push_apart(const Model<T>& m, State<T>& s, const Pair& p, std::uint64_t stamp,
+                  std::vector<std::int32_t>& moved);
+  // The sweeps of pushes over the pairs flagged hit; returns the pushes.
+  int push_sweeps(const Model<T>& m, State<T>& s, int threads);
+  // One sweep over the hits of one half (or across the cut); returns its pushes.
+  int push_sweep(const Model<T>& m, State<T>& s, int sweep, int half);
   bool meets(const Pair& p, const Vec3Array<T>& x) const;
   template <class Test>
   void flag_pairs(int threads, Test&& test);
@@ -167,8 +180,7 @@ class TriangleContact {
   // Per block of vertices: kBlockSums partial sums for the rigid fit, or the largest stray and
   // excess (triangle_contact.cpp).
   std::vector<double> block_sums_;
-  std::vector<std::uint8_t> moved_;       // per vertex: a push moved it this substep
-  std::vector<std::int32_t> moved_list_;  // those vertices; x_step_ holds where they were
+  PushSweeps<T> push_;               // the pushes' bookkeeping within a pass
   std::vector<int> returned_round_;  // per vertex: the fail-safe round that returned it (0: none)
   std::vector<int> returned_;        // the vertices returned this substep
   ClothContactStats stats_;
