@@ -1,11 +1,13 @@
 // The two halves that triangle contact's pushes run on, one thread each
-// (sim/contact/triangle_contact.cpp, push_sweeps). Each pass cuts the vertices by a plane across
-// the axis along which the cloth spread widest at the last collection, at the median of the
-// pairs to push (their first vertex), so that each half holds about as many: a pair whose four
-// vertices lie on one side shares no vertex with a pair of the other, and the two sides'
-// Gauss-Seidel sweeps can run at once and give what running one after the other gives. The
-// pairs across the cut run after both. Positions decide the halves, not vertex numbers, so a
-// renumbered cloth gets the same pushes; the thread count decides nothing.
+// (sim/contact/triangle_contact.cpp, push_sweeps). Each collection of pairs cuts the vertices by
+// a plane across the axis along which they spread widest, at the median of their positions: a
+// pair whose four vertices lie on one side shares no vertex with a pair of the other, and the two
+// sides' Gauss-Seidel sweeps can run at once and give what running one after the other gives. The
+// pairs across the cut run after both. The cut stays until the next collection: placed afresh
+// each pass (at the median of the pairs to push, to balance the threads), it reordered the sweeps
+// every pass and left the landed pile's layers closer (docs/contact.md section 7). Positions
+// decide the halves, not vertex numbers, so a renumbered cloth gets the same pushes; the thread
+// count decides nothing.
 #pragma once
 
 #include <algorithm>
