@@ -37,8 +37,7 @@ struct PushSweeps {
   };
   std::vector<Hit> hits;               // by half, each in pair order
   std::array<std::size_t, 4> begin{};  // where each half's hits begin (and where they end)
-  int cut_axis = 0;                    // the widest axis at the last collection
-  T cut = T(0);                        // the median of the positions along it then
+  std::vector<std::uint8_t> half;      // per pair of the list: its half (2: across the cut)
   std::vector<T> cut_values;           // scratch for the median
 };
 

@@ -196,6 +196,7 @@ TriangleContact<T>::TriangleContact(const Model<T>& m, const SolverSpec& spec,
   push_.pushed_at.assign(m.n, 0);
   for (auto& list : push_.moved) list.reserve(m.n);
   push_.hits.reserve(pairs_.capacity());
+  push_.half.reserve(pairs_.capacity());
   push_.cut_values.reserve(m.n);
 }
 
@@ -456,10 +457,13 @@ bool TriangleContact<T>::gather_pairs(int threads) {
   for (const PairPool::List& list : task_lists_) pool_.append_to(list, pairs_);
   flag_.resize(pairs_.size());
   push_.hits.reserve(pairs_.capacity());
-  push_.cut_axis = widest_axis(xc_);
-  const auto& along = xc_.axis(push_.cut_axis);
+  // The pushes' halves hold until the next collection: each pair's, once.
+  const auto& along = xc_.axis(widest_axis(xc_));
   push_.cut_values.assign(along.begin(), along.end());
-  push_.cut = median_of(push_.cut_values);
+  const T cut = median_of(push_.cut_values);
+  push_.half.resize(pairs_.size());
+  for (std::size_t k = 0; k < pairs_.size(); ++k)
+    push_.half[k] = std::uint8_t(pair_half(pairs_[k].v, along, cut));
   margins_.slack.resize(pairs_.size());
   margins_.max_dist = 0.0;
   for (const Pair& p : pairs_) margins_.max_dist = std::max(margins_.max_dist, double(p.dist));
@@ -654,18 +658,14 @@ bool TriangleContact<T>::push_apart(const Model<T>& m, State<T>& s, const Pair& 
 // changes within the pass, so the try skipped would have found nothing to do.
 template <class T>
 int TriangleContact<T>::push_sweeps(const Model<T>& m, State<T>& s, int threads) {
-  const auto& coordinate = xc_.axis(push_.cut_axis);
-  const T cut = push_.cut;
   std::array<std::size_t, 3> count{};
   for (std::size_t k = 0; k < pairs_.size(); ++k)
-    if (flag_[k] == PairFlag::hit) ++count[std::size_t(pair_half(pairs_[k].v, coordinate, cut))];
+    if (flag_[k] == PairFlag::hit) ++count[push_.half[k]];
   push_.hits.resize(count[0] + count[1] + count[2]);
   push_.begin = {0, count[0], count[0] + count[1], push_.hits.size()};
   std::array<std::size_t, 3> next{push_.begin[0], push_.begin[1], push_.begin[2]};
   for (std::size_t k = 0; k < pairs_.size(); ++k)
-    if (flag_[k] == PairFlag::hit)
-      push_.hits[next[std::size_t(pair_half(pairs_[k].v, coordinate, cut))]++] = {std::uint32_t(k),
-                                                                                  0};
+    if (flag_[k] == PairFlag::hit) push_.hits[next[push_.half[k]]++] = {std::uint32_t(k), 0};
   const int sweeps = kProximityIterations * span_;
   std::array<int, 3> pushes{};
   run_team(threads_for(push_.hits.size(), threads, kParallelMinPushes) > 1 ? 2 : 1, [&] {
