@@ -205,7 +205,8 @@ AdvanceResult SolverT<T>::step(long count) {
       if (cloth_contact_ && sub + 1 == pass_end) {
         sync_state();
         const double span = (pass_end - pass_begin) * h;
-        if (cloth_contact_->respond(model_, state_, span, threads_)) corrected = true;
+        const ColliderTouches* touches = contacts_ ? &contacts_->touches() : nullptr;
+        if (cloth_contact_->respond(model_, state_, span, threads_, touches)) corrected = true;
         tangles_.count(cloth_contact_->last().overflow, t);
       }
       if (corrected) state_corrected();

@@ -355,9 +355,32 @@ TEST(ClothContact, PileCrossesItselfWithoutIt) {
   EXPECT_GT(worst_frame(*s, 5.0), 100);
 }
 
+// The lower sheet's fastest vertex over the top of the ball (within 10 cm of it in plan), where
+// it rests on the ball under the upper one, at the end of a frame.
+double fastest_on_top(const Solver& s) {
+  double most = 0.0;
+  for (int i = 0; i < 1681; ++i) {
+    const Vec3d p = s.position(i), v = s.velocity(i);
+    if (p[0] * p[0] + p[2] * p[2] < 0.01)
+      most = std::max(most, std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+  }
+  return most;
+}
+
+// No crossing in any frame over 2 s, and, once the sheets rest on the ball (1.5-2 s), the lower
+// sheet over the top of the ball at rest at every frame's end: under 0.1 m/s, where pushes of the
+// upper sheet that drove it into the ball (the collider putting it back a substep later) left it
+// at up to 0.9 m/s (0.013 m/s with the pushes held against the colliders).
 TEST(ClothContact, StackOnBallHasNoCrossingInAnyFrame) {
   std::unique_ptr<Solver> s = make_solver(shipped("stack_on_ball.toml"));
-  EXPECT_EQ(worst_frame(*s, 2.0), 0);
+  EXPECT_EQ(worst_frame(*s, 1.5), 0);
+  double fastest = 0.0;
+  for (int frame = 0; frame < 30; ++frame) {
+    ASSERT_TRUE(s->advance(1.0 / 60).ok());
+    EXPECT_EQ(s->intersections(), 0);
+    fastest = std::max(fastest, fastest_on_top(*s));
+  }
+  EXPECT_LT(fastest, 0.1);
   // Over the top of the ball the upper sheet lies on the lower one, at least 0.9 of the 4 mm
   // thickness above it (each sheet's vertex nearest the top in plan; 1.3 cm apart at most in
   // plan, where the ball's surface falls 0.2 mm).

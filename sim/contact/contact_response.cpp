@@ -43,6 +43,7 @@ ContactResponse<T>::ContactResponse(const std::vector<ColliderSpec>& colliders, 
   sweeps_.resize(colliders_.size());
   if (colliders_.empty()) return;
   start_.resize(m.n);
+  touches_.resize(m.n);
   blocks_.resize(block_count(m.n));
   // Edge midpoints join in when some collider is thinner than the cloth's longest grid edge at
   // rest: a rod or a thin box edge could otherwise pass between two rows of vertices.
@@ -159,7 +160,8 @@ void ContactResponse<T>::begin(const State<T>& s, double t, double h, int thread
 }
 
 template <class T>
-bool ContactResponse<T>::point(const V3& x0, V3& x1, V3& v, double h, double& depth) const {
+bool ContactResponse<T>::point(const V3& x0, V3& x1, V3& v, double h, double& depth,
+                               V3& normal) const {
   bool changed = false;
   for (std::size_t c = 0; c < colliders_.size(); ++c) {
     const Collider& collider = colliders_[c];
@@ -185,6 +187,7 @@ bool ContactResponse<T>::point(const V3& x0, V3& x1, V3& v, double h, double& de
       if (touch.phi >= th || touch.normal.dot(d0.normal) < 0.0) touch = d0;
     }
     const V3 n = sweep.end.rotation * touch.normal;
+    normal = n;
     const V3 vc = sweep.end.surface_velocity(x1);
     V3 rel = v - vc;
     const double vn = rel.dot(n);
@@ -210,6 +213,7 @@ bool ContactResponse<T>::point(const V3& x0, V3& x1, V3& v, double h, double& de
       // Past the middle of a thin shape the nearest face is the far one: keep the contact's side.
       const V3 out = now.normal.dot(touch.normal) >= 0.0 ? V3(sweep.end.rotation * now.normal) : n;
       x1 += (th - now.phi) * out;
+      normal = out;
       now = collider.local_distance(sweep.end.to_local(x1));
     }
     depth = std::max(depth, th - now.phi);
@@ -220,10 +224,11 @@ bool ContactResponse<T>::point(const V3& x0, V3& x1, V3& v, double h, double& de
 
 template <class T>
 bool ContactResponse<T>::vertex(std::size_t i, const Model<T>& m, State<T>& s, double h,
-                                double& depth) const {
+                                double& depth) {
   if (m.inv_mass[i] == T(0)) return false;  // pinned: held where it is
-  V3 x1 = load3(s.pos, i), v = load3(s.vel, i);
-  if (!point(load3(start_, i), x1, v, h, depth)) return false;
+  V3 x1 = load3(s.pos, i), v = load3(s.vel, i), normal;
+  if (!point(load3(start_, i), x1, v, h, depth, normal)) return false;
+  touches_.hold(i, normal);
   store3(s.pos, i, x1);
   store3(s.vel, i, v);
   return true;
@@ -240,8 +245,8 @@ bool ContactResponse<T>::edge(std::size_t a, std::size_t b, const Model<T>& m, S
   const V3 x0 = 0.5 * (load3(start_, a) + load3(start_, b));
   const V3 xa = load3(s.pos, a), xb = load3(s.pos, b), va = load3(s.vel, a), vb = load3(s.vel, b);
   const V3 mid = 0.5 * (xa + xb), v_mid = 0.5 * (va + vb);
-  V3 x1 = mid, v = v_mid;
-  if (!point(x0, x1, v, h, depth)) return false;
+  V3 x1 = mid, v = v_mid, normal;
+  if (!point(x0, x1, v, h, depth, normal)) return false;
   // With one end pinned the free end moves twice as far, so that the midpoint gets its move.
   const double scale = free_a && free_b ? 1.0 : 2.0;
   const V3 dx = scale * (x1 - mid), dv = scale * (v - v_mid);
@@ -259,6 +264,7 @@ bool ContactResponse<T>::edge(std::size_t a, std::size_t b, const Model<T>& m, S
 template <class T>
 bool ContactResponse<T>::respond(const Model<T>& m, State<T>& s, double t, double h, int threads) {
   stats_ = {};
+  ++touches_.now;              // what an earlier response held is held no longer
   if (!active_) return false;  // begin() found nothing within reach
   for (std::size_t c = 0; c < colliders_.size(); ++c) {
     ColliderSweep& sweep = sweeps_[c];

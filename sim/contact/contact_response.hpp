@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "sim/contact/collider.hpp"
+#include "sim/contact/collider_touches.hpp"
 #include "sim/contact/contact_stats.hpp"
 #include "sim/contact/feature_contacts.hpp"
 #include "sim/integrators/integrator.hpp"
@@ -52,6 +53,8 @@ class ContactResponse {
   // changed some vertex.
   bool respond(const Model<T>& m, State<T>& s, double t, double h, int threads);
   const ContactStats& last() const { return stats_; }
+  // The vertices the last respond() held against a collider, with its normal.
+  const ColliderTouches& touches() const { return touches_; }
 
  private:
   struct BlockResult {
@@ -64,10 +67,11 @@ class ContactResponse {
   };
   // The response of one point moving from x0 to (x1, v) over the substep, against every
   // collider: corrects x1 and v and raises depth to what is left inside a shell. Returns
-  // whether it was a contact.
+  // whether it was a contact, and sets `normal` to the outward normal of the last one.
   bool point(const Eigen::Vector3d& x0, Eigen::Vector3d& x1, Eigen::Vector3d& v, double h,
-             double& depth) const;
-  bool vertex(std::size_t i, const Model<T>& m, State<T>& s, double h, double& depth) const;
+             double& depth, Eigen::Vector3d& normal) const;
+  // A vertex's response; records it in touches_ (each vertex its own entry).
+  bool vertex(std::size_t i, const Model<T>& m, State<T>& s, double h, double& depth);
   bool edge(std::size_t a, std::size_t b, const Model<T>& m, State<T>& s, double h,
             double& depth) const;
   void respond_edges(const Model<T>& m, State<T>& s, double h, int threads);
@@ -91,6 +95,7 @@ class ContactResponse {
   std::vector<EdgeRun> rows_, columns_;
   std::vector<std::array<int, 2>> mesh_edges_;  // mesh cloths' edges (a < b)
   FeatureContacts<T> features_;                 // the colliders' corners and edges
+  ColliderTouches touches_;                     // the vertices held (not the edges' midpoints)
   ContactStats stats_;
 };
 

@@ -636,6 +636,8 @@ bool TriangleContact<T>::push_apart(const Model<T>& m, State<T>& s, const Pair& 
   const V3 slide = (r1 - r0) - (r1 - r0).dot(n) * n;
   const double len = slide.norm();
   const V3 stop = len <= kFriction * depth ? V3(-slide) : V3(-(kFriction * depth / len) * slide);
+  // Not into a collider that holds a vertex (sim/contact/collider_touches.hpp).
+  if (touches_) W = hold_against_colliders(*touches_, p.v, w, depth * n + stop, inv, W);
   const V3 correction = (depth * n + stop) / W;
   for (std::size_t k = 0; k < 4; ++k) {
     const auto i = std::size_t(p.v[k]);
@@ -923,8 +925,10 @@ bool TriangleContact<T>::guarantee(const Model<T>& m, State<T>& s, int threads, 
 }
 
 template <class T>
-bool TriangleContact<T>::respond(const Model<T>& m, State<T>& s, double h, int threads) {
+bool TriangleContact<T>::respond(const Model<T>& m, State<T>& s, double h, int threads,
+                                 const ColliderTouches* touches) {
   stats_ = {};
+  touches_ = touches;
   // The pairs again when a vertex has strayed past its skin since they were collected.
   if (still_tangled(s, threads)) return undo(m, s);
   measure_stray1(s, threads);

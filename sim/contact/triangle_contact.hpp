@@ -41,6 +41,7 @@
 
 #include <Eigen/Core>
 
+#include "sim/contact/collider_touches.hpp"
 #include "sim/contact/contact_stats.hpp"
 #include "sim/contact/flat_patches.hpp"
 #include "sim/contact/pair_pool.hpp"
@@ -80,8 +81,9 @@ class TriangleContact {
   int pass_span(const State<T>& s, double h, int most, int threads);
   // Before a pass: where it starts.
   void begin(const State<T>& s, int threads);
-  // After the pass, of duration h. Returns true when it changed some vertex.
-  bool respond(const Model<T>& m, State<T>& s, double h, int threads);
+  // After the pass (duration h) and the colliders' `touches`. True when it changed some vertex.
+  bool respond(const Model<T>& m, State<T>& s, double h, int threads,
+               const ColliderTouches* touches = nullptr);
 
   const ClothContactStats& last() const { return stats_; }
   double thickness() const { return thickness_; }
@@ -180,7 +182,8 @@ class TriangleContact {
   // Per block of vertices: kBlockSums partial sums for the rigid fit, or the largest stray and
   // excess (triangle_contact.cpp).
   std::vector<double> block_sums_;
-  PushSweeps<T> push_;               // the pushes' bookkeeping within a pass
+  PushSweeps<T> push_;                        // the pushes' bookkeeping within a pass
+  const ColliderTouches* touches_ = nullptr;  // respond()'s: what the colliders hold
   std::vector<int> returned_round_;  // per vertex: the fail-safe round that returned it (0: none)
   std::vector<int> returned_;        // the vertices returned this substep
   ClothContactStats stats_;
