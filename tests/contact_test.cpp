@@ -178,6 +178,62 @@ TEST(ContactResponse, NeverRaisesKineticEnergyAgainstAStaticCollider) {
   }
 }
 
+// What the response records for triangle contact's pushes (sim/contact/collider_touches.hpp):
+// random vertices just outside a sphere moving fast in every direction; a vertex is held exactly
+// when the response changed it, along a unit normal pointing out of the sphere at where it ends;
+// the next response, with every vertex moving away, holds none.
+TEST(ContactResponse, RecordsTheVerticesItHoldsAndTheirNormals) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Scene scene = testing::sheet(20, 1.0, 0.2, 100.0, IntegratorKind::symplectic_euler, 1e-3);
+  scene.solver.precision = Precision::f64;
+  const Model<double> m = build_model<double>(scene);
+  ContactResponse<double> response({sphere({0.0, 0.0, 0.0}, 0.3)}, m);
+  State<double> s;
+  s.pos.resize(m.n);
+  s.vel.resize(m.n);
+  for (std::size_t i = 0; i < m.n; ++i) {  // within 1 cm outside the sphere's 5 mm shell
+    const V3 p = (0.305 + 0.005 * (1.0 + u(rng))) * V3(u(rng), u(rng), u(rng)).normalized();
+    s.pos.set(i, p.x(), p.y(), p.z());
+  }
+  const double h = 1e-3;
+  response.begin(s, 0.0, h, 1);
+  for (std::size_t i = 0; i < m.n; ++i) {
+    const V3 v(3.0 * u(rng), 3.0 * u(rng), 3.0 * u(rng));
+    s.vel.set(i, v.x(), v.y(), v.z());
+    s.pos.set(i, s.pos.x[i] + h * v.x(), s.pos.y[i] + h * v.y(), s.pos.z[i] + h * v.z());
+  }
+  const State<double> before = s;
+  ASSERT_TRUE(response.respond(m, s, 0.0, h, 1));
+  int held = 0;
+  for (std::size_t i = 0; i < m.n; ++i) {
+    const bool changed = s.pos.x[i] != before.pos.x[i] || s.pos.y[i] != before.pos.y[i] ||
+                         s.pos.z[i] != before.pos.z[i] || s.vel.x[i] != before.vel.x[i] ||
+                         s.vel.y[i] != before.vel.y[i] || s.vel.z[i] != before.vel.z[i];
+    ASSERT_EQ(response.touches().held(i), changed) << "vertex " << i;
+    if (!changed) continue;
+    ++held;
+    const V3 n = response.touches().normal_of(i);
+    const V3 out = V3(s.pos.x[i], s.pos.y[i], s.pos.z[i]).normalized();
+    EXPECT_NEAR(n.norm(), 1.0, 1e-6) << "vertex " << i;
+    EXPECT_GT(n.dot(out), 0.9) << "vertex " << i;
+  }
+  EXPECT_GT(held, 10);
+  // Everything 1.5 cm outside the shell, moving away: the next response changes and holds nothing.
+  for (std::size_t i = 0; i < m.n; ++i) {
+    const V3 p = 0.32 * V3(s.pos.x[i], s.pos.y[i], s.pos.z[i]).normalized();
+    s.pos.set(i, p.x(), p.y(), p.z());
+  }
+  response.begin(s, h, h, 1);
+  for (std::size_t i = 0; i < m.n; ++i) {
+    const V3 v = 0.5 * V3(s.pos.x[i], s.pos.y[i], s.pos.z[i]).normalized();
+    s.vel.set(i, v.x(), v.y(), v.z());
+    s.pos.set(i, s.pos.x[i] + h * v.x(), s.pos.y[i] + h * v.y(), s.pos.z[i] + h * v.z());
+  }
+  EXPECT_FALSE(response.respond(m, s, h, h, 1));
+  for (std::size_t i = 0; i < m.n; ++i) EXPECT_FALSE(response.touches().held(i)) << "vertex " << i;
+}
+
 // --- drops onto a sphere ----------------------------------------------------------------------
 
 // A free 1 m sheet, 24 x 24, lying flat 0.2 m above a sphere of radius 0.3 on a floor, its centre
