@@ -234,6 +234,43 @@ TEST(ContactResponse, RecordsTheVerticesItHoldsAndTheirNormals) {
   for (std::size_t i = 0; i < m.n; ++i) EXPECT_FALSE(response.touches().held(i)) << "vertex " << i;
 }
 
+// A rod thinner than the cloth's spacing, between two rows of a 10 x 10 sheet that falls onto it:
+// the edges across the rod hold it at their midpoints, and the ends of each such edge, themselves
+// 5.6 cm from the rod, are held along the rod's normal (up); no other vertex is.
+TEST(ContactResponse, EdgeMidpointsHoldTheirEnds) {
+  Scene scene = testing::sheet(10, 1.0, 0.2, 100.0, IntegratorKind::symplectic_euler, 1e-3);
+  scene.cloths[0].origin = {-0.5, 0.0, -0.5};
+  scene.cloths[0].v_axis = {0.0, 0.0, 1.0};
+  scene.solver.precision = Precision::f64;
+  const Model<double> m = build_model<double>(scene);
+  ColliderSpec rod;
+  rod.kind = ColliderKind::capsule;
+  rod.a = {-0.6, 0.0, 0.0};  // along x, halfway between rows 4 and 5 (z = -/+ 0.056)
+  rod.b = {0.6, 0.0, 0.0};
+  rod.radius = 0.005;
+  rod.thickness = 0.002;
+  ContactResponse<double> response({rod}, m);
+  State<double> s;
+  s.pos = m.rest_positions;
+  s.vel.resize(m.n);
+  for (std::size_t i = 0; i < m.n; ++i) s.pos.y[i] = 0.01;  // 3 mm above the shell
+  const double h = 1e-3;
+  response.begin(s, 0.0, h, 1);
+  for (std::size_t i = 0; i < m.n; ++i) {  // 1 cm down in the substep
+    s.vel.y[i] = -10.0;
+    s.pos.y[i] = 0.0;
+  }
+  ASSERT_TRUE(response.respond(m, s, 0.0, h, 1));
+  for (std::size_t i = 0; i < m.n; ++i) {
+    const std::size_t row = i / 10;
+    const bool across = row == 4 || row == 5;
+    ASSERT_EQ(response.touches().held(i), across) << "vertex " << i;
+    if (across) {
+      EXPECT_GT(response.touches().normal_of(i).y(), 0.99) << "vertex " << i;
+    }
+  }
+}
+
 // --- drops onto a sphere ----------------------------------------------------------------------
 
 // A free 1 m sheet, 24 x 24, lying flat 0.2 m above a sphere of radius 0.3 on a floor, its centre

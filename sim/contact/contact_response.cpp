@@ -239,7 +239,7 @@ bool ContactResponse<T>::vertex(std::size_t i, const Model<T>& m, State<T>& s, d
 // stay).
 template <class T>
 bool ContactResponse<T>::edge(std::size_t a, std::size_t b, const Model<T>& m, State<T>& s,
-                              double h, double& depth) const {
+                              double h, double& depth) {
   const bool free_a = m.inv_mass[a] != T(0), free_b = m.inv_mass[b] != T(0);
   if (!free_a && !free_b) return false;
   const V3 x0 = 0.5 * (load3(start_, a) + load3(start_, b));
@@ -251,10 +251,12 @@ bool ContactResponse<T>::edge(std::size_t a, std::size_t b, const Model<T>& m, S
   const double scale = free_a && free_b ? 1.0 : 2.0;
   const V3 dx = scale * (x1 - mid), dv = scale * (v - v_mid);
   if (free_a) {
+    touches_.hold(a, normal);
     store3(s.pos, a, V3(xa + dx));
     store3(s.vel, a, V3(va + dv));
   }
   if (free_b) {
+    touches_.hold(b, normal);
     store3(s.pos, b, V3(xb + dx));
     store3(s.vel, b, V3(vb + dv));
   }

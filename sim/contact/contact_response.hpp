@@ -70,10 +70,10 @@ class ContactResponse {
   // whether it was a contact, and sets `normal` to the outward normal of the last one.
   bool point(const Eigen::Vector3d& x0, Eigen::Vector3d& x1, Eigen::Vector3d& v, double h,
              double& depth, Eigen::Vector3d& normal) const;
-  // A vertex's response; records it in touches_ (each vertex its own entry).
+  // A vertex's response, and an edge midpoint's (moving both ends); each records the vertices
+  // it moved in touches_ (no two at once share a vertex: respond_edges' rounds).
   bool vertex(std::size_t i, const Model<T>& m, State<T>& s, double h, double& depth);
-  bool edge(std::size_t a, std::size_t b, const Model<T>& m, State<T>& s, double h,
-            double& depth) const;
+  bool edge(std::size_t a, std::size_t b, const Model<T>& m, State<T>& s, double h, double& depth);
   void respond_edges(const Model<T>& m, State<T>& s, double h, int threads);
 
   std::vector<Collider> colliders_;
@@ -95,7 +95,7 @@ class ContactResponse {
   std::vector<EdgeRun> rows_, columns_;
   std::vector<std::array<int, 2>> mesh_edges_;  // mesh cloths' edges (a < b)
   FeatureContacts<T> features_;                 // the colliders' corners and edges
-  ColliderTouches touches_;                     // the vertices held (not the edges' midpoints)
+  ColliderTouches touches_;                     // the vertices held, also through edge midpoints
   ContactStats stats_;
 };
 
