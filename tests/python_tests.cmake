@@ -10,7 +10,7 @@ if(CLOTHLAB_PYTHON)
              WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
     set_tests_properties(python.${name} PROPERTIES TIMEOUT 600 ENVIRONMENT
       "PYTHONPATH=${CLOTHLAB_PYTHONPATH};CLOTHLAB_BINARY=$<TARGET_FILE:clothlab>;PYTHONDONTWRITEBYTECODE=1")
-    if(name MATCHES "^(threads|sweep|readme|tune)$")  # they time runs or start clusters: alone
+    if(name MATCHES "^(sweep|readme|tune)$")  # they time runs or start clusters: alone
       set_tests_properties(python.${name} PROPERTIES RUN_SERIAL TRUE)
     endif()
   endforeach()

@@ -1,5 +1,6 @@
-"""Two simulations in two Python threads run side by side: stepping releases the GIL. Run alone
-(RUN_SERIAL): it compares wall times, which another test beside it would distort."""
+"""Two simulations in two Python threads run side by side: stepping releases the GIL. Whether
+they also finish sooner than one after the other is a matter of timing, which the benchmarks
+measure, not these tests."""
 import os
 import threading
 import time
@@ -18,26 +19,27 @@ def make_sim(text):
     return clothlab.Simulation(scene)
 
 
-def test_two_simulations_in_two_threads_beat_one_after_the_other(small_scene_text):
+def test_two_simulations_in_two_threads_run_side_by_side(small_scene_text):
+    """While two simulations advance in two threads, this thread keeps running and sees their
+    step counts part-way: with the GIL held through a step it could not run until a call
+    returned. Each ends where the same simulation ends alone."""
     if len(os.sched_getaffinity(0)) < 2:
         pytest.skip("one core: two threads cannot run side by side")
     seconds = 2.0
-    a, b = make_sim(small_scene_text), make_sim(small_scene_text)
-    start = time.perf_counter()
-    a.advance(seconds)
-    b.advance(seconds)
-    serial = time.perf_counter() - start
+    alone = make_sim(small_scene_text)
+    alone.advance(seconds)
     c, d = make_sim(small_scene_text), make_sim(small_scene_text)
     threads = [threading.Thread(target=s.advance, args=(seconds,)) for s in (c, d)]
-    start = time.perf_counter()
     for t in threads:
         t.start()
+    seen = set()
+    while any(t.is_alive() for t in threads):
+        seen.add((c.steps, d.steps))
     for t in threads:
         t.join()
-    parallel = time.perf_counter() - start
-    assert (c.positions == a.positions).all() and (d.positions == b.positions).all()
-    # Two cores: about half; with the GIL held it would be the same as serial.
-    assert parallel < 0.8 * serial, (parallel, serial)
+    assert (c.positions == alone.positions).all() and (d.positions == alone.positions).all()
+    part_way = {s for s in seen if 0 < s[0] < alone.steps or 0 < s[1] < alone.steps}
+    assert len(part_way) >= 10, sorted(seen)
 
 
 def test_a_simulation_stepping_in_one_thread_refuses_another(small_scene_text):
