@@ -197,12 +197,12 @@ TEST(ContactResponse, RecordsTheVerticesItHoldsAndTheirNormals) {
     s.pos.set(i, p.x(), p.y(), p.z());
   }
   const double h = 1e-3;
-  response.begin(s, 0.0, h, 1);
-  for (std::size_t i = 0; i < m.n; ++i) {
-    const V3 v(3.0 * u(rng), 3.0 * u(rng), 3.0 * u(rng));
+  const auto move = [&](std::size_t i, const V3& v) {  // over the substep at velocity v
     s.vel.set(i, v.x(), v.y(), v.z());
     s.pos.set(i, s.pos.x[i] + h * v.x(), s.pos.y[i] + h * v.y(), s.pos.z[i] + h * v.z());
-  }
+  };
+  response.begin(s, 0.0, h, 1);
+  for (std::size_t i = 0; i < m.n; ++i) move(i, V3(3.0 * u(rng), 3.0 * u(rng), 3.0 * u(rng)));
   const State<double> before = s;
   ASSERT_TRUE(response.respond(m, s, 0.0, h, 1));
   int held = 0;
@@ -225,11 +225,8 @@ TEST(ContactResponse, RecordsTheVerticesItHoldsAndTheirNormals) {
     s.pos.set(i, p.x(), p.y(), p.z());
   }
   response.begin(s, h, h, 1);
-  for (std::size_t i = 0; i < m.n; ++i) {
-    const V3 v = 0.5 * V3(s.pos.x[i], s.pos.y[i], s.pos.z[i]).normalized();
-    s.vel.set(i, v.x(), v.y(), v.z());
-    s.pos.set(i, s.pos.x[i] + h * v.x(), s.pos.y[i] + h * v.y(), s.pos.z[i] + h * v.z());
-  }
+  for (std::size_t i = 0; i < m.n; ++i)
+    move(i, 0.5 * V3(s.pos.x[i], s.pos.y[i], s.pos.z[i]).normalized());
   EXPECT_FALSE(response.respond(m, s, h, h, 1));
   for (std::size_t i = 0; i < m.n; ++i) EXPECT_FALSE(response.touches().held(i)) << "vertex " << i;
 }

@@ -14,7 +14,8 @@
 //  2. Proximity (Bridson, Fedkiw & Anderson 2002, section 7.1; as position constraints, Mueller
 //     et al. 2007 section 4.4): a pair closer than the thickness is pushed apart to it along the
 //     direction between its closest points, taken on the side the pair was at x0 when it has
-//     passed through since, split by inverse mass with the closest points' weights, with Coulomb
+//     passed through since, split by inverse mass with the closest points' weights (none to a
+//     vertex a collider holds, into that collider: sim/contact/collider_touches.hpp), with Coulomb
 //     friction on the pair's relative tangential motion. Gauss-Seidel over the pairs in their
 //     fixed order, kProximityIterations sweeps. Velocities take the position change over h.
 //     A tangle beyond kMaxPairsPerTriangle or kMaxPairs (an exploding cloth) undoes the whole
