@@ -1,14 +1,15 @@
 // Real time at scale against accuracy (issues 36 and 54): the accuracy sheet
 // (bench/suites/lab_scenes.hpp: 1 m, 0.2 kg, k0 = 1e3 N/m, damping 0.05, two corners pinned,
-// falling from horizontal) at res x res, each setting in float at dt = 1/60 s on `threads`
-// threads: RMS distance of all vertices at t = 0.2, 0.5 and 1.0 s from a double RK4 run of the
-// same sheet, and the median wall time of one 1/60 s frame. The RK4 reference is cached in a file
-// (it costs minutes at 256^2).
+// falling from horizontal) at res x res, each setting in float (or double) at dt = 1/60 s on
+// `threads` threads: RMS distance of all vertices at t = 0.2, 0.5 and 1.0 s from a double RK4 run
+// of the same sheet, and the median wall time of one 1/60 s frame. The RK4 reference is cached in a
+// file (it costs minutes at 256^2).
 //
 //   build/release/bench/realtime_accuracy_bench [res=256] [threads=2] [csv=realtime_accuracy.csv]
 //                                               [reference=out/bench/rk4_<res>_1s.bin]
 //                                               [only=the settings whose label starts so;
 //                                                ending in $, the one so labelled]
+//                                               [precision=float or double]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -37,9 +38,10 @@ struct Setting {
   LinearSolver linear = LinearSolver::automatic;
   double newton_tolerance = 0.0;  // implicit methods: solver.newton_tolerance (0: default)
   double cg_tolerance = 0.0;      // implicit methods: solver.cg_tolerance (0: automatic)
+  bool slack = true;              // xpbd: solver.stretch_slack
 };
 
-Scene sheet(int res, const Setting& s, int threads) {
+Scene sheet(int res, const Setting& s, int threads, Precision precision = Precision::f32) {
   bench::SheetParams p;
   p.resolution = res;
   Scene scene = bench::hanging_sheet(p, s.kind, kFrame);
@@ -47,12 +49,13 @@ Scene sheet(int res, const Setting& s, int threads) {
   scene.solver.iterations = s.iterations;
   scene.solver.tethers = s.tethers;
   scene.solver.coarse_stretch = s.coarse;
+  scene.solver.stretch_slack = s.slack;
   scene.solver.newton_iterations = s.newton;
   scene.solver.linear_solver = s.linear;
   if (s.newton_tolerance > 0.0) scene.solver.newton_tolerance = s.newton_tolerance;
   scene.solver.cg_tolerance = s.cg_tolerance;
   scene.solver.threads = threads;
-  scene.solver.precision = Precision::f32;
+  scene.solver.precision = precision;
   return scene;
 }
 
@@ -174,6 +177,18 @@ int main(int argc, char** argv) {
       {"xpbd x20", K::xpbd, 20},
       {"xpbd x40", K::xpbd, 40},
       {"xpbd x80", K::xpbd, 80},
+      {"xpbd x160", K::xpbd, 160},
+      {"xpbd x320", K::xpbd, 320},
+      {"xpbd x20 no slack", K::xpbd, 20, 0, true, true, 0, LinearSolver::automatic, 0.0, 0.0,
+       false},
+      {"xpbd x40 no slack", K::xpbd, 40, 0, true, true, 0, LinearSolver::automatic, 0.0, 0.0,
+       false},
+      {"xpbd x80 no slack", K::xpbd, 80, 0, true, true, 0, LinearSolver::automatic, 0.0, 0.0,
+       false},
+      {"xpbd x160 no slack", K::xpbd, 160, 0, true, true, 0, LinearSolver::automatic, 0.0, 0.0,
+       false},
+      {"xpbd x320 no slack", K::xpbd, 320, 0, true, true, 0, LinearSolver::automatic, 0.0, 0.0,
+       false},
       {"xpbd x10 iterations 2", K::xpbd, 10, 2},
       {"xpbd x10 tethers only", K::xpbd, 10, 0, true, false},
       {"xpbd x26 tethers only", K::xpbd, 26, 0, true, false},
@@ -201,8 +216,10 @@ int main(int argc, char** argv) {
       {"implicit_euler multigrid", K::implicit_euler, 0, 0, true, true, 0, LinearSolver::multigrid},
   };
   const std::string only = argc > 5 ? argv[5] : "";
-  std::printf("%d^2 sheet, k0 = 1e3, dt = 1/60 s, float, %d threads: RMS from RK4 (mm)\n", res,
-              threads);
+  const bool in_double = argc > 6 && std::string(argv[6]) == "double";
+  const Precision precision = in_double ? Precision::f64 : Precision::f32;
+  std::printf("%d^2 sheet, k0 = 1e3, dt = 1/60 s, %s, %d threads: RMS from RK4 (mm)\n", res,
+              in_double ? "double" : "float", threads);
   std::printf("%-28s %-9s %-8s %-8s %-8s %s\n", "setting", "substeps", "0.2 s", "0.5 s", "1.0 s",
               "ms per frame");
   const std::string tmp = csv_path + ".tmp";
@@ -214,7 +231,7 @@ int main(int argc, char** argv) {
   for (const Setting& s : settings) {
     const bool exact = !only.empty() && only.back() == '$';
     if (exact ? s.label != only.substr(0, only.size() - 1) : s.label.find(only) != 0) continue;
-    auto solver = make_solver(sheet(res, s, threads));
+    auto solver = make_solver(sheet(res, s, threads, precision));
     const Measured m = measure(*solver, ref);
     std::printf("%-28s %-9d %-8.1f %-8.1f %-8.1f %.2f", s.label.c_str(), solver->substeps(),
                 1e3 * m.rms[0], 1e3 * m.rms[1], 1e3 * m.rms[2], 1e3 * m.frame);

@@ -18,6 +18,7 @@ foreach(test Multigrid.IterationsStayNearlyFlatAsTheGridGrows ShippedView.ForceA
              ShippedScenes.DropBoxSheetSlidesOffOntoTheFloor cli.bench.stability_quick
              cli.trace.diverges_10x.explicit_euler
              ImplicitEuler.MatchesRk4OnTheFallingSheetAtSmallSteps
+             SmallSteps.ErrorAtOneSecondFallsAsSubstepsDouble
              LargeStep/LargeStepOrder.SingleSpringIsFirstOrder/vbd)
   string(REGEX MATCH "${regex}" hit "${test}")
   if(NOT hit)

@@ -314,6 +314,14 @@ std::vector<Parameter> solver() {
            .only_for = "xpbd",
            .description = "grid cloths of 64 or more vertices a side: one-sided stretch "
                           "constraints on coarser grids after each sweep (after Mueller 2008)"}),
+      row<&SolverSpec::stretch_slack>(
+          {.name = "stretch_slack",
+           .fallback = "true",
+           .only_for = "xpbd",
+           .description =
+               "tethers and coarse levels allow a strain that grows with the substeps "
+               "beyond 10 per 1/60 s, so more substeps keep converging (docs/solver.md); "
+               "false: none at any count"}),
   };
 }
 

@@ -132,6 +132,7 @@ struct SolverSpec {
   int iterations = 0;          // xpbd: per substep (1); local_global: per step (10); vbd: (30)
   bool tethers = true;         // xpbd on grid cloths: long-range attachments to the pins
   bool coarse_stretch = true;  // xpbd on grid cloths: one-sided stretch constraints, coarser grids
+  bool stretch_slack = true;   // xpbd: those two allow more stretch as the substeps grow
   double chebyshev_rho = 0.0;  // local_global, vbd: Chebyshev's rho (0: local_global 0.97, vbd 0.9)
   double cg_tolerance = 0.0;   // implicit_euler, bdf2: |r| / |b| that ends PCG (0: automatic)
   int cg_max_iterations = 500;  // implicit_euler: PCG iteration cap per step

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/integrators/constraints/stretch_slack.hpp"
 #include "sim/integrators/constraints/tethers.hpp"
 
 namespace clothlab {
@@ -30,7 +31,7 @@ CoarseStretch<T>::CoarseStretch(const Model<T>& m) {
     if (!stretch_limited(m, c)) continue;
     const int count = coarse_level_count(r.nu, r.nv);
     if (count == 0) continue;
-    Cloth cloth{r.offset, r.nu, r.nv, {}};
+    Cloth cloth{r.offset, r.nu, r.nv, {}, static_strain(m, c)};
     int nu = r.nu, nv = r.nv;
     std::vector<std::int32_t> under(static_cast<std::size_t>(nu) * nv);
     for (std::size_t k = 0; k < under.size(); ++k)
@@ -47,6 +48,7 @@ CoarseStretch<T>::CoarseStretch(const Model<T>& m) {
         const int a = std::max(0, -di), b = a + dj * level.nu + di;  // the first such pair
         level.rest[o] = static_cast<T>(rest_distance(m, static_cast<std::size_t>(level.fine[a]),
                                                      static_cast<std::size_t>(level.fine[b])));
+        level.limit[o] = level.rest[o];
       }
       level.x.resize(level.fine.size());
       level.x0.resize(level.fine.size());
@@ -137,6 +139,15 @@ void project_run(T* x, T* y, T* z, const T* w, std::size_t a0, std::size_t shift
 }  // namespace
 
 template <class T>
+void CoarseStretch<T>::set_substep(double h) {
+  for (Cloth& c : cloths_) {
+    const double scale = 1.0 + stretch_slack(c.strain, std::max(c.nu, c.nv), h);
+    for (Level& l : c.levels)
+      for (int o = 0; o < 4; ++o) l.limit[o] = static_cast<T>(double(l.rest[o]) * scale);
+  }
+}
+
+template <class T>
 void CoarseStretch<T>::project_rows(Level& l, int o, int cls) {
   const auto [di, dj] = kCoarseOffsets[o];
   const int rows = l.nv - dj;
@@ -149,10 +160,10 @@ void CoarseStretch<T>::project_rows(Level& l, int o, int cls) {
     const std::size_t a0 = static_cast<std::size_t>(J) * l.nu + static_cast<std::size_t>(first);
     if (dj > 0) {
       project_run<T, 1>(l.x.x.data(), l.x.y.data(), l.x.z.data(), l.w.data(), a0, shift,
-                        std::max(0, last - first), l.rest[o]);
+                        std::max(0, last - first), l.limit[o]);
     } else {
       project_run<T, 2>(l.x.x.data(), l.x.y.data(), l.x.z.data(), l.w.data(), a0, shift,
-                        std::max(0, (last - first + 1) / 2), l.rest[o]);
+                        std::max(0, (last - first + 1) / 2), l.limit[o]);
     }
   }
 }

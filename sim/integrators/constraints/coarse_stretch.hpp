@@ -40,18 +40,23 @@ class CoarseStretch {
   // Restrict, project, prolong into pos. Called by every thread of a parallel region (its loops
   // are orphaned `omp for` with their barriers), or outside one on a single thread.
   void apply(Vec3Array<T>& pos, const T* inv_mass);
+  // The substep's length, for the slack each cloth's levels allow (stretch_slack.hpp): before
+  // apply(), outside the parallel region.
+  void set_substep(double h);
 
  private:
   struct Level {
     int nu = 0, nv = 0;
     std::vector<std::int32_t> fine;  // the model's vertex under each coarse vertex
     T rest[4] = {};                  // rest length of each coarse offset
+    T limit[4] = {};                 // the longest it may be at this substep (rest * (1 + slack))
     Vec3Array<T> x, x0;              // positions now and as restricted
     AlignedVector<T> w;              // inverse masses (0: pinned)
   };
   struct Cloth {
     int offset = 0, nu = 0, nv = 0;
     std::vector<Level> levels;  // finest coarse level first
+    double strain = 0.0;        // static_strain() of the cloth
   };
   void restrict_positions(Cloth& c, const Vec3Array<T>& pos, const T* inv_mass);
   void project(Level& l);

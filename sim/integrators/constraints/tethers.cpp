@@ -5,6 +5,8 @@
 #include <limits>
 #include <utility>
 
+#include "sim/integrators/constraints/stretch_slack.hpp"
+
 namespace clothlab {
 
 template <class T>
@@ -70,6 +72,8 @@ Tethers<T>::Tethers(const Model<T>& m) : n_(m.n) {
     Span span;
     span.begin = static_cast<std::size_t>(r.offset);
     span.end = span.begin + static_cast<std::size_t>(r.nu) * static_cast<std::size_t>(r.nv);
+    span.strain = static_strain(m, c);
+    span.side = std::max(r.nu, r.nv);
     span.shared = cloth_pins[c].size() <= static_cast<std::size_t>(kTetherSlots);
     span.slots = std::min<int>(kTetherSlots, static_cast<int>(cloth_pins[c].size()));
     for (int s = 0; s < span.slots && span.shared; ++s) span.pin[s] = cloth_pins[c][s];
@@ -100,6 +104,12 @@ void Tethers<T>::gather_pins(const Vec3Array<T>& x, const T* inv_mass) {
 }
 
 template <class T>
+void Tethers<T>::set_substep(double h) {
+  for (Span& span : spans_)
+    span.scale = static_cast<T>(1.0 + stretch_slack(span.strain, span.side, h));
+}
+
+template <class T>
 void Tethers<T>::project(Vec3Array<T>& x, const T* inv_mass, std::size_t b, std::size_t e) const {
   for (const Span& span : spans_) {
     const std::size_t lo = std::max(b, span.begin), hi = std::min(e, span.end);
@@ -116,13 +126,15 @@ void Tethers<T>::project_slot(Vec3Array<T>& x, const T* inv_mass, const Span& sp
   T* __restrict py = x.y.data();
   T* __restrict pz = x.z.data();
   const T* __restrict rest = rest_.data() + static_cast<std::size_t>(s) * n_;
-  // The tether pulls vertex i back onto the sphere of its rest distance around the pin; selects,
-  // so a vertex it does not hold keeps its bits.
+  const T scale = span.scale;
+  // The tether pulls vertex i back onto the sphere of its rest distance (times the slack's scale)
+  // around the pin; selects, so a vertex it does not hold keeps its bits.
   const auto pull = [&](std::size_t i, T ax, T ay, T az, bool live) {
     const T dx = px[i] - ax, dy = py[i] - ay, dz = pz[i] - az;
     const T d = std::sqrt(dx * dx + dy * dy + dz * dz);
-    const bool held = live && d > rest[i] && inv_mass[i] > T(0);
-    const T f = held ? rest[i] / d : T(1);
+    const T limit = rest[i] * scale;
+    const bool held = live && d > limit && inv_mass[i] > T(0);
+    const T f = held ? limit / d : T(1);
     px[i] = held ? ax + dx * f : px[i];
     py[i] = held ? ay + dy * f : py[i];
     pz[i] = held ? az + dz * f : pz[i];

@@ -53,6 +53,9 @@ class Tethers {
   // is still pinned (a released pin holds nothing): once per substep, before project() runs on
   // any block.
   void gather_pins(const Vec3Array<T>& x, const T* inv_mass);
+  // The substep's length, for the slack each cloth's tethers allow (stretch_slack.hpp): once per
+  // substep, before project() runs on any block.
+  void set_substep(double h);
   // Projects the free vertices [b, e) of x onto their tethers, slot by slot.
   void project(Vec3Array<T>& x, const T* inv_mass, std::size_t b, std::size_t e) const;
 
@@ -64,6 +67,9 @@ class Tethers {
     int slots = 0;
     bool shared = false;
     std::int32_t pin[kTetherSlots] = {};
+    double strain = 0.0;  // static_strain() of the cloth
+    int side = 0;         // its longer side in vertices
+    T scale = T(1);       // 1 + the slack at this substep: a tether holds at rest * scale
   };
   void project_slot(Vec3Array<T>& x, const T* inv_mass, const Span& span, int s, std::size_t lo,
                     std::size_t hi) const;

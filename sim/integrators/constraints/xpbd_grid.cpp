@@ -228,6 +228,7 @@ class XpbdGrid final : public Integrator<T> {
   int sweeps_;
   Tethers<T> tethers_;
   CoarseStretch<T> coarse_;
+  bool slack_;  // solver.stretch_slack: the two above allow the slack of stretch_slack.hpp
   std::vector<GridPart<T>> parts_;
   std::vector<std::size_t> lambda_start_;
   std::vector<BandRef> bands_[2];  // phase 0: even bands of every cloth, phase 1: odd
@@ -242,7 +243,8 @@ template <class T>
 inline XpbdGrid<T>::XpbdGrid(const Model<T>& m, const SolverSpec& spec)
     : sweeps_(spec.iterations > 0 ? spec.iterations : 1),
       tethers_(spec.tethers ? Tethers<T>(m) : Tethers<T>()),
-      coarse_(spec.coarse_stretch ? CoarseStretch<T>(m) : CoarseStretch<T>()) {
+      coarse_(spec.coarse_stretch ? CoarseStretch<T>(m) : CoarseStretch<T>()),
+      slack_(spec.stretch_slack) {
   std::size_t lambda_size = 0;
   int max_nu = 0;
   for (const GridStencil<T>& g : m.grids) {
@@ -274,6 +276,8 @@ inline void XpbdGrid<T>::step(const System<T>& sys, State<T>& s, double t, T h) 
   inv_mass_ = m.inv_mass.data();
   // Pins do not move in the sweep (inverse mass 0), so their positions are final already.
   if (!tethers_.empty()) tethers_.gather_pins(s.pos, m.inv_mass.data());
+  if (slack_ && !tethers_.empty()) tethers_.set_substep(double(h));
+  if (slack_ && !coarse_.empty()) coarse_.set_substep(double(h));
   const long blocks = static_cast<long>(block_count(m.n));
   run_team(threads, [&] {
     for (int sweep = 0; sweep < sweeps_; ++sweep) {
