@@ -120,7 +120,9 @@ SolverT<T>::SolverT(const Scene& scene, SpringKernel kernel)
   compute_forces(model_, 0.0, state_.pos, state_.vel, force_field_, workspace_, threads_);
   check_built_forces(force_field_, model_, scene);
   if (!scene.colliders.empty())
-    contacts_ = std::make_unique<ContactResponse<T>>(scene.colliders, model_);
+    contacts_ = std::make_unique<ContactResponse<T>>(
+        scene.colliders, model_,
+        scene.solver.cloth_contact ? kHoldReach * scene.solver.self_thickness : 0.0);
   if (spec_.self_collision) self_ = std::make_unique<SelfCollision<T>>(model_, spec_);
   check_contact_thickness(model_, scene);
   if (spec_.cloth_contact) cloth_contact_ = std::make_unique<TriangleContact<T>>(model_, spec_);

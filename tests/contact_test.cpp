@@ -231,6 +231,44 @@ TEST(ContactResponse, RecordsTheVerticesItHoldsAndTheirNormals) {
   for (std::size_t i = 0; i < m.n; ++i) EXPECT_FALSE(response.touches().held(i)) << "vertex " << i;
 }
 
+// Vertices the response leaves alone but that end within hold_reach of a shell are held too, so
+// that triangle contact's pushes do not drive a vertex resting just above a collider into it:
+// vertices 0.5 to 9.5 mm outside the sphere's 5 mm shell, sliding along it, none corrected; with a
+// reach of 5 mm exactly those within it are held, along the outward normal; with none, none is.
+TEST(ContactResponse, HoldsTheVerticesWithinReachOfAShell) {
+  Scene scene = testing::sheet(10, 1.0, 0.2, 100.0, IntegratorKind::symplectic_euler, 1e-3);
+  scene.solver.precision = Precision::f64;
+  const Model<double> m = build_model<double>(scene);
+  for (const double reach : {0.005, 0.0}) {
+    ContactResponse<double> response({sphere({0.0, 0.0, 0.0}, 0.3)}, m, reach);
+    State<double> s;
+    s.pos.resize(m.n);
+    s.vel.resize(m.n);
+    const double h = 1e-3;
+    std::vector<double> gap(m.n);
+    for (std::size_t i = 0; i < m.n; ++i) {
+      gap[i] = 0.0005 + 0.001 * double(i % 10);
+      const double angle = 0.05 * double(i);
+      s.pos.set(i, (0.305 + gap[i]) * std::cos(angle), (0.305 + gap[i]) * std::sin(angle), 0.0);
+    }
+    response.begin(s, 0.0, h, 1);
+    for (std::size_t i = 0; i < m.n; ++i) {  // 1 m/s along z, tangent to the sphere
+      s.vel.set(i, 0.0, 0.0, 1.0);
+      s.pos.set(i, s.pos.x[i], s.pos.y[i], s.pos.z[i] + h);
+    }
+    const State<double> before = s;
+    response.respond(m, s, 0.0, h, 1);
+    for (std::size_t i = 0; i < m.n; ++i) {
+      ASSERT_EQ(s.pos.z[i], before.pos.z[i]) << "vertex " << i << " was corrected";
+      const bool within = gap[i] < reach;
+      ASSERT_EQ(response.touches().held(i), within) << "reach " << reach << ", vertex " << i;
+      if (!within) continue;
+      const V3 out = V3(s.pos.x[i], s.pos.y[i], s.pos.z[i]).normalized();
+      EXPECT_GT(response.touches().normal_of(i).dot(out), 0.999) << "vertex " << i;
+    }
+  }
+}
+
 // A rod thinner than the cloth's spacing, between two rows of a 10 x 10 sheet that falls onto it:
 // the edges across the rod hold it at their midpoints, and the ends of each such edge, themselves
 // 5.6 cm from the rod, are held along the rod's normal (up); no other vertex is.

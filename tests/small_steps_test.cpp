@@ -119,21 +119,22 @@ TEST(SmallSteps, ErrorFallsAsSubstepsDouble) {
   }
 }
 
-// Stretch limits that let go (stretch_slack.hpp): in double, where float's rounding does not
-// decide the fold (docs/solver.md, "Stretch limits that let go"), the error at 1 s keeps falling
-// as the substeps double from 20 to 320, to under a third of the floor where limits with no slack
-// stop it. Measured at 1 s, 20 / 40 / 80 / 160 / 320 substeps: 32^2 27.0 / 21.1 / 9.9 / 8.4 / 4.5
-// mm, at least 17.3 without slack (3.8x); 64^2 37.4 / 17.5 / 11.3 / 8.9 / 6.5 mm, at least 30.6
-// (4.7x). At 640 the error no longer falls (6.0 and 7.0 mm): xpbd's own error, as the fold
-// magnifies it, with the limits out of the way (the RK4 reference moves 0.002 mm at half its step).
+// Stretch limits that let go (stretch_slack.hpp), with the sweeps moving displacements
+// (xpbd_grid.cpp): in float the error at 1 s keeps falling as the substeps double from 20 to 320,
+// to under a third of the floor where limits with no slack stop it. Measured at 1 s, 20 / 40 /
+// 80 / 160 / 320 substeps: 32^2 27.0 / 21.1 / 9.9 / 8.3 / 4.5 mm, at least 17.3 without slack
+// (3.8x); 64^2 37.4 / 17.4 / 11.4 / 9.3 / 7.3 mm, at least 30.2 (4.1x). Taking the velocity as the
+// position change, float gave 16.5 mm at 160 (docs/solver.md, "Displacements, not positions, in
+// float"); at 640 the error no longer falls in double either (6.0 and 7.0 mm): xpbd's own error,
+// as the fold magnifies it, with the limits out of the way (the RK4 reference moves 0.002 mm at
+// half its step).
 TEST(SmallSteps, ErrorAtOneSecondFallsAsSubstepsDouble) {
   for (int res : {32, 64}) {
     const std::vector<Vec3d> reference = rk4_positions(res, 1.0);
     std::vector<double> e;
-    for (int n : {20, 40, 80, 160, 320}) e.push_back(rms_vs<double>(reference, res, 1.0, n));
+    for (int n : {20, 40, 80, 160, 320}) e.push_back(rms_vs(reference, res, 1.0, n));
     double floor = INFINITY;
-    for (int n : {20, 40, 80})
-      floor = std::min(floor, rms_vs<double>(reference, res, 1.0, n, false));
+    for (int n : {20, 40, 80}) floor = std::min(floor, rms_vs(reference, res, 1.0, n, false));
     std::printf(
         "[ measured ] %d^2 at 1 s: %.1f / %.1f / %.1f / %.1f / %.1f mm at 20 / 40 / 80 / "
         "160 / 320 substeps; without slack at least %.1f mm\n",

@@ -48,7 +48,8 @@ struct Bounds {
 // grown by its thickness.
 struct ColliderSweep {
   ColliderPose start, end;
-  Bounds box;
+  Bounds box;        // the shape and its shell over the substep
+  Bounds reach_box;  // the same out to where the response holds vertices it leaves alone
 };
 
 class Collider {

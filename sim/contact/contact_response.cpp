@@ -37,7 +37,9 @@ bool first_touch(const Collider& c, const V3& p0, const V3& p1, double thickness
 }  // namespace
 
 template <class T>
-ContactResponse<T>::ContactResponse(const std::vector<ColliderSpec>& colliders, const Model<T>& m) {
+ContactResponse<T>::ContactResponse(const std::vector<ColliderSpec>& colliders, const Model<T>& m,
+                                    double hold_reach)
+    : hold_reach_(hold_reach) {
   colliders_.reserve(colliders.size());
   for (const ColliderSpec& spec : colliders) colliders_.emplace_back(spec);
   sweeps_.resize(colliders_.size());
@@ -160,30 +162,48 @@ void ContactResponse<T>::begin(const State<T>& s, double t, double h, int thread
 }
 
 template <class T>
-bool ContactResponse<T>::point(const V3& x0, V3& x1, V3& v, double h, double& depth,
-                               V3& normal) const {
+bool ContactResponse<T>::point(const V3& x0, V3& x1, V3& v, double h, double& depth, V3& normal,
+                               V3* near) const {
   bool changed = false;
+  // Left alone but within reach of the shell: held all the same (see hold_reach_).
+  const auto note = [&](const ColliderSweep& sweep, const LocalDistance& d, double th) {
+    if (near && d.phi < th + hold_reach_) *near = sweep.end.rotation * d.normal;
+  };
   for (std::size_t c = 0; c < colliders_.size(); ++c) {
     const Collider& collider = colliders_[c];
     const ColliderSweep& sweep = sweeps_[c];
     // This point's path against the collider's box over the substep.
     const Bounds path{x0.cwiseMin(x1), x0.cwiseMax(x1)};
-    if (!path.overlaps(sweep.box)) continue;
+    if (!path.overlaps(sweep.reach_box)) continue;
     const double th = collider.thickness();
+    if (!path.overlaps(sweep.box)) {  // no contact; only the hold's reach
+      if (near) note(sweep, collider.local_distance(sweep.end.to_local(x1)), th);
+      continue;
+    }
     const V3 p0 = sweep.start.to_local(x0), p1 = sweep.end.to_local(x1);
     const LocalDistance d0 = collider.local_distance(p0);
     LocalDistance touch = collider.local_distance(p1);
     if (d0.phi >= th) {
       // Outside at the start: it is a contact only if the relative path reached the shell, and
       // the normal is where it first did (the side it came from).
-      if (touch.phi >= th && (p1 - p0).norm() <= d0.phi - th) continue;
-      if (!first_touch(collider, p0, p1, th, touch)) continue;
+      if (touch.phi >= th && (p1 - p0).norm() <= d0.phi - th) {
+        note(sweep, touch, th);
+        continue;
+      }
+      const LocalDistance end = touch;
+      if (!first_touch(collider, p0, p1, th, touch)) {
+        note(sweep, end, th);
+        continue;
+      }
     } else {
       // Started on (or in) the shell, as a resting vertex does: it leaves only by moving outwards;
       // moving inwards it is a contact even if its path ends beyond the far side (it must not
       // pass through a thin collider), and the normal is the start's unless the end is inside on
       // the same side.
-      if (touch.phi >= th && (p1 - p0).dot(d0.normal) >= 0.0) continue;
+      if (touch.phi >= th && (p1 - p0).dot(d0.normal) >= 0.0) {
+        note(sweep, touch, th);
+        continue;
+      }
       if (touch.phi >= th || touch.normal.dot(d0.normal) < 0.0) touch = d0;
     }
     const V3 n = sweep.end.rotation * touch.normal;
@@ -226,8 +246,11 @@ template <class T>
 bool ContactResponse<T>::vertex(std::size_t i, const Model<T>& m, State<T>& s, double h,
                                 double& depth) {
   if (m.inv_mass[i] == T(0)) return false;  // pinned: held where it is
-  V3 x1 = load3(s.pos, i), v = load3(s.vel, i), normal;
-  if (!point(load3(start_, i), x1, v, h, depth, normal)) return false;
+  V3 x1 = load3(s.pos, i), v = load3(s.vel, i), normal, near = V3::Zero();
+  if (!point(load3(start_, i), x1, v, h, depth, normal, &near)) {
+    if (near.squaredNorm() > 0.0) touches_.hold(i, near);
+    return false;
+  }
   touches_.hold(i, normal);
   store3(s.pos, i, x1);
   store3(s.vel, i, v);
@@ -263,6 +286,28 @@ bool ContactResponse<T>::edge(std::size_t a, std::size_t b, const Model<T>& m, S
   return true;
 }
 
+// The vertices of the blocks near a collider, each against every collider.
+template <class T>
+void ContactResponse<T>::respond_vertices(const Model<T>& m, State<T>& s, double h, int threads) {
+  for_each_block_indexed(s.pos.size(), threads,
+                         [&](std::size_t block, std::size_t b, std::size_t e) {
+                           BlockResult& r = blocks_[block];
+                           if (!r.near) return;
+                           r.contacts = 0;
+                           for (std::size_t i = b; i < e; ++i) {
+                             double depth = 0.0;
+                             if (vertex(i, m, s, h, depth)) {
+                               ++r.contacts;
+                               r.max_depth = std::max(r.max_depth, depth);
+                             }
+                           }
+                         });
+  for (const BlockResult& r : blocks_) {
+    stats_.contacts += r.contacts;
+    stats_.max_depth = std::max(stats_.max_depth, r.max_depth);
+  }
+}
+
 template <class T>
 bool ContactResponse<T>::respond(const Model<T>& m, State<T>& s, double t, double h, int threads) {
   stats_ = {};
@@ -275,6 +320,9 @@ bool ContactResponse<T>::respond(const Model<T>& m, State<T>& s, double t, doubl
     const double th = colliders_[c].thickness();
     const Bounds a = colliders_[c].bounds(sweep.start, th), b = colliders_[c].bounds(sweep.end, th);
     sweep.box = {a.lo.cwiseMin(b.lo), a.hi.cwiseMax(b.hi)};
+    // Out to the hold's reach beyond the shell (hold_reach_), where vertices are held too.
+    const V3 reach = V3::Constant(hold_reach_);
+    sweep.reach_box = {sweep.box.lo - reach, sweep.box.hi + reach};
   }
   // Which blocks of vertices come near a collider: the block's box over the substep against
   // each collider's; most blocks of a cloth far from every collider stop here.
@@ -289,37 +337,29 @@ bool ContactResponse<T>::respond(const Model<T>& m, State<T>& s, double t, doubl
                            BlockResult& r = blocks_[block];
                            r = {};
                            for (std::size_t c = 0; c < colliders_.size() && !r.near; ++c) {
-                             const double th = colliders_[c].thickness();
+                             const double th = colliders_[c].thickness() + hold_reach_;
                              // Bounded shapes: their box over the whole substep (a fast one
                              // sweeps the space between its poses).
                              r.near = colliders_[c].spec().kind == ColliderKind::plane
                                           ? colliders_[c].reaches(box, sweeps_[c].start, th) ||
                                                 colliders_[c].reaches(box, sweeps_[c].end, th)
-                                          : box.overlaps(sweeps_[c].box);
+                                          : box.overlaps(sweeps_[c].reach_box);
                            }
                          });
   // Edge midpoints first, then the vertices, so that what an edge's correction moves is checked
   // again and no vertex is left inside a shell.
   if (edges_) respond_edges(m, s, h, threads);
-  for_each_block_indexed(s.pos.size(), threads,
-                         [&](std::size_t block, std::size_t b, std::size_t e) {
-                           BlockResult& r = blocks_[block];
-                           if (!r.near) return;
-                           for (std::size_t i = b; i < e; ++i) {
-                             double depth = 0.0;
-                             if (vertex(i, m, s, h, depth)) {
-                               ++r.contacts;
-                               r.max_depth = std::max(r.max_depth, depth);
-                             }
-                           }
-                         });
-  for (const BlockResult& r : blocks_) {
-    stats_.contacts += r.contacts;
-    stats_.max_depth = std::max(stats_.max_depth, r.max_depth);
+  respond_vertices(m, s, h, threads);
+  // Then the colliders' corners and edges against the triangles between the vertices, and the
+  // vertices once more: a corner's correction moves a triangle's three vertices by weights and
+  // could leave one inside the shell (the thin table's top, at its corner).
+  if (features_.empty()) return stats_.contacts > 0;
+  stats_.contacts += features_.respond(colliders_, sweeps_, m, start_, s, threads);
+  for (const std::int32_t i : features_.moved()) {
+    double depth = 0.0;
+    if (vertex(std::size_t(i), m, s, h, depth))
+      stats_.max_depth = std::max(stats_.max_depth, depth);
   }
-  // Last, the colliders' corners and edges against the triangles between the vertices.
-  if (!features_.empty())
-    stats_.contacts += features_.respond(colliders_, sweeps_, m, start_, s, threads);
   return stats_.contacts > 0;
 }
 

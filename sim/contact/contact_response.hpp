@@ -41,7 +41,11 @@ namespace clothlab {
 template <class T>
 class ContactResponse {
  public:
-  ContactResponse(const std::vector<ColliderSpec>& colliders, const Model<T>& m);
+  // hold_reach: how far beyond a collider's shell a vertex the response leaves alone still counts
+  // as held in touches() (triangle contact's pushes, up to the cloth's thickness each, must not
+  // drive it in); 0: only the vertices it corrects.
+  ContactResponse(const std::vector<ColliderSpec>& colliders, const Model<T>& m,
+                  double hold_reach = 0.0);
 
   bool empty() const { return colliders_.empty(); }
   const std::vector<Collider>& colliders() const { return colliders_; }
@@ -65,11 +69,15 @@ class ContactResponse {
   struct EdgeRun {  // `count` edges (first + e * 1, + step) of one grid row
     int first = 0, step = 1, count = 0;
   };
+  // The vertices of the blocks near a collider (vertex() for each).
+  void respond_vertices(const Model<T>& m, State<T>& s, double h, int threads);
   // The response of one point moving from x0 to (x1, v) over the substep, against every
   // collider: corrects x1 and v and raises depth to what is left inside a shell. Returns
-  // whether it was a contact, and sets `normal` to the outward normal of the last one.
+  // whether it was a contact, and sets `normal` to the outward normal of the last one; `near`,
+  // when given, to the outward normal of a collider whose shell x1 ends within hold_reach_ of
+  // without a contact.
   bool point(const Eigen::Vector3d& x0, Eigen::Vector3d& x1, Eigen::Vector3d& v, double h,
-             double& depth, Eigen::Vector3d& normal) const;
+             double& depth, Eigen::Vector3d& normal, Eigen::Vector3d* near = nullptr) const;
   // A vertex's response, and an edge midpoint's (moving both ends); each records the vertices
   // it moved in touches_ (no two at once share a vertex: respond_edges' rounds).
   bool vertex(std::size_t i, const Model<T>& m, State<T>& s, double h, double& depth);
@@ -96,6 +104,7 @@ class ContactResponse {
   std::vector<std::array<int, 2>> mesh_edges_;  // mesh cloths' edges (a < b)
   FeatureContacts<T> features_;                 // the colliders' corners and edges
   ColliderTouches touches_;                     // the vertices held, also through edge midpoints
+  double hold_reach_ = 0.0;                     // m: see the constructor
   ContactStats stats_;
 };
 

@@ -67,6 +67,7 @@ FeatureContacts<T>::FeatureContacts(const std::vector<Collider>& colliders, cons
   if (empty_) return;
   near_.assign(m.n, 0);
   block_move_.assign(block_count(m.n), 0.0);
+  moved_.reserve(3 * m.triangles.size());  // one contact a triangle before it grows
 }
 
 template <class T>
@@ -91,6 +92,7 @@ int FeatureContacts<T>::respond(const std::vector<Collider>& colliders,
                                 const std::vector<ColliderSweep>& sweeps, const Model<T>& m,
                                 const Vec3Array<T>& start, State<T>& s, int threads) {
   int contacts = 0;
+  moved_.clear();
   for (std::size_t c = 0; c < colliders.size(); ++c) {
     const SharpFeatures& f = features_[c];
     if (f.empty()) continue;
@@ -133,8 +135,10 @@ int FeatureContacts<T>::respond(const std::vector<Collider>& colliders,
         const Feature feature{sweep.start.to_world(local), sweep.end.to_world(local),
                               sweep.end.rotation * f.outward[std::size_t(i)]};
         if (touch(colliders[c], sweep.end, feature, grow, t, start_normal, m, start, s,
-                  [&] { return buried(feature.end, c, colliders, sweeps); }))
+                  [&] { return buried(feature.end, c, colliders, sweeps); })) {
           ++contacts;
+          moved_.insert(moved_.end(), t.begin(), t.end());
+        }
       });
     }
   }

@@ -45,6 +45,8 @@ class FeatureContacts {
   // contacts.
   int respond(const std::vector<Collider>& colliders, const std::vector<ColliderSweep>& sweeps,
               const Model<T>& m, const Vec3Array<T>& start, State<T>& s, int threads);
+  // The vertices the last respond() moved, each once per contact that moved it.
+  const std::vector<std::int32_t>& moved() const { return moved_; }
 
  private:
   struct Feature {  // one feature over the substep, world frame
@@ -68,6 +70,7 @@ class FeatureContacts {
   std::vector<SharpFeatures> features_;  // per collider (empty for smooth shapes)
   std::vector<char> near_;               // per vertex, for the collider at hand
   std::vector<double> block_move_;       // per block of vertices: its largest move
+  std::vector<std::int32_t> moved_;      // the vertices the last respond() moved (repeats kept)
   bool empty_ = true;
 };
 

@@ -1,6 +1,11 @@
 // XPBD's grid path (xpbd_grid.hpp): the constraint update of xpbd.cpp (Macklin, Mueller &
 // Chentanez 2016, eq. (26) multiplied through by k h^2) in batches of one stencil offset and one
-// parity class, band by band.
+// parity class, band by band. The sweeps move each vertex's displacement d over the substep, not
+// its position: a spring's vector is (x0_a - x0_b) + (d_a - d_b) with x0 the substep's start, so
+// the corrections round at the displacement's scale, and the velocity is d / h. Summed into a
+// float position near 1 m each correction would round at 6e-8 m, and the velocity (x - x0) / h
+// took every rounding over h: from about 160 substeps a frame that noise, not the method, set the
+// error (docs/solver.md, "Displacements, not positions, in float").
 #include "sim/integrators/constraints/xpbd_grid.hpp"
 
 #include <algorithm>
@@ -16,7 +21,7 @@
 namespace clothlab {
 namespace {
 
-// Vertices per band: a band's positions, previous positions and inverse masses (28 bytes a
+// Vertices per band: a band's positions, displacements and inverse masses (28 bytes a
 // vertex) stay in a core's L2 while its 20 batches pass over it.
 constexpr int kXpbdBandVertices = 4096;
 constexpr int kXpbdMinBandRows = 4;
@@ -71,7 +76,8 @@ struct SpringConstants {
   T kh2, ch, rest;
 };
 
-// Everything one spring update needs of its two ends.
+// Everything one spring update needs of its two ends: their displacements this substep (x, y, z;
+// the update moves them) and their positions at its start (qx, qy, qz).
 template <class T>
 struct EndView {
   T *x, *y, *z;
@@ -81,17 +87,15 @@ struct EndView {
 // The update of spring (a, b): dlambda and the unit vector n from b to a; zero where the
 // spring has no length (no direction, so no correction).
 template <class T>
-[[gnu::always_inline]] inline T spring_update(T ax, T ay, T az, T bx, T by, T bz, T mx, T my, T mz,
-                                              T wab, T lam, SpringConstants<T> s, T& nx, T& ny,
-                                              T& nz) {
-  const T dx = ax - bx, dy = ay - by, dz = az - bz;
+[[gnu::always_inline]] inline T spring_update(T dx, T dy, T dz, T mx, T my, T mz, T wab, T lam,
+                                              SpringConstants<T> s, T& nx, T& ny, T& nz) {
   const T len = std::sqrt(dx * dx + dy * dy + dz * dz);
   const T inv_len = len > T(0) ? T(1) / len : T(0);
   nx = dx * inv_len;
   ny = dy * inv_len;
   nz = dz * inv_len;
   const T stretch = len > T(0) ? len - s.rest : T(0);
-  // grad C . (x - x_prev): the relative displacement along the spring this substep.
+  // grad C . (d_a - d_b): the relative displacement along the spring this substep.
   const T moved = nx * mx + ny * my + nz * mz;
   return (-s.kh2 * stretch - lam - s.ch * moved) / ((s.kh2 + s.ch) * wab + T(1));
 }
@@ -118,14 +122,12 @@ void run_pairs(const EndView<T>& a, const EndView<T>& b, T* __restrict lambda, i
   const T* __restrict bw = b.w;
 #pragma omp simd
   for (int i = 0; i < count; ++i) {
-    const T mx = (ax[i] - aqx[i]) - (bx[i] - bqx[i]);
-    const T my = (ay[i] - aqy[i]) - (by[i] - bqy[i]);
-    const T mz = (az[i] - aqz[i]) - (bz[i] - bqz[i]);
+    const T mx = ax[i] - bx[i], my = ay[i] - by[i], mz = az[i] - bz[i];
     const T lam = First ? T(0) : lambda[i];
     const T wa = aw[i], wb = bw[i];
     T nx, ny, nz;
-    const T dl = spring_update(ax[i], ay[i], az[i], bx[i], by[i], bz[i], mx, my, mz, wa + wb, lam,
-                               s, nx, ny, nz);
+    const T dl = spring_update((aqx[i] - bqx[i]) + mx, (aqy[i] - bqy[i]) + my,
+                               (aqz[i] - bqz[i]) + mz, mx, my, mz, wa + wb, lam, s, nx, ny, nz);
     if constexpr (Keep) lambda[i] = lam + dl;
     const T da = wa * dl, db = wb * dl;
     ax[i] += da * nx;
@@ -170,13 +172,11 @@ void run_row(const EndView<T>& r, int nu, int di, const T* __restrict in_class,
 #pragma omp simd
   for (int i = 0; i < count; ++i) {
     const int k = i + di;
-    const T mx = (x[i] - qx[i]) - (x[k] - qx[k]);
-    const T my = (y[i] - qy[i]) - (y[k] - qy[k]);
-    const T mz = (z[i] - qz[i]) - (z[k] - qz[k]);
+    const T mx = x[i] - x[k], my = y[i] - y[k], mz = z[i] - z[k];
     const T lam = First ? T(0) : lambda[i];
     T nx, ny, nz;
-    const T dl = spring_update(x[i], y[i], z[i], x[k], y[k], z[k], mx, my, mz, w[i] + w[k], lam, s,
-                               nx, ny, nz);
+    const T dl = spring_update((qx[i] - qx[k]) + mx, (qy[i] - qy[k]) + my, (qz[i] - qz[k]) + mz, mx,
+                               my, mz, w[i] + w[k], lam, s, nx, ny, nz);
     const bool live = in_class[i] != T(0);
     if constexpr (Keep) lambda[i] = live ? lam + dl : lambda[i];  // the other class keeps its own
     dls[i] = live ? dl : T(0);
@@ -211,7 +211,7 @@ class XpbdGrid final : public Integrator<T> {
     int cloth, band;
   };
 
-  // The prediction (xpbd.cpp: v += h f / m with drag implicit, x_prev = x, x += h v) of even
+  // The prediction (xpbd.cpp: v += h f / m with drag implicit, d = h v) of even
   // band b and the odd band after it: the rows its sweep touches (its own and `reach` rows of
   // the next) and the rest of that odd band, which no other even band touches.
   void predict_rows(const Model<T>& m, State<T>& s, int c, int b, T h);
@@ -220,9 +220,12 @@ class XpbdGrid final : public Integrator<T> {
   template <bool First>
   void sweep_band(State<T>& s, int c, int b, T h, const RowScratch<T>& scratch);
 
-  EndView<T> view(State<T>& s, std::size_t i) const;
+  EndView<T> view(State<T>& s, std::size_t i);
 
-  // Vertices [b, e): the tethers (tethers.hpp), then v = (x - x_prev) / h.
+  // Vertices [b, e): x = x0 + d, kept in landed_ (the coarse levels and tethers then move x).
+  void land(State<T>& s, std::size_t b, std::size_t e);
+  // Vertices [b, e): landed (unless the coarse levels needed it before), the tethers
+  // (tethers.hpp), then v = (d + x - landed) / h: what they moved added to d, rounded once.
   void finish(const Model<T>& m, State<T>& s, T h, std::size_t b, std::size_t e);
 
   int sweeps_;
@@ -235,7 +238,9 @@ class XpbdGrid final : public Integrator<T> {
   AlignedVector<T> lambda_;        // sweeps > 1: per offset, per start vertex
   AlignedVector<T> scratch_;
   std::size_t scratch_pad_ = 0, scratch_stride_ = 0;  // RowScratch per band
-  Vec3Array<T> prev_, f_;
+  Vec3Array<T> disp_;                                 // the substep's displacements d
+  Vec3Array<T> landed_;                               // x0 + d, as rounded
+  Vec3Array<T> f_;
   const T* inv_mass_ = nullptr;  // the model's, set by step()
 };
 
@@ -264,7 +269,8 @@ inline XpbdGrid<T>::XpbdGrid(const Model<T>& m, const SolverSpec& spec)
       if (o.dj == 0) scratch_pad_ = std::max(scratch_pad_, static_cast<std::size_t>(o.di));
   scratch_stride_ = scratch_pad_ + static_cast<std::size_t>(max_nu);
   scratch_.assign(4 * scratch_stride_ * std::max(bands_[0].size(), bands_[1].size()), T(0));
-  prev_.resize(m.n);
+  disp_.resize(m.n);
+  landed_.resize(m.n);
   if (wind_acts(m)) f_.resize(m.n);
 }
 
@@ -299,9 +305,16 @@ inline void XpbdGrid<T>::step(const System<T>& sys, State<T>& s, double t, T h) 
         }
       }
     }
-    // After the last phase's barrier the fine positions are final; the coarse levels correct
-    // them (their loops end in barriers).
-    if (!coarse_.empty()) coarse_.apply(s.pos, m.inv_mass.data());
+    // After the last phase's barrier the fine displacements are final; the coarse levels
+    // correct the positions they make (their loops end in barriers).
+    if (!coarse_.empty()) {
+#pragma omp for schedule(static)
+      for (long k = 0; k < blocks; ++k) {
+        const std::size_t b = static_cast<std::size_t>(k) * kBlockSize;
+        land(s, b, std::min(m.n, b + kBlockSize));
+      }
+      coarse_.apply(s.pos, m.inv_mass.data());
+    }
 #pragma omp for schedule(static)
     for (long k = 0; k < blocks; ++k) {
       const std::size_t b = static_cast<std::size_t>(k) * kBlockSize;
@@ -322,9 +335,8 @@ inline void XpbdGrid<T>::predict_rows(const Model<T>& m, State<T>& s, int c, int
   const T drag = m.drag;
   const bool wind = !f_.x.empty();
   for (int a = 0; a < 3; ++a) {
-    T* __restrict x = s.pos.axis(a).data();
     const T* __restrict v = s.vel.axis(a).data();
-    T* __restrict q = prev_.axis(a).data();
+    T* __restrict d = disp_.axis(a).data();
     const T g = m.gravity[a];
     const T* __restrict f = wind ? f_.axis(a).data() : nullptr;
 #pragma omp simd
@@ -333,8 +345,7 @@ inline void XpbdGrid<T>::predict_rows(const Model<T>& m, State<T>& s, int c, int
       const T push = wind ? f[i] + drag * v[i] : mass[i] * g;
       const T hw = h * inv_m[i];
       const T v_new = inv_m[i] > T(0) ? (v[i] + hw * push) / (T(1) + hw * drag) : T(0);
-      q[i] = x[i];
-      x[i] = x[i] + h * v_new;
+      d[i] = h * v_new;
     }
   }
 }
@@ -384,21 +395,34 @@ inline void XpbdGrid<T>::sweep_band(State<T>& s, int c, int b, T h, const RowScr
 }
 
 template <class T>
-inline EndView<T> XpbdGrid<T>::view(State<T>& s, std::size_t i) const {
-  return {s.pos.x.data() + i, s.pos.y.data() + i, s.pos.z.data() + i, prev_.x.data() + i,
-          prev_.y.data() + i, prev_.z.data() + i, inv_mass_ + i};
+inline EndView<T> XpbdGrid<T>::view(State<T>& s, std::size_t i) {
+  return {disp_.x.data() + i, disp_.y.data() + i, disp_.z.data() + i, s.pos.x.data() + i,
+          s.pos.y.data() + i, s.pos.z.data() + i, inv_mass_ + i};
+}
+
+template <class T>
+inline void XpbdGrid<T>::land(State<T>& s, std::size_t b, std::size_t e) {
+  for (int a = 0; a < 3; ++a) {
+    T* __restrict x = s.pos.axis(a).data();
+    const T* __restrict d = disp_.axis(a).data();
+    T* __restrict landed = landed_.axis(a).data();
+#pragma omp simd
+    for (std::size_t i = b; i < e; ++i) landed[i] = x[i] = x[i] + d[i];
+  }
 }
 
 template <class T>
 inline void XpbdGrid<T>::finish(const Model<T>& m, State<T>& s, T h, std::size_t b, std::size_t e) {
+  if (coarse_.empty()) land(s, b, e);
   if (!tethers_.empty()) tethers_.project(s.pos, m.inv_mass.data(), b, e);
   const T inv_h = T(1) / h;
   for (int a = 0; a < 3; ++a) {
     const T* __restrict x = s.pos.axis(a).data();
-    const T* __restrict q = prev_.axis(a).data();
+    const T* __restrict d = disp_.axis(a).data();
+    const T* __restrict landed = landed_.axis(a).data();
     T* __restrict v = s.vel.axis(a).data();
 #pragma omp simd
-    for (std::size_t i = b; i < e; ++i) v[i] = (x[i] - q[i]) * inv_h;
+    for (std::size_t i = b; i < e; ++i) v[i] = (d[i] + (x[i] - landed[i])) * inv_h;
   }
 }
 
