@@ -350,9 +350,9 @@ bool ContactResponse<T>::respond(const Model<T>& m, State<T>& s, double t, doubl
   // again and no vertex is left inside a shell.
   if (edges_) respond_edges(m, s, h, threads);
   respond_vertices(m, s, h, threads);
-  // Then the colliders' corners and edges against the triangles between the vertices, and the
-  // vertices once more: a corner's correction moves a triangle's three vertices by weights and
-  // could leave one inside the shell (the thin table's top, at its corner).
+  // Then the colliders' corners and edges against the triangles between the vertices, and once
+  // more each vertex they moved: a corner's correction moves a triangle's three vertices by
+  // weights and could leave one inside the shell (the thin table's top, at its corner).
   if (features_.empty()) return stats_.contacts > 0;
   stats_.contacts += features_.respond(colliders_, sweeps_, m, start_, s, threads);
   for (const std::int32_t i : features_.moved()) {

@@ -20,7 +20,8 @@
 // each edge's midpoint is a contact point too, its correction moving both ends (edges first,
 // then the vertices, which leaves no vertex inside a shell). A box's or a mesh's corners and
 // edges poke through the triangles between the vertices: they are contact points of their own
-// against the triangles, last (sim/contact/feature_contacts.hpp).
+// against the triangles, last (sim/contact/feature_contacts.hpp), and each vertex such a contact
+// moved is responded to once more.
 // Broad phase: per block of vertices, the box around their start and end positions against each
 // collider's box over the substep, so a collider far from the cloth costs one box test per block.
 // Nothing allocates after construction; every vertex is handled alone, so the result is the same
