@@ -84,16 +84,15 @@ std::vector<Vec3d> rk4_positions(int res, double t) {
   return x;
 }
 
-// RMS distance at t of xpbd (in T, 1/60 s, `substeps`; 0: automatic; solver.stretch_slack as
+// RMS distance at t of xpbd (float, 1/60 s, `substeps`; 0: automatic; solver.stretch_slack as
 // `slack`) from `reference`.
-template <class T = float>
 double rms_vs(const std::vector<Vec3d>& reference, int res, double t, int substeps,
               bool slack = true) {
   Scene scene = testing::falling_sheet(res, IntegratorKind::xpbd, 1.0 / 60.0);
   scene.solver.substeps = substeps;
   scene.solver.stretch_slack = slack;
   scene.solver.threads = 2;
-  const auto s = testing::solver<T>(scene);
+  const auto s = testing::solver<float>(scene);
   EXPECT_TRUE(s->advance(t).ok());
   double sum = 0.0;
   for (int i = 0; i < static_cast<int>(s->vertex_count()); ++i)

@@ -293,7 +293,6 @@ void ContactResponse<T>::respond_vertices(const Model<T>& m, State<T>& s, double
                          [&](std::size_t block, std::size_t b, std::size_t e) {
                            BlockResult& r = blocks_[block];
                            if (!r.near) return;
-                           r.contacts = 0;
                            for (std::size_t i = b; i < e; ++i) {
                              double depth = 0.0;
                              if (vertex(i, m, s, h, depth)) {

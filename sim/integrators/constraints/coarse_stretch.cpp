@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim/integrators/constraints/stretch_slack.hpp"
 #include "sim/integrators/constraints/tethers.hpp"
 
 namespace clothlab {
@@ -31,7 +30,7 @@ CoarseStretch<T>::CoarseStretch(const Model<T>& m) {
     if (!stretch_limited(m, c)) continue;
     const int count = coarse_level_count(r.nu, r.nv);
     if (count == 0) continue;
-    Cloth cloth{r.offset, r.nu, r.nv, {}, static_strain(m, c)};
+    Cloth cloth{r.offset, r.nu, r.nv, {}, cloth_slack(m, c)};
     int nu = r.nu, nv = r.nv;
     std::vector<std::int32_t> under(static_cast<std::size_t>(nu) * nv);
     for (std::size_t k = 0; k < under.size(); ++k)
@@ -141,7 +140,7 @@ void project_run(T* x, T* y, T* z, const T* w, std::size_t a0, std::size_t shift
 template <class T>
 void CoarseStretch<T>::set_substep(double h) {
   for (Cloth& c : cloths_) {
-    const double scale = 1.0 + stretch_slack(c.strain, std::max(c.nu, c.nv), h);
+    const double scale = c.slack.scale(h);
     for (Level& l : c.levels)
       for (int o = 0; o < 4; ++o) l.limit[o] = static_cast<T>(double(l.rest[o]) * scale);
   }

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "sim/integrators/constraints/stretch_slack.hpp"
 #include "sim/model/model.hpp"
 
 namespace clothlab {
@@ -56,7 +57,7 @@ class CoarseStretch {
   struct Cloth {
     int offset = 0, nu = 0, nv = 0;
     std::vector<Level> levels;  // finest coarse level first
-    double strain = 0.0;        // static_strain() of the cloth
+    ClothSlack slack;           // of the cloth
   };
   void restrict_positions(Cloth& c, const Vec3Array<T>& pos, const T* inv_mass);
   void project(Level& l);

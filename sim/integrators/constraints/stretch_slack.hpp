@@ -29,4 +29,12 @@ inline double stretch_slack(double static_strain, int side, double h) {
   return kSlackGain * static_strain * beyond / double(side);
 }
 
+// What the slack of one cloth reads of it, kept by each stretch limit that holds the cloth.
+struct ClothSlack {
+  double strain = 0.0;  // static_strain() of the cloth (tethers.hpp)
+  int side = 0;         // its longer side in vertices
+  // 1 + the slack at substep h: a limit holds at rest * scale.
+  double scale(double h) const { return 1.0 + stretch_slack(strain, side, h); }
+};
+
 }  // namespace clothlab

@@ -5,8 +5,6 @@
 #include <limits>
 #include <utility>
 
-#include "sim/integrators/constraints/stretch_slack.hpp"
-
 namespace clothlab {
 
 template <class T>
@@ -26,6 +24,11 @@ double static_strain(const Model<T>& m, std::size_t c) {
   }
   if (!any || !(spring > 0.0)) return std::numeric_limits<double>::infinity();
   return mass * g / double(std::max(1, std::min(r.nu, r.nv))) / spring;
+}
+
+template <class T>
+ClothSlack cloth_slack(const Model<T>& m, std::size_t c) {
+  return {static_strain(m, c), std::max(m.cloths[c].nu, m.cloths[c].nv)};
 }
 
 template <class T>
@@ -72,8 +75,7 @@ Tethers<T>::Tethers(const Model<T>& m) : n_(m.n) {
     Span span;
     span.begin = static_cast<std::size_t>(r.offset);
     span.end = span.begin + static_cast<std::size_t>(r.nu) * static_cast<std::size_t>(r.nv);
-    span.strain = static_strain(m, c);
-    span.side = std::max(r.nu, r.nv);
+    span.slack = cloth_slack(m, c);
     span.shared = cloth_pins[c].size() <= static_cast<std::size_t>(kTetherSlots);
     span.slots = std::min<int>(kTetherSlots, static_cast<int>(cloth_pins[c].size()));
     for (int s = 0; s < span.slots && span.shared; ++s) span.pin[s] = cloth_pins[c][s];
@@ -105,8 +107,7 @@ void Tethers<T>::gather_pins(const Vec3Array<T>& x, const T* inv_mass) {
 
 template <class T>
 void Tethers<T>::set_substep(double h) {
-  for (Span& span : spans_)
-    span.scale = static_cast<T>(1.0 + stretch_slack(span.strain, span.side, h));
+  for (Span& span : spans_) span.scale = static_cast<T>(span.slack.scale(h));
 }
 
 template <class T>
@@ -159,6 +160,8 @@ void Tethers<T>::project_slot(Vec3Array<T>& x, const T* inv_mass, const Span& sp
 
 template double static_strain<float>(const Model<float>&, std::size_t);
 template double static_strain<double>(const Model<double>&, std::size_t);
+template ClothSlack cloth_slack<float>(const Model<float>&, std::size_t);
+template ClothSlack cloth_slack<double>(const Model<double>&, std::size_t);
 template double rest_distance<float>(const Model<float>&, std::size_t, std::size_t);
 template double rest_distance<double>(const Model<double>&, std::size_t, std::size_t);
 template bool stretch_limited<float>(const Model<float>&, std::size_t);

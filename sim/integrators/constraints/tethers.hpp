@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "sim/integrators/constraints/stretch_slack.hpp"
 #include "sim/model/model.hpp"
 
 namespace clothlab {
@@ -31,6 +32,10 @@ inline constexpr double kTetherMaxStrain = 0.01;
 // where it has no structural spring.
 template <class T>
 double static_strain(const Model<T>& m, std::size_t c);
+
+// Cloth c's static strain and longer side, for the slack its stretch limits allow.
+template <class T>
+ClothSlack cloth_slack(const Model<T>& m, std::size_t c);
 
 // The distance between vertices i and j in the built (rest) positions.
 template <class T>
@@ -67,9 +72,8 @@ class Tethers {
     int slots = 0;
     bool shared = false;
     std::int32_t pin[kTetherSlots] = {};
-    double strain = 0.0;  // static_strain() of the cloth
-    int side = 0;         // its longer side in vertices
-    T scale = T(1);       // 1 + the slack at this substep: a tether holds at rest * scale
+    ClothSlack slack;  // of the cloth
+    T scale = T(1);    // slack.scale() at this substep: a tether holds at rest * scale
   };
   void project_slot(Vec3Array<T>& x, const T* inv_mass, const Span& span, int s, std::size_t lo,
                     std::size_t hi) const;
