@@ -19,6 +19,7 @@ foreach(test Multigrid.IterationsStayNearlyFlatAsTheGridGrows ShippedView.ForceA
              cli.trace.diverges_10x.explicit_euler
              ImplicitEuler.MatchesRk4OnTheFallingSheetAtSmallSteps
              SmallSteps.ErrorAtOneSecondFallsAsSubstepsDouble
+             SmallSteps.ErrorInABreezeNeverGrowsWithSubsteps
              LargeStep/LargeStepOrder.SingleSpringIsFirstOrder/vbd)
   string(REGEX MATCH "${regex}" hit "${test}")
   if(NOT hit)
