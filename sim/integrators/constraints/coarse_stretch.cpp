@@ -169,34 +169,50 @@ void CoarseStretch<T>::project_rows(Level& l, int o, int cls) {
 
 // Finer vertex (i, j) lies at coarse (i / 2, j / 2) when both are even, else halfway between two
 // or four coarse vertices: the mean of their displacements (clamped at the far edge of an even
-// side, whose last column or row has no coarse vertex beyond it). Per finer row, the even and
-// the odd columns in one vector loop. Pinned vertices do not move.
+// side, whose last column or row has no coarse vertex beyond it). Per finer row and chunk of
+// coarse columns, the coarse displacements interpolated between the two coarse rows go into a
+// buffer first (one beyond the chunk, clamped), so that the even and the odd columns read
+// contiguous memory (reading column I + 1 clamped, GCC gathered). Pinned vertices do not move.
 template <class T>
 void CoarseStretch<T>::prolong(const Level& c, int nu, int nv, T* x, T* y, T* z, const T* w) {
+  constexpr int kChunk = 256;
   T* target[3] = {x, y, z};
+  const int pairs = nu / 2;  // columns 2I and 2I + 1 with I + 1 < c.nu, or clamped
 #pragma omp for schedule(static)
   for (int j = 0; j < nv; ++j) {
     const int J0 = std::min(j / 2, c.nv - 1), J1 = std::min(J0 + (j & 1), c.nv - 1);
     const std::size_t r0 = static_cast<std::size_t>(J0) * c.nu,
                       r1 = static_cast<std::size_t>(J1) * c.nu;
     const std::size_t f0 = static_cast<std::size_t>(j) * nu;
-    const int pairs = nu / 2;  // columns 2I and 2I + 1 with I + 1 < c.nu, or clamped
     for (int a = 0; a < 3; ++a) {
       const T* __restrict now = c.x.axis(a).data();
       const T* __restrict was = c.x0.axis(a).data();
-      // Coarse column I's displacement, interpolated between the two coarse rows.
-      const auto d = [&](int I) {
-        return T(0.5) * ((now[r0 + I] - was[r0 + I]) + (now[r1 + I] - was[r1 + I]));
-      };
       T* __restrict out = target[a] + f0;
       const T* __restrict wf = w + f0;
+      for (int I0 = 0; I0 < c.nu; I0 += kChunk) {
+        const int n = std::min(kChunk, c.nu - I0), m = std::min(n + 1, c.nu - I0);
+        alignas(64) T d[kChunk + 1];  // coarse column I0 + k's displacement
 #pragma omp simd
-      for (int I = 0; I < pairs; ++I) {
-        const T even = d(I), odd = T(0.5) * (d(I) + d(std::min(I + 1, c.nu - 1)));
-        out[2 * I] += wf[2 * I] > T(0) ? even : T(0);
-        out[2 * I + 1] += wf[2 * I + 1] > T(0) ? odd : T(0);
+        for (int k = 0; k < m; ++k) {
+          const std::size_t I = static_cast<std::size_t>(I0 + k);
+          d[k] = T(0.5) * ((now[r0 + I] - was[r0 + I]) + (now[r1 + I] - was[r1 + I]));
+        }
+        if (m == n) d[n] = d[n - 1];
+        const int count = std::min(n, pairs - I0);
+        T* __restrict o = out + 2 * static_cast<std::size_t>(I0);
+        const T* __restrict wo = wf + 2 * static_cast<std::size_t>(I0);
+#pragma omp simd
+        for (int k = 0; k < count; ++k) {
+          const T even = d[k], odd = T(0.5) * (d[k] + d[k + 1]);
+          o[2 * k] += wo[2 * k] > T(0) ? even : T(0);
+          o[2 * k + 1] += wo[2 * k + 1] > T(0) ? odd : T(0);
+        }
       }
-      if (nu % 2 == 1) out[nu - 1] += wf[nu - 1] > T(0) ? d(c.nu - 1) : T(0);
+      if (nu % 2 == 1) {
+        const std::size_t I = static_cast<std::size_t>(c.nu - 1);
+        const T last = T(0.5) * ((now[r0 + I] - was[r0 + I]) + (now[r1 + I] - was[r1 + I]));
+        out[nu - 1] += wf[nu - 1] > T(0) ? last : T(0);
+      }
     }
   }
 }
