@@ -10,120 +10,29 @@
 //                                               [only=the settings whose label starts so;
 //                                                ending in $, the one so labelled]
 //                                               [precision=float or double]
-#include <algorithm>
-#include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
-#include "bench/suites/lab_scenes.hpp"
+#include "bench/suites/realtime_accuracy.hpp"
 #include "sim/core/passive_openmp.hpp"
 #include "sim/solver.hpp"
 
 namespace clothlab {
 namespace {
 
+using Setting = bench::RealtimeSetting;
 constexpr double kFrame = 1.0 / 60.0;
-constexpr int kHorizonFrames[] = {12, 30, 60};  // 0.2, 0.5 and 1.0 s
-constexpr int kHorizons = 3;
-
-struct Setting {
-  std::string label;
-  IntegratorKind kind;
-  int substeps = 0, iterations = 0;  // 0: automatic / the method's default
-  bool tethers = true, coarse = true;
-  int newton = 0;  // implicit methods: solver.newton_iterations (0: default)
-  LinearSolver linear = LinearSolver::automatic;
-  double newton_tolerance = 0.0;  // implicit methods: solver.newton_tolerance (0: default)
-  double cg_tolerance = 0.0;      // implicit methods: solver.cg_tolerance (0: automatic)
-  bool slack = true;              // xpbd: solver.stretch_slack
-};
-
-Scene sheet(int res, const Setting& s, int threads, Precision precision = Precision::f32) {
-  bench::SheetParams p;
-  p.resolution = res;
-  Scene scene = bench::hanging_sheet(p, s.kind, kFrame);
-  scene.solver.substeps = s.substeps;
-  scene.solver.iterations = s.iterations;
-  scene.solver.tethers = s.tethers;
-  scene.solver.coarse_stretch = s.coarse;
-  scene.solver.stretch_slack = s.slack;
-  scene.solver.newton_iterations = s.newton;
-  scene.solver.linear_solver = s.linear;
-  if (s.newton_tolerance > 0.0) scene.solver.newton_tolerance = s.newton_tolerance;
-  scene.solver.cg_tolerance = s.cg_tolerance;
-  scene.solver.threads = threads;
-  scene.solver.precision = precision;
-  return scene;
-}
-
-std::vector<double> positions(const Solver& solver) {
-  std::vector<double> p;
-  for (std::size_t i = 0; i < solver.vertex_count(); ++i)
-    for (double c : solver.position(static_cast<int>(i))) p.push_back(c);
-  return p;
-}
-
-// Double RK4 at 1e-5 s to each horizon, one after another in one vector (its automatic step's
-// halving changed nothing above 1e-7 m at 256^2 and 0.2 s, docs/solver.md), read from `path`
-// when a run of the same size is there.
-std::vector<double> reference(int res, int threads, const std::string& path) {
-  const std::size_t n = static_cast<std::size_t>(res) * res * 3;
-  std::vector<double> p(kHorizons * n);
-  std::ifstream in(path, std::ios::binary);
-  if (in.read(reinterpret_cast<char*>(p.data()), std::streamsize(p.size() * sizeof(double))))
-    return p;
-  Scene scene = sheet(res, {"rk4", IntegratorKind::rk4}, threads);
-  scene.solver.precision = Precision::f64;
-  scene.solver.dt = 1e-5;
-  auto solver = make_solver(scene);
-  long done = 0;
-  p.clear();
-  for (int frames : kHorizonFrames) {
-    const long steps = std::lround(frames * kFrame / 1e-5);
-    solver->step(steps - done);
-    done = steps;
-    const std::vector<double> now = positions(*solver);
-    p.insert(p.end(), now.begin(), now.end());
-  }
-  const std::string tmp = path + ".tmp";
-  std::ofstream(tmp, std::ios::binary)
-      .write(reinterpret_cast<const char*>(p.data()), std::streamsize(p.size() * sizeof(double)));
-  std::rename(tmp.c_str(), path.c_str());
-  return p;
-}
-
-// Steps `frames` frames of 1/60 s, adding the wall time of each to `times` (s).
-void time_frames(Solver& solver, int frames, std::vector<double>& times) {
-  for (int f = 0; f < frames; ++f) {
-    const auto t0 = std::chrono::steady_clock::now();
-    solver.step(1);
-    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  }
-}
-
-double median(std::vector<double> times) {
-  std::nth_element(times.begin(), times.begin() + long(times.size() / 2), times.end());
-  return times[times.size() / 2];
-}
-
-// The median wall time of `frames` frames of 1/60 s (s).
-double median_frame(Solver& solver, int frames) {
-  std::vector<double> times;
-  time_frames(solver, frames, times);
-  return median(times);
-}
 
 // The largest square sheet a method runs at 60 Hz with its defaults (median of 9 frames after 2,
 // same threads), in steps of 32 vertices a side; prints each size.
 int largest_real_time(const Setting& s, int threads) {
   int largest = 0;
   for (int side = 64; side <= 1024; side += 32) {
-    auto solver = make_solver(sheet(side, s, threads));
+    auto solver = make_solver(bench::realtime_sheet(side, s, threads));
     solver->step(2);
-    const double t = median_frame(*solver, 9);
+    const double t = bench::median_frame_seconds(*solver, 9);
     std::printf("%s at %d^2: %d substeps, %.2f ms per frame\n", s.label.c_str(), side,
                 solver->substeps(), 1e3 * t);
     if (t > kFrame) break;
@@ -132,30 +41,6 @@ int largest_real_time(const Setting& s, int threads) {
   std::printf("largest real-time sheet (%s, %d threads): %d^2\n", s.label.c_str(), threads,
               largest);
   return largest;
-}
-
-// RMS distance of positions `a` from horizon h of the reference `ref`.
-double rms(const std::vector<double>& a, const std::vector<double>& ref, int h) {
-  const double* b = ref.data() + std::size_t(h) * a.size();
-  double sum = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]) * (a[i] - b[i]);
-  return std::sqrt(sum / double(a.size() / 3));
-}
-
-struct Measured {
-  double rms[kHorizons] = {};
-  double frame = 0.0;  // median s a frame over the whole second
-};
-
-Measured measure(Solver& solver, const std::vector<double>& ref) {
-  Measured m;
-  std::vector<double> times;
-  for (int h = 0; h < kHorizons; ++h) {
-    time_frames(solver, kHorizonFrames[h] - int(times.size()), times);
-    m.rms[h] = rms(positions(solver), ref, h);
-  }
-  m.frame = median(times);
-  return m;
 }
 
 }  // namespace
@@ -169,7 +54,9 @@ int main(int argc, char** argv) {
   const std::string csv_path = argc > 3 ? argv[3] : "realtime_accuracy.csv";
   const std::string ref_path =
       argc > 4 ? argv[4] : "out/bench/rk4_" + std::to_string(res) + "_1s.bin";
-  const std::vector<double> ref = reference(res, threads, ref_path);
+  // Double RK4 at 1e-5 s (its automatic step's halving changed nothing above 1e-7 m at 256^2 and
+  // 0.2 s, docs/solver.md), cached: it costs minutes at 256^2.
+  const std::vector<double> ref = bench::realtime_reference(res, threads, 1e-5, ref_path);
   using K = IntegratorKind;
   const std::vector<Setting> settings = {
       {"xpbd auto", K::xpbd},
@@ -231,8 +118,8 @@ int main(int argc, char** argv) {
   for (const Setting& s : settings) {
     const bool exact = !only.empty() && only.back() == '$';
     if (exact ? s.label != only.substr(0, only.size() - 1) : s.label.find(only) != 0) continue;
-    auto solver = make_solver(sheet(res, s, threads, precision));
-    const Measured m = measure(*solver, ref);
+    auto solver = make_solver(bench::realtime_sheet(res, s, threads, precision));
+    const bench::RealtimeMeasured m = bench::measure_realtime(*solver, ref);
     std::printf("%-28s %-9d %-8.1f %-8.1f %-8.1f %.2f", s.label.c_str(), solver->substeps(),
                 1e3 * m.rms[0], 1e3 * m.rms[1], 1e3 * m.rms[2], 1e3 * m.frame);
     const SolveTotals& t = solver->solve_totals();

@@ -21,6 +21,7 @@ std::vector<bench::Table> run_suite(const std::string& name, const bench::SuiteO
   if (name == "rendering") return bench::rendering_suite(o);
   if (name == "backends") return bench::backends_suite(o);
   if (name == "contact") return bench::contact_suite(o);
+  if (name == "realtime") return bench::realtime_suite(o);
   return bench::features_suite(o);
 }
 

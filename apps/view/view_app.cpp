@@ -151,12 +151,13 @@ int ViewApp::run() {
     const double n = static_cast<double>(run_frames_);
     std::printf(
         "clothlab view: %ld frames: %.2f ms/frame, %.2f ms/frame simulation (%.1f steps), "
-        "%.0f %% of real time simulated (%s, %s backend, %zu vertices)\n",
+        "%.0f %% of real time simulated (%s, %s backend, %zu vertices, drawn by %s)\n",
         run_frames_, 1e3 * run_totals_.frame_seconds / n, 1e3 * run_totals_.step_seconds / n,
         double(run_totals_.steps) / n,
         run_totals_.frame_seconds > 0.0 ? 100.0 * run_totals_.simulated / run_totals_.frame_seconds
                                         : 0.0,
-        copies_text().c_str(), backend_name(session_.solver()), session_.solver().vertex_count());
+        copies_text().c_str(), backend_name(session_.solver()), session_.solver().vertex_count(),
+        renderer_->gl_renderer().c_str());
   }
   return 0;
 }

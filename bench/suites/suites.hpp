@@ -25,14 +25,17 @@ std::vector<Table> scaling_suite(const SuiteOptions& options);
 std::vector<Table> features_suite(const SuiteOptions& options);
 // Cloth against cloth: crossing pairs and the cost of triangle contact on the stress scenes.
 std::vector<Table> contact_suite(const SuiteOptions& options);
+// Real time against accuracy at 256x256, xpbd's defaults up to 512x512, and the large sheet in
+// the window (issue 54).
+std::vector<Table> realtime_suite(const SuiteOptions& options);
 // Needs EGL / OpenGL 4.5 (throws vis::GlUnavailable without): headless rendering.
 std::vector<Table> views_suite(const SuiteOptions& options);
 std::vector<Table> rendering_suite(const SuiteOptions& options);
 // Needs EGL / OpenGL 4.3 compute: the CPU solver against the GPU compute backend.
 std::vector<Table> backends_suite(const SuiteOptions& options);
 
-inline constexpr const char* kSuiteNames[] = {"accuracy", "largestep", "stability",
-                                              "scaling",  "features",  "contact",
-                                              "views",    "rendering", "backends"};
+inline constexpr const char* kSuiteNames[] = {"accuracy",  "largestep", "stability", "scaling",
+                                              "features",  "contact",   "realtime",  "views",
+                                              "rendering", "backends"};
 
 }  // namespace clothlab::bench
