@@ -189,14 +189,15 @@ void CoarseStretch<T>::prolong(const Level& c, int nu, int nv, T* x, T* y, T* z,
       const T* __restrict was = c.x0.axis(a).data();
       T* __restrict out = target[a] + f0;
       const T* __restrict wf = w + f0;
+      // Coarse column I's displacement, interpolated between the two coarse rows.
+      const auto displacement = [&](std::size_t I) {
+        return T(0.5) * ((now[r0 + I] - was[r0 + I]) + (now[r1 + I] - was[r1 + I]));
+      };
       for (int I0 = 0; I0 < c.nu; I0 += kChunk) {
         const int n = std::min(kChunk, c.nu - I0), m = std::min(n + 1, c.nu - I0);
         alignas(64) T d[kChunk + 1];  // coarse column I0 + k's displacement
 #pragma omp simd
-        for (int k = 0; k < m; ++k) {
-          const std::size_t I = static_cast<std::size_t>(I0 + k);
-          d[k] = T(0.5) * ((now[r0 + I] - was[r0 + I]) + (now[r1 + I] - was[r1 + I]));
-        }
+        for (int k = 0; k < m; ++k) d[k] = displacement(static_cast<std::size_t>(I0 + k));
         if (m == n) d[n] = d[n - 1];
         const int count = std::min(n, pairs - I0);
         T* __restrict o = out + 2 * static_cast<std::size_t>(I0);
@@ -208,11 +209,8 @@ void CoarseStretch<T>::prolong(const Level& c, int nu, int nv, T* x, T* y, T* z,
           o[2 * k + 1] += wo[2 * k + 1] > T(0) ? odd : T(0);
         }
       }
-      if (nu % 2 == 1) {
-        const std::size_t I = static_cast<std::size_t>(c.nu - 1);
-        const T last = T(0.5) * ((now[r0 + I] - was[r0 + I]) + (now[r1 + I] - was[r1 + I]));
-        out[nu - 1] += wf[nu - 1] > T(0) ? last : T(0);
-      }
+      if (nu % 2 == 1)
+        out[nu - 1] += wf[nu - 1] > T(0) ? displacement(std::size_t(c.nu - 1)) : T(0);
     }
   }
 }
