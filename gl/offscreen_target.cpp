@@ -42,9 +42,16 @@ void OffscreenTarget::bind() const {
   glViewport(0, 0, width_, height_);
 }
 
-void OffscreenTarget::resolve_into(GLuint framebuffer) const {
-  glBlitNamedFramebuffer(msaa_fbo_.get(), framebuffer, 0, 0, width_, height_, 0, 0, width_, height_,
-                         GL_COLOR_BUFFER_BIT, GL_NEAREST);
+void OffscreenTarget::resolve_into(GLuint framebuffer, int width, int height) const {
+  const bool same = width == width_ && height == height_;
+  GLuint source = msaa_fbo_.get();
+  if (samples_ > 1 && !same) {  // a multisampled blit cannot scale
+    glBlitNamedFramebuffer(source, resolve_fbo_.get(), 0, 0, width_, height_, 0, 0, width_, height_,
+                           GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    source = resolve_fbo_.get();
+  }
+  glBlitNamedFramebuffer(source, framebuffer, 0, 0, width_, height_, 0, 0, width, height,
+                         GL_COLOR_BUFFER_BIT, same ? GL_NEAREST : GL_LINEAR);
 }
 
 std::vector<std::uint8_t> OffscreenTarget::read_rgba() {

@@ -20,7 +20,10 @@ class OffscreenTarget {
   // Resolves and reads the image: RGBA8, row 0 at the top.
   std::vector<std::uint8_t> read_rgba();
   // Resolves (or copies) the image into `framebuffer` (a window's: 0) of the same size.
-  void resolve_into(GLuint framebuffer) const;
+  void resolve_into(GLuint framebuffer) const { resolve_into(framebuffer, width_, height_); }
+  // The same into `framebuffer` of another size: resolved first where multisampled, then scaled
+  // with linear filtering (the window's scene drawn at fewer pixels, render_quality.hpp).
+  void resolve_into(GLuint framebuffer, int width, int height) const;
   int width() const { return width_; }
   int height() const { return height_; }
   int samples() const { return samples_; }

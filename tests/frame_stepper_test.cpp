@@ -79,6 +79,49 @@ TEST(FrameStepper, ASolverSlowerThanRealTimeIsCappedAndSaysSo) {
   EXPECT_NEAR(stalled.dropped_seconds, 8.0, 1e-12);
 }
 
+// Where the drawing is quick, the solver may take more than half a frame as long as the frame
+// stays within 1/20 s; where it is slow, half the frame still holds.
+TEST(FrameStepper, TheSolverMayFillAFrameOfATwentiethOfASecond) {
+  const FrameStepper stepper;
+  const double dt = 1.0 / 60.0, step = 0.0098;  // large_sheet in the window on llvmpipe
+  // A 49.4 ms frame that drew for 20 ms: 30 ms left of 50, three steps (half the frame: two).
+  EXPECT_EQ(stepper.cap(0.0494, step, dt, 0.020).seconds, 3 * dt);
+  EXPECT_EQ(stepper.cap(0.0494, step, dt).seconds, 2 * dt);
+  // Drawing 40 ms leaves 10 ms of 50; half of a 60 ms frame is more: three steps.
+  EXPECT_EQ(stepper.cap(0.060, step, dt, 0.040).seconds, 3 * dt);
+  // Drawing 80 ms leaves nothing: half the frame, 9 steps of its 90 ms.
+  EXPECT_EQ(stepper.cap(0.090, 0.005, dt, 0.080).seconds, 9 * dt);
+  EXPECT_EQ(stepper.cap(0.090, 0.005, dt, 0.080).limit, FrameLimit::solver);
+}
+
+// What the solver's budget dropped the next frames ask for again, up to 0.1 s; a stall's or a
+// new solver's dropped time is not owed. A solver that catches up takes the owed steps within
+// its budget: the frames together keep real time.
+TEST(FrameStepper, TimeTheBudgetDroppedIsOwedToTheNextFrames) {
+  const auto owner = make_solver(hanging());
+  Solver& solver = *owner;
+  const FrameStepper stepper;
+  const double dt = solver.dt();
+  // 1 ms a 0.5 ms step: a 0.2 s frame whose drawing took 0.19 s gets 100 steps (half of it),
+  // 50 ms: 150 ms dropped, 100 ms of it owed.
+  const FrameAdvance short_of = stepper.advance(solver, 0.2, stepper.cap(0.2, 1e-3, dt, 0.19));
+  EXPECT_NEAR(short_of.dropped_seconds, 0.15, 1e-12);
+  const double owed = FrameStepper::owed_after(short_of);
+  EXPECT_EQ(owed, FrameStepper::kMaxOwed);
+  // The next frame drew quickly (0.01 s): 40 ms of budget, 40 steps, 20 ms: it asks for its own
+  // 10 ms and the 0.1 s owed, takes 20 ms and still owes 90 ms.
+  const FrameAdvance next = stepper.advance(solver, 0.01 + owed, stepper.cap(0.02, 1e-3, dt, 0.01));
+  EXPECT_EQ(next.steps, 40);
+  EXPECT_NEAR(FrameStepper::owed_after(next), 0.09, 1e-12);
+  // A frame with room for everything owes nothing.
+  EXPECT_EQ(FrameStepper::owed_after(stepper.advance(solver, 0.02, stepper.cap(0.02, 1e-6, dt))),
+            0.0);
+  // A stall's dropped time is given up, not owed.
+  const FrameAdvance stalled = stepper.advance(solver, 10.0, stepper.cap(10.0, 1e-6, dt));
+  EXPECT_EQ(stalled.limit, FrameLimit::stall);
+  EXPECT_EQ(FrameStepper::owed_after(stalled), 0.0);
+}
+
 // A new solver's cost is timed on its first steps (probe_step_cost): the cold first step is left
 // out, the probe stops at the frame's solver share or the step count asked, and a solver that
 // fails (a divergence) stops it at once.

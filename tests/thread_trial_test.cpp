@@ -83,5 +83,30 @@ TEST(ThreadTrial, TriesAgainWhenTheLoadMayHaveChanged) {
   EXPECT_EQ(trial.threads(), 1);
 }
 
+// A side that keeps winning clearly is tried again less often: the wait doubles with each clear
+// win of the same side (10, 20, 40, 80 s, no more), and a close or changed outcome sets it back.
+TEST(ThreadTrial, AClearWinnerIsTriedAgainLessOften) {
+  ThreadTrial trial(0);
+  double now = decide(trial, 1.6e-3, 1e-3, 0.0);  // large_sheet in the window: 16 against 10 ms
+  EXPECT_EQ(trial.retrial_seconds(), ThreadTrial::kRetrialSeconds);
+  for (double wait : {20.0, 40.0, 80.0, 80.0}) {
+    now = run(trial, 0, 1e-3, 100000, now);  // until the next trial starts
+    EXPECT_EQ(trial.threads(), 1);
+    now = decide(trial, 1.6e-3, 1e-3, now);
+    EXPECT_EQ(trial.threads(), 0);
+    EXPECT_EQ(trial.retrial_seconds(), wait);
+  }
+  // A close outcome (the parallel step only 1.2x faster) sets the wait back.
+  now = run(trial, 0, 1e-3, 100000, now);
+  now = decide(trial, 1.2e-3, 1e-3, now);
+  EXPECT_EQ(trial.threads(), 0);
+  EXPECT_EQ(trial.retrial_seconds(), ThreadTrial::kRetrialSeconds);
+  // So does a clear win of the other side.
+  now = decide(trial, 1e-3, 2e-3, run(trial, 0, 1e-3, 100000, now));
+  now = decide(trial, 1e-3, 2e-3, run(trial, 1, 1e-3, 100000, now));
+  EXPECT_EQ(trial.threads(), 1);
+  EXPECT_EQ(trial.retrial_seconds(), 2.0 * ThreadTrial::kRetrialSeconds);
+}
+
 }  // namespace
 }  // namespace clothlab

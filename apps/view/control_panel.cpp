@@ -84,6 +84,10 @@ void quality_editor(ViewSettings& view, const PanelState& state) {
       if (ImGui::Selectable(name, quality == view.quality)) view.quality = quality;
     ImGui::EndCombo();
   }
+  if (chosen == RenderQuality::fast && view.mode != DisplayMode::springs) {
+    ImGui::SliderFloat("window scale", &view.window_scale, 0.25f, 1.0f, "%.2f");
+    ImGui::TextDisabled("scene drawn at %d x %d, scaled up", state.scene_width, state.scene_height);
+  }
   if (state.cloth_stride > 1)
     ImGui::TextDisabled("large cloth drawn at %s", detail_note(state.cloth_stride).c_str());
 }

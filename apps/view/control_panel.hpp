@@ -32,7 +32,8 @@ struct PanelState {
   std::optional<std::string> open_scene;
   std::string gl_renderer;  // GL_RENDERER, for what render.quality = "auto" chose
   int cloth_stride = 1;     // the last frame drew every cloth_stride-th vertex of a large grid
-  bool panel_open = false;  // not collapsed to its title bar last frame
+  int scene_width = 0, scene_height = 0;  // the pixels the last frame drew the scene at
+  bool panel_open = false;                // not collapsed to its title bar last frame
   // The panel's rectangle last frame (window points, origin top-left): the scene is not shaded
   // under it while it is open.
   float panel_x = 0.0f, panel_y = 0.0f, panel_w = 0.0f, panel_h = 0.0f;

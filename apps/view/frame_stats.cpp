@@ -18,9 +18,10 @@ void FrameStats::add(const FrameSample& s) {
   steps_per_frame_ = double(sum_.steps) / double(frames_);
   if (sum_.steps > 0) ms_per_step_ = 1e3 * sum_.step_seconds / double(sum_.steps);
   // Only the solver slows the simulation for long: a stall's or a new solver's first frame
-  // drops time once and is not worth a warning.
-  behind_ = solver_bound_;
+  // drops time once and is not worth a warning, nor a cap whose time later frames made up for
+  // (FrameStepper::owed_after).
   real_time_percent_ = sum_.requested > 0.0 ? 100.0 * sum_.simulated / sum_.requested : 100.0;
+  behind_ = solver_bound_ && real_time_percent_ < kKeptPercent;
   sum_ = FrameSample{};
   frames_ = 0;
   solver_bound_ = false;

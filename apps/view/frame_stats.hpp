@@ -20,6 +20,8 @@ struct FrameSample {
 class FrameStats {
  public:
   static constexpr double kWindowSeconds = 0.5;
+  // Below this share of real time over a window (percent) a capped solver is reported.
+  static constexpr double kKeptPercent = 99.0;
 
   void add(const FrameSample& s);
 

@@ -151,13 +151,14 @@ int ViewApp::run() {
     const double n = static_cast<double>(run_frames_);
     std::printf(
         "clothlab view: %ld frames: %.2f ms/frame, %.2f ms/frame simulation (%.1f steps), "
-        "%.0f %% of real time simulated (%s, %s backend, %zu vertices, drawn by %s)\n",
+        "%.0f %% of real time simulated (%s, %s backend, %zu vertices, scene drawn at %dx%d, "
+        "drawn by %s)\n",
         run_frames_, 1e3 * run_totals_.frame_seconds / n, 1e3 * run_totals_.step_seconds / n,
         double(run_totals_.steps) / n,
         run_totals_.frame_seconds > 0.0 ? 100.0 * run_totals_.simulated / run_totals_.frame_seconds
                                         : 0.0,
         copies_text().c_str(), backend_name(session_.solver()), session_.solver().vertex_count(),
-        renderer_->gl_renderer().c_str());
+        panel_.scene_width, panel_.scene_height, renderer_->gl_renderer().c_str());
   }
   return 0;
 }
@@ -253,17 +254,28 @@ void ViewApp::simulate(double wall_seconds) {
       running && step_cost_ == 0.0 ? time_first_steps(wall_seconds) : StepCostProbe{};
   if (probe.steps > 0) step_cost_ = probe.cost;
   const double probed = double(probe.steps) * dt;  // simulated by the timed steps
-  FrameCap cap = stepper_.cap(wall_seconds, step_cost_, dt);
+  // What the frames spend outside the solver (drawing, events), smoothed as the step's cost is:
+  // the solver may fill a 1/20 s frame beside it.
+  if (last_step_seconds_) {
+    const double other = std::max(0.0, wall_seconds - *last_step_seconds_);
+    other_seconds_ = other_seconds_ ? 0.7 * *other_seconds_ + 0.3 * other : other;
+  }
+  FrameCap cap = stepper_.cap(wall_seconds, step_cost_, dt, other_seconds_);
   cap.seconds = std::max(0.0, cap.seconds - probed);
+  // Without music the frame also asks for what earlier frames' caps dropped (catch_up_); the
+  // music's clock keeps its own time.
+  const double owed = music_.audible() || !running ? 0.0 : catch_up_;
   const double request =
-      waiting ? 0.0 : music_.frame_advance(session_, wall_seconds - probed, cap.seconds);
+      waiting ? 0.0 : music_.frame_advance(session_, wall_seconds - probed + owed, cap.seconds);
   const auto t0 = std::chrono::steady_clock::now();
   const FrameAdvance r = session_.advance(stepper_, request, cap);
+  catch_up_ = running ? FrameStepper::owed_after(r) : 0.0;
   sample.step_seconds =
       probe.seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   sample.steps = probe.steps + r.steps;
+  last_step_seconds_ = sample.step_seconds;
   sample.simulated = session_.solver().time() - before;
-  sample.requested = running ? request + probed : 0.0;
+  sample.requested = running ? std::max(0.0, request - owed) + probed : 0.0;
   sample.limit = r.capped ? r.limit : FrameLimit::none;
   stats_.add(sample);
   error_.after_advance(session_, sample.step_seconds, sample.simulated, wall_seconds);
@@ -518,11 +530,20 @@ void ViewApp::draw(int width, int height) {
     renderer_->update_cloth(fields);
     diagnostics_->update(solver, fields, view_, *renderer_);
   }
-  bind_scene_target(width, height);
-  renderer_->draw(view_, width, height, covered_by_panel(width, height, window_w, window_h));
+  // At fast quality the scene is drawn at fewer pixels and scaled up (render_quality.hpp).
+  const float scale = window_scale(renderer_->quality(view_), view_.mode, view_.window_scale);
+  const int scene_w = std::max(1, int(std::lround(scale * float(width))));
+  const int scene_h = std::max(1, int(std::lround(scale * float(height))));
+  bind_scene_target(scene_w, scene_h, scene_w != width || scene_h != height);
+  // The shadow map scales with the pixels drawn: as many of its texels to a pixel as at 1.
+  ViewSettings drawn = view_;
+  drawn.shadow_map_size = scaled_shadow_map(view_.shadow_map_size, scale);
+  renderer_->draw(drawn, scene_w, scene_h, covered_by_panel(scene_w, scene_h, window_w, window_h));
   panel_.cloth_stride = renderer_->cloth_stride();
+  panel_.scene_width = scene_w;
+  panel_.scene_height = scene_h;
   diagnostics_->draw(view_, *renderer_);
-  if (scene_target_) scene_target_->resolve_into(0);
+  if (scene_target_) scene_target_->resolve_into(0, width, height);
   draw_legends(view_, *diagnostics_, renderer_->strain_range(), error_.panel_bottom());
   if (grab_.pending() && session_.divergence()) grab_.forget();  // nothing sane to pull
   if (grab_.pending()) {
@@ -537,11 +558,12 @@ void ViewApp::draw(int width, int height) {
   imgui_->end_frame();
 }
 
-// Where the scene is drawn: a multisampled target of its own when the render quality asks for
-// MSAA (resolved into the window after), else the window's framebuffer itself.
-void ViewApp::bind_scene_target(int width, int height) {
+// Where the scene is drawn: a target of its own when the render quality asks for MSAA or fewer
+// pixels than the window's (resolved or scaled into the window after), else the window's
+// framebuffer itself.
+void ViewApp::bind_scene_target(int width, int height, bool scaled) {
   const int samples = msaa_samples(renderer_->quality(view_), view_.mode);
-  if (samples <= 1) {
+  if (samples <= 1 && !scaled) {
     scene_target_.reset();
     bind_target(0, width, height);
     return;

@@ -99,7 +99,7 @@ class ViewApp {
   void stop_recording();
   TraceSpec record_spec() const;
   void take_screenshot(const std::string& path, int width, int height);
-  void bind_scene_target(int width, int height);
+  void bind_scene_target(int width, int height, bool scaled);
   void update_title();
   void push();
   void release_pins();
@@ -121,7 +121,7 @@ class ViewApp {
   MusicSync music_;  // the scene's music, and the audio clock while it plays
   MusicPlot music_plot_;
   std::unique_ptr<Renderer> renderer_;
-  std::unique_ptr<OffscreenTarget> scene_target_;  // only while the quality asks for MSAA
+  std::unique_ptr<OffscreenTarget> scene_target_;  // only for MSAA or a scaled scene
   // Only while a probe is on (and for the pick of a Ctrl + drag); sized to the framebuffer.
   std::unique_ptr<FieldPass> field_pass_;
   std::unique_ptr<Diagnostics> diagnostics_;  // colour-by scalar and arrows (what is on)
@@ -142,6 +142,9 @@ class ViewApp {
   FrameStepper stepper_;
   double step_cost_ = 0.0;  // s of wall time per solver step, smoothed; 0: not measured yet
   long costed_build_ = -1;  // the session's build step_cost_ belongs to
+  std::optional<double> last_step_seconds_;  // the solver's wall time in the last frame
+  std::optional<double> other_seconds_;      // a frame's wall time outside the solver, smoothed
+  double catch_up_ = 0.0;  // simulated seconds the last frames' caps dropped, asked for again
   FrameStats stats_;
   FrameSample run_totals_;  // summed over the run from the second frame, printed on exit
   long run_frames_ = 0;

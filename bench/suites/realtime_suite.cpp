@@ -21,7 +21,7 @@ namespace clothlab::bench {
 namespace {
 
 constexpr double kFrame = 1.0 / 60.0;
-constexpr int kWindowFrames = 200;
+constexpr int kWindowFrames = 600;
 
 Table accuracy_table(const SuiteOptions& o) {
   const int res = o.quick ? 32 : 256;
@@ -88,7 +88,7 @@ struct WindowRun {
   bool ok = false;
   std::string output;
   double frame_ms = 0.0, simulation_ms = 0.0, real_time = 0.0;
-  std::string renderer;
+  std::string scene_pixels, renderer;
 };
 
 // `text` as one word for the shell: in single quotes, each of its own as '\''.
@@ -111,14 +111,15 @@ WindowRun run_window(const std::filesystem::path& scene) {
   const int status = pclose(pipe);
   static const std::regex line(
       R"(frames: ([0-9.]+) ms/frame, ([0-9.]+) ms/frame simulation .*, ([0-9.]+) % of real time)"
-      R"( simulated .*drawn by ([^\n]*)\))");
+      R"( simulated .*scene drawn at ([0-9]+x[0-9]+), drawn by ([^\n]*)\))");
   std::smatch m;
   if (status != 0 || !std::regex_search(r.output, m, line)) return r;
   r.ok = true;
   r.frame_ms = std::atof(m[1].str().c_str());
   r.simulation_ms = std::atof(m[2].str().c_str());
   r.real_time = std::atof(m[3].str().c_str());
-  r.renderer = m[4].str();
+  r.scene_pixels = m[4].str();
+  r.renderer = m[5].str();
   return r;
 }
 
@@ -133,6 +134,7 @@ Table window_table(const SuiteOptions& o) {
                "frames a second",
                "ms simulation a frame",
                "% of real time simulated",
+               "scene drawn at",
                "drawn by"};
   const std::filesystem::path scene =
       std::filesystem::path(CLOTHLAB_DEFAULT_SCENE).parent_path() / "large_sheet.toml";
@@ -143,7 +145,7 @@ Table window_table(const SuiteOptions& o) {
     return t;
   }
   t.add({"large_sheet.toml", fixed(r.frame_ms, 1), fixed(1e3 / r.frame_ms, 1),
-         fixed(r.simulation_ms, 1), fixed(r.real_time, 0), r.renderer});
+         fixed(r.simulation_ms, 1), fixed(r.real_time, 0), r.scene_pixels, r.renderer});
   return t;
 }
 

@@ -1,11 +1,13 @@
 // Real time for an interactive view: each frame advances the solver by the wall-clock time since
 // the previous frame, in whole fixed steps (the solver carries the remainder), so the motion is
 // the same at 30 and at 144 frames per second, and on a machine that draws a frame a second it
-// is still real time. A frame may give the solver at most a share of its wall time (kSolverShare;
-// the rest is the drawing's): only a solver slower than that share of real time slows the
-// simulation down, and the frame then says so (FrameLimit::solver). How long the drawing takes
-// never does. A frame that comes after a stall (longer than kMaxFrameSeconds: the window moved,
-// a debugger paused it) makes up for no more than that.
+// is still real time. A frame may give the solver a share of its wall time (kSolverShare; the rest
+// is the drawing's), or more where the frame still stays within kFrameBudget: whatever the drawing
+// leaves of 1/20 s. Only a solver slower than that slows the simulation down, and the frame then
+// says so (FrameLimit::solver). A frame that comes after a stall (longer than kMaxFrameSeconds:
+// the window moved, a debugger paused it) makes up for no more than that. What a frame's cap
+// dropped, up to kMaxOwed, the next frames ask for again (owed_after): a host that holds the
+// solver up for a frame costs no real time where the following frames have room.
 #pragma once
 
 #include <algorithm>
@@ -71,20 +73,37 @@ StepCostProbe probe_step_cost(double budget_seconds, long max_steps, StepOnce&& 
 
 class FrameStepper {
  public:
-  static constexpr double kSolverShare = 0.5;      // of a frame's wall time
+  static constexpr double kSolverShare = 0.5;  // of a frame's wall time
+  // A frame the solver may fill up to: 20 frames a second, where the eye still sees motion and
+  // a drag still follows the mouse. A software renderer drawing a large sheet in 20 ms leaves the
+  // solver 30 ms, three of its 10 ms steps: real time, where half of a 50 ms frame is two.
+  static constexpr double kFrameBudget = 0.05;
   static constexpr double kMaxFrameSeconds = 2.0;  // of wall time one frame makes up for
   static constexpr long kCostSteps = 8;            // steps a new solver's cost is timed on
+  // Simulated time the frames may owe: a few frames' worth. A solver slower than real time owes
+  // it for good; it is never paid at more than a frame's solver budget.
+  static constexpr double kMaxOwed = 0.1;
+
+  // What the frames after `a` ask for beyond their own wall time: the time its solver budget
+  // dropped (not a stall's, not a new solver's first frame), up to kMaxOwed.
+  static double owed_after(const FrameAdvance& a) {
+    return a.limit == FrameLimit::solver ? std::min(kMaxOwed, a.dropped_seconds) : 0.0;
+  }
 
   explicit FrameStepper(double solver_share = kSolverShare,
                         double max_frame_seconds = kMaxFrameSeconds)
       : share_(solver_share), max_frame_(max_frame_seconds) {}
 
   // The cap for a frame that came wall_seconds after the previous one, for a solver whose step
-  // of dt seconds costs seconds_per_step of wall time (0: not known yet).
-  FrameCap cap(double wall_seconds, double seconds_per_step, double dt) const {
+  // of dt seconds costs seconds_per_step of wall time (0: not known yet). other_seconds: the part
+  // of that previous frame spent outside the solver (drawing, events), where known.
+  FrameCap cap(double wall_seconds, double seconds_per_step, double dt,
+               std::optional<double> other_seconds = {}) const {
     const double wall = wall_seconds < max_frame_ ? wall_seconds : max_frame_;
+    double budget = share_ * wall;
+    if (other_seconds) budget = std::max(budget, kFrameBudget - *other_seconds);
     double steps = 1.0;
-    if (seconds_per_step > 0.0) steps = std::max(1.0, std::floor(share_ * wall / seconds_per_step));
+    if (seconds_per_step > 0.0) steps = std::max(1.0, std::floor(budget / seconds_per_step));
     const double by_solver = steps * dt;
     if (by_solver < max_frame_)
       return {by_solver, seconds_per_step > 0.0 ? FrameLimit::solver : FrameLimit::unknown};

@@ -1,5 +1,7 @@
 #include "sim/realtime/thread_trial.hpp"
 
+#include <algorithm>
+
 namespace clothlab {
 
 void ThreadTrial::Tally::add(long s, double t) {
@@ -21,18 +23,27 @@ void ThreadTrial::record(long steps, double seconds, double now) {
       return;
     case Phase::parallel:
       parallel_cost_.add(steps, seconds);
-      if (parallel_cost_.frames < kFramesPerSide) return;
-      chose_parallel_ = parallel_cost_.cost() * (1.0 + kParallelMargin) < serial_.cost();
-      phase_ = Phase::decided;
-      decided_at_ = now;
+      if (parallel_cost_.frames >= kFramesPerSide) decide(now);
       return;
     case Phase::decided:
-      if (now - decided_at_ < kRetrialSeconds) return;
+      if (now - decided_at_ < retrial_) return;
       serial_ = parallel_cost_ = Tally{};
+      last_parallel_ = chose_parallel_;
       chose_parallel_ = false;
       phase_ = Phase::serial;
       return;
   }
+}
+
+void ThreadTrial::decide(double now) {
+  const double serial = serial_.cost(), parallel = parallel_cost_.cost();
+  const bool was_clear = clear_;
+  chose_parallel_ = parallel * (1.0 + kParallelMargin) < serial;
+  clear_ = std::max(serial, parallel) >= kClearRatio * std::min(serial, parallel);
+  const bool again = clear_ && was_clear && chose_parallel_ == last_parallel_;
+  retrial_ = again ? std::min(2.0 * retrial_, kMaxRetrialSeconds) : kRetrialSeconds;
+  phase_ = Phase::decided;
+  decided_at_ = now;
 }
 
 }  // namespace clothlab

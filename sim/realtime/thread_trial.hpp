@@ -4,9 +4,12 @@
 // (8192 vertices) stepped in 2.3-2.8 ms on 2 threads against 0.14 ms on one. So the choice is a
 // trial: a few frames on one thread, as many on the parallel setting, and the faster per step
 // is kept (the parallel one must win by kParallelMargin: it holds more cores); the trial runs
-// again every kRetrialSeconds of wall time, since the machine's load changes. Only the choice is
-// measured: the step itself is the same on any thread count (the solver's sums run in a fixed
-// order), so the trial never changes the motion.
+// again after kRetrialSeconds of wall time, since the machine's load changes. A trial costs the
+// frames it steps on the slower side (large_sheet's 5 frames on one thread drop about 0.1 s of
+// real time in the window): where the same side wins clearly (by kClearRatio) again, the wait
+// before the next one doubles, up to kMaxRetrialSeconds; any other outcome sets it back. Only
+// the choice is measured: the step itself is the same on any thread count (the solver's sums
+// run in a fixed order), so the trial never changes the motion.
 #pragma once
 
 namespace clothlab {
@@ -16,6 +19,8 @@ class ThreadTrial {
   static constexpr int kFramesPerSide = 4;        // measured frames per setting, after a warm-up
   static constexpr double kParallelMargin = 0.1;  // parallel kept if it costs < 1 / 1.1 of serial
   static constexpr double kRetrialSeconds = 10.0;
+  static constexpr double kClearRatio = 1.5;  // the slower side's cost over the faster one's
+  static constexpr double kMaxRetrialSeconds = 80.0;
 
   // `parallel_threads`: the parallel setting (0: every core OpenMP offers).
   explicit ThreadTrial(int parallel_threads = 0) : parallel_(parallel_threads) {}
@@ -29,12 +34,15 @@ class ThreadTrial {
   void restart() { *this = ThreadTrial(parallel_); }
 
   bool trying() const { return phase_ != Phase::decided; }
+  // Wall seconds from the last decision to the next trial.
+  double retrial_seconds() const { return retrial_; }
   // The last trial's seconds per step on one thread and on the parallel setting (0 before one).
   double serial_cost() const { return serial_.cost(); }
   double parallel_cost() const { return parallel_cost_.cost(); }
 
  private:
   enum class Phase { serial, parallel, decided };
+  void decide(double now);  // from both sides' tallies, at wall time `now`
   struct Tally {
     int frames = 0;  // counted, after the warm-up frame
     long steps = 0;
@@ -47,7 +55,10 @@ class ThreadTrial {
   int parallel_;
   Phase phase_ = Phase::serial;
   bool chose_parallel_ = false;
+  bool last_parallel_ = false;  // the decision before this trial
+  bool clear_ = false;          // the last decision was won by kClearRatio
   double decided_at_ = 0.0;
+  double retrial_ = kRetrialSeconds;
   Tally serial_, parallel_cost_;
 };
 

@@ -26,6 +26,13 @@ std::vector<Parameter> render_table() {
            .fallback = "\"auto\"",
            .description = "full, fast (same look, cheaper on a CPU renderer), or auto: fast on a "
                           "software renderer"}),
+      row<&RenderSpec::window_scale>(
+          {.name = "window_scale",
+           .range = between(0.25, 1.0),
+           .range_text = "between 0.25 and 1",
+           .fallback = "0.5",
+           .description = "at fast quality, the window draws the scene at this fraction of its "
+                          "pixels per side and scales it up (the panel stays sharp)"}),
       choice_row<&RenderSpec::shadows, kShadowFilterNames, "shadow filter">(
           {.name = "shadows", .fallback = "\"pcf\"", .description = "the shadow filter"}),
       row<&RenderSpec::shadow_map_size>({.name = "shadow_map_size",

@@ -91,6 +91,9 @@ struct CameraSpec {
 struct RenderSpec {
   int mode = 3;  // the display mode (keys 1-7) the view starts in
   RenderQuality quality = RenderQuality::automatic;
+  // At fast quality the window draws the scene at this fraction of its pixels per side and
+  // scales it up (vis/render/render_quality.hpp); renders keep the size asked for.
+  double window_scale = 0.5;
   ShadowFilter shadows = ShadowFilter::pcf;
   int shadow_map_size = 2048;
   LightSpec light;

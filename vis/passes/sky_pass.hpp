@@ -1,10 +1,10 @@
 // The sky behind everything (docs/rendering.md section 7): Preetham's daylight model (vis/sky/)
 // baked once into a cube map for the sun's direction and the turbidity, drawn as a full-screen
 // triangle at the far plane where nothing else was drawn. Baked again only when the turbidity
-// changes or the sun turns by more than kSkySunToleranceDeg: the spot light's sun lies from the
-// light to the cloth's centre, which moves every frame, and a bake costs about 4 ms on the CPU,
+// changes or the sun turns by more than kSkySunToleranceDeg (a bake costs about 4 ms on the CPU,
 // while turning the sun by a quarter of a degree moves the sky's 8-bit sRGB values by more than
-// one step in at most 0.1 % of its texels (tests/sky_test.cpp).
+// one step in at most 0.1 % of its texels, tests/sky_test.cpp). The renderer places a spot
+// light's sun from the casters' centre as the scene was set, so a moving cloth turns no sun.
 #pragma once
 
 #include <glm/glm.hpp>

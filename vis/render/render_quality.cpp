@@ -1,6 +1,7 @@
 #include "vis/render/render_quality.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace clothlab::vis {
 
@@ -25,6 +26,15 @@ int shadow_map_texels(RenderQuality resolved, int scene_texels) {
 
 int diffusion_atlas_texels(RenderQuality resolved) {
   return resolved == RenderQuality::fast ? 256 : 512;
+}
+
+int scaled_shadow_map(int scene_texels, float scale) {
+  return std::max(256, int(std::lround(float(scene_texels) * scale)));
+}
+
+float window_scale(RenderQuality resolved, DisplayMode mode, float scene_scale) {
+  if (msaa_samples(resolved, mode) > 1) return 1.0f;
+  return std::clamp(scene_scale, 0.25f, 1.0f);
 }
 
 }  // namespace clothlab::vis

@@ -27,5 +27,13 @@ int msaa_samples(RenderQuality resolved, DisplayMode mode);
 int shadow_map_texels(RenderQuality resolved, int scene_texels);
 // - mode 6's diffusion atlas, texels per side: 512 at full, 256 at fast.
 int diffusion_atlas_texels(RenderQuality resolved);
+// - in the window, the scene's pixels per side as a fraction of the window's: render.window_scale
+//   at fast (drawn into a target of that size and scaled up with linear filtering; llvmpipe's
+//   cost is mostly per pixel), 1 at full and in mode 1, whose springs are lines a pixel wide.
+//   Renders (headless) always draw at the size asked for.
+float window_scale(RenderQuality resolved, DisplayMode mode, float scene_scale);
+// - the shadow map's texels per side for a scene drawn at `scale` of the window's pixels: as
+//   many texels to a pixel as at 1 (at least 256, the smallest render.shadow_map_size).
+int scaled_shadow_map(int scene_texels, float scale);
 
 }  // namespace clothlab::vis

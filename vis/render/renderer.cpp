@@ -78,10 +78,16 @@ void Renderer::set_scene(const RenderSpec& spec, const Solver& solver,
   scenery_->set_scene(spec, solver);
   if (colliders.empty()) {
     colliders_.reset();
-    return;
+  } else {
+    if (!colliders_) colliders_ = std::make_unique<ColliderScenery>();
+    colliders_->set_colliders(colliders, solver);
   }
-  if (!colliders_) colliders_ = std::make_unique<ColliderScenery>();
-  colliders_->set_colliders(colliders, solver);
+  anchor_sky();
+}
+
+void Renderer::anchor_sky() {
+  const auto [lo, hi] = casters_box();
+  sky_anchor_ = 0.5f * (lo + hi);
 }
 
 void Renderer::set_cloth(const SolverState& solver) {
@@ -120,7 +126,7 @@ void Renderer::draw_at(const ViewSettings& view, bool fast, int width, int heigh
   const GLuint target = bound_draw_framebuffer();  // the shadow pass binds its own first
   const bool depth_view = view.mode == DisplayMode::light_depth;
   const bool shadows = view.shadows != ShadowFilter::none || depth_view;
-  const glm::vec3 centre = fit_light_to_casters(view);  // the sky's sun lies from here to the light
+  fit_light_to_casters(view);
   // Mode 5 with shadows: the cloth's shadow is coloured by its transmittance.
   const bool translucent =
       view.mode == DisplayMode::translucent && view.shadows != ShadowFilter::none;
@@ -164,7 +170,7 @@ void Renderer::draw_at(const ViewSettings& view, bool fast, int width, int heigh
   if (colliders_) colliders_->draw(shading);
   const bool blended_cloth = view.mode == DisplayMode::translucent;
   if (!blended_cloth) draw_cloth(view, shading, subsurface);
-  const GLuint sky_cube = prepare_sky(view, centre);
+  const GLuint sky_cube = prepare_sky(view);
   floor_.draw(view, empty_vao_.get(), shading, sky_cube);
   draw_sky(view, view_proj);
   if (blended_cloth) draw_cloth(view, shading, subsurface);
@@ -183,9 +189,9 @@ void Renderer::draw_cloth(const ViewSettings& view, const std::string& shading, 
                      subsurface ? diffusion_.get() : nullptr, shading);
 }
 
-// The light fitted to the casters it must see: the cloth, the scenery and the colliders (planes
-// aside). Returns their centre.
-glm::vec3 Renderer::fit_light_to_casters(const ViewSettings& view) {
+// The box of the casters the light must see: the cloth, the scenery and the colliders (planes
+// aside).
+std::pair<glm::vec3, glm::vec3> Renderer::casters_box() const {
   glm::vec3 lo = cloth_.lo(), hi = cloth_.hi();
   if (!scenery_->empty()) {
     lo = glm::min(lo, scenery_->lo());
@@ -195,8 +201,13 @@ glm::vec3 Renderer::fit_light_to_casters(const ViewSettings& view) {
     lo = glm::min(lo, colliders_->lo());
     hi = glm::max(hi, colliders_->hi());
   }
+  return {lo, hi};
+}
+
+// The light fitted to the casters' box of this frame.
+void Renderer::fit_light_to_casters(const ViewSettings& view) {
+  const auto [lo, hi] = casters_box();
   light_ = fit_light(view, lo, hi, view.floor_height, view.shadow_map_size);
-  return 0.5f * (lo + hi);
 }
 
 // The Frame block every pass reads (binding 0); returns the view-projection matrix.
@@ -232,15 +243,21 @@ bool Renderer::run_diffusion(const ViewSettings& view, const std::string& shadin
   return true;
 }
 
-// The sky's cube map for this frame's sun (baked again only when it moved), or 0 without a sky.
-GLuint Renderer::prepare_sky(const ViewSettings& view, glm::vec3 centre) {
+int Renderer::sky_bakes() const {
+  return sky_ ? sky_->bakes() : 0;
+}
+
+// The sky's cube map, or 0 without a sky. A spot light's sun lies towards the light from the
+// casters' centre when the scene was set (sky_anchor_): the sky stays put while the cloth moves.
+GLuint Renderer::prepare_sky(const ViewSettings& view) {
   if (!view.sky) {
     sky_.reset();
     return 0;
   }
   if (timer_) timer_->begin(Pass::sky);
   if (!sky_) sky_ = std::make_unique<SkyPass>();
-  const glm::vec3 sun = light_.directional ? -light_.direction : light_.position - centre;
+  if (!sky_anchor_) anchor_sky();  // drawn without set_scene: the casters as first drawn
+  const glm::vec3 sun = light_.directional ? -light_.direction : light_.position - *sky_anchor_;
   const GLuint cube = sky_->prepare(sun, view.sky_turbidity);
   if (timer_) timer_->begin(Pass::scene);
   return cube;

@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "gl/objects.hpp"
 #include "gl/pass_timer.hpp"
@@ -83,6 +84,8 @@ class Renderer {
   // vis/textures/weave_maps.hpp), until called with nullptr. Tests give a known map to check the
   // tangent frame.
   void set_normal_map(const Image* map);
+  // How often the sky's cube map was baked since the sky was turned on (tests).
+  int sky_bakes() const;
   // The light as the last draw() placed it (tests project through its matrices).
   const LightRig& light() const { return light_; }
   // The springs' strain colour range of the last draw() (+-r), when it drew springs (mode 1, or
@@ -113,7 +116,9 @@ class Renderer {
   GLuint colormap_texture(ColorMap map) const { return colormaps_[static_cast<int>(map)].get(); }
 
  private:
-  glm::vec3 fit_light_to_casters(const ViewSettings& view);
+  std::pair<glm::vec3, glm::vec3> casters_box() const;
+  void anchor_sky();  // sky_anchor_ from the casters as they are now
+  void fit_light_to_casters(const ViewSettings& view);
   glm::mat4 upload_frame(const ViewSettings& view, int width, int height, bool translucent);
   void draw_at(const ViewSettings& view, bool fast, int width, int height,
                const PixelRect& covered);
@@ -121,7 +126,7 @@ class Renderer {
   bool run_diffusion(const ViewSettings& view, const std::string& shading, bool fast);
   void draw_shadow_map(const ViewSettings& view, bool translucent);
   void draw_shadow_casters();
-  GLuint prepare_sky(const ViewSettings& view, glm::vec3 centre);
+  GLuint prepare_sky(const ViewSettings& view);
   void draw_sky(const ViewSettings& view, const glm::mat4& view_proj);
 
   ClothGeometry cloth_;
@@ -137,6 +142,9 @@ class Renderer {
   std::unique_ptr<Scenery> scenery_;
   std::unique_ptr<ColliderScenery> colliders_;  // only while the scene has colliders
   LightRig light_;
+  // Where a spot light's sun is seen from: the casters' centre at set_scene, or at the first draw
+  // without one (prepare_sky). set_cloth keeps it: tests draw one state from two solvers.
+  std::optional<glm::vec3> sky_anchor_;
   std::optional<ScalarRange> strain_range_;
   std::string gl_renderer_;  // GL_RENDERER of this context
   Buffer frame_ubo_;

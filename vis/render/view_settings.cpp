@@ -126,6 +126,7 @@ ViewSettings scene_view(const Scene& scene, const SolverState& solver) {
   s.mode = static_cast<DisplayMode>(r.mode);
   s.shadows = r.shadows;
   s.quality = r.quality;
+  s.window_scale = static_cast<float>(r.window_scale);
   s.shadow_map_size = r.shadow_map_size;
   s.sky = r.sky.enabled;
   s.sky_turbidity = static_cast<float>(r.sky.turbidity);

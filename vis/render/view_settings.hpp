@@ -109,6 +109,7 @@ struct ViewSettings : ScientificViews {
   // render.quality as the scene says it; the renderer resolves automatic for its GL renderer
   // (vis/render/render_quality.hpp).
   RenderQuality quality = RenderQuality::automatic;
+  float window_scale = 0.5f;  // render.window_scale (render_quality.hpp: window_scale)
   OrbitCamera camera;
   // The scene's light ([render.light]): a spot at light_position aimed at light_target (the
   // scene's centre when unset), or a directional light travelling along light_direction.
