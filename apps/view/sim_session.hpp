@@ -71,7 +71,8 @@ class SimSession {
   // small cloth's step: at 32x32, 2 threads took 0.26 ms per symplectic Euler step against
   // 0.04 ms on one, and 18 ms against 1.6 ms per implicit Euler step); from that size up,
   // whichever of one thread and the scene's threads setting measured faster per step in the
-  // frames the window reports (measured_frame; sim/realtime/thread_trial.hpp).
+  // frames the window reports (measured_frame; sim/realtime/thread_trial.hpp), as for a smaller
+  // cloth with cloth contact on, whose pair work is worth threads.
   void toggle_parallel();
   // A frame's steps and their wall seconds, ending at wall-clock time `now` (s): the automatic
   // choice's measurement.
