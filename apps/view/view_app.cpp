@@ -37,6 +37,12 @@ constexpr double kResolutionFactor = 1.25;  // per ] / [ press
 constexpr double kTitleRefreshSeconds = 0.25;
 constexpr double kClickSlopPixels = 4.0;  // a press and release closer than this is a click
 
+// A per-frame measurement smoothed over frames (a frame's few steps are noisy): the last value
+// weighted 0.3.
+double smoothed(double previous, double sample) {
+  return 0.7 * previous + 0.3 * sample;
+}
+
 // The app behind a GLFW window, set with glfwSetWindowUserPointer (no globals).
 ViewApp& app_of(GLFWwindow* window) {
   return *static_cast<ViewApp*>(glfwGetWindowUserPointer(window));
@@ -258,7 +264,7 @@ void ViewApp::simulate(double wall_seconds) {
   // the solver may fill a 1/20 s frame beside it.
   if (last_step_seconds_) {
     const double other = std::max(0.0, wall_seconds - *last_step_seconds_);
-    other_seconds_ = other_seconds_ ? 0.7 * *other_seconds_ + 0.3 * other : other;
+    other_seconds_ = other_seconds_ ? smoothed(*other_seconds_, other) : other;
   }
   FrameCap cap = stepper_.cap(wall_seconds, step_cost_, dt, other_seconds_);
   cap.seconds = std::max(0.0, cap.seconds - probed);
@@ -285,7 +291,7 @@ void ViewApp::simulate(double wall_seconds) {
   // The cost of a step, smoothed over frames (a frame's steps can be few and noisy).
   if (r.steps > 0 && probe.steps == 0) {
     const double cost = sample.step_seconds / double(r.steps);
-    step_cost_ = step_cost_ > 0.0 ? 0.7 * step_cost_ + 0.3 * cost : cost;
+    step_cost_ = step_cost_ > 0.0 ? smoothed(step_cost_, cost) : cost;
   }
   if (frame_index_ > 1) {  // the first frame's wall time includes start-up
     run_totals_.frame_seconds += sample.frame_seconds;

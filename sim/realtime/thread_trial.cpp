@@ -28,8 +28,6 @@ void ThreadTrial::record(long steps, double seconds, double now) {
     case Phase::decided:
       if (now - decided_at_ < retrial_) return;
       serial_ = parallel_cost_ = Tally{};
-      last_parallel_ = chose_parallel_;
-      chose_parallel_ = false;
       phase_ = Phase::serial;
       return;
   }
@@ -37,10 +35,10 @@ void ThreadTrial::record(long steps, double seconds, double now) {
 
 void ThreadTrial::decide(double now) {
   const double serial = serial_.cost(), parallel = parallel_cost_.cost();
-  const bool was_clear = clear_;
+  const bool was_clear = clear_, was_parallel = chose_parallel_;
   chose_parallel_ = parallel * (1.0 + kParallelMargin) < serial;
   clear_ = std::max(serial, parallel) >= kClearRatio * std::min(serial, parallel);
-  const bool again = clear_ && was_clear && chose_parallel_ == last_parallel_;
+  const bool again = clear_ && was_clear && chose_parallel_ == was_parallel;
   retrial_ = again ? std::min(2.0 * retrial_, kMaxRetrialSeconds) : kRetrialSeconds;
   phase_ = Phase::decided;
   decided_at_ = now;

@@ -26,7 +26,11 @@ class ThreadTrial {
   explicit ThreadTrial(int parallel_threads = 0) : parallel_(parallel_threads) {}
 
   // The threads the next frame steps with.
-  int threads() const { return phase_ == Phase::parallel || chose_parallel_ ? parallel_ : 1; }
+  int threads() const {
+    const bool parallel =
+        phase_ == Phase::parallel || (phase_ == Phase::decided && chose_parallel_);
+    return parallel ? parallel_ : 1;
+  }
   // Records the frame just stepped with threads(): `steps` steps in `seconds` of wall time,
   // ending at wall-clock time `now` (s). Frames without steps (paused) do not count.
   void record(long steps, double seconds, double now);
@@ -54,9 +58,8 @@ class ThreadTrial {
 
   int parallel_;
   Phase phase_ = Phase::serial;
-  bool chose_parallel_ = false;
-  bool last_parallel_ = false;  // the decision before this trial
-  bool clear_ = false;          // the last decision was won by kClearRatio
+  bool chose_parallel_ = false;  // the last decision (kept through the next trial)
+  bool clear_ = false;           // the last decision was won by kClearRatio
   double decided_at_ = 0.0;
   double retrial_ = kRetrialSeconds;
   Tally serial_, parallel_cost_;
