@@ -1,5 +1,6 @@
 #include "gl/offscreen_target.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -42,16 +43,43 @@ void OffscreenTarget::bind() const {
   glViewport(0, 0, width_, height_);
 }
 
+GLuint OffscreenTarget::resolved_source(bool same_size) const {
+  if (samples_ <= 1 || same_size) return msaa_fbo_.get();
+  // A multisampled blit cannot scale: resolve at the target's own size first.
+  glBlitNamedFramebuffer(msaa_fbo_.get(), resolve_fbo_.get(), 0, 0, width_, height_, 0, 0, width_,
+                         height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  return resolve_fbo_.get();
+}
+
 void OffscreenTarget::resolve_into(GLuint framebuffer, int width, int height) const {
   const bool same = width == width_ && height == height_;
-  GLuint source = msaa_fbo_.get();
-  if (samples_ > 1 && !same) {  // a multisampled blit cannot scale
-    glBlitNamedFramebuffer(source, resolve_fbo_.get(), 0, 0, width_, height_, 0, 0, width_, height_,
-                           GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    source = resolve_fbo_.get();
+  glBlitNamedFramebuffer(resolved_source(same), framebuffer, 0, 0, width_, height_, 0, 0, width,
+                         height, GL_COLOR_BUFFER_BIT, same ? GL_NEAREST : GL_LINEAR);
+}
+
+// The whole blit each time, scissored to one of the four strips around the rectangle, so every
+// pixel drawn gets exactly the value the unscissored blit gives it.
+void OffscreenTarget::resolve_around(GLuint framebuffer, int width, int height, int x, int y, int w,
+                                     int h) const {
+  x = std::clamp(x, 0, width);
+  y = std::clamp(y, 0, height);
+  w = std::clamp(w, 0, width - x);
+  h = std::clamp(h, 0, height - y);
+  if (w == 0 || h == 0) return resolve_into(framebuffer, width, height);
+  const bool same = width == width_ && height == height_;
+  const GLuint source = resolved_source(same);
+  const int strips[4][4] = {{0, 0, x, height},                  // left of it
+                            {x + w, 0, width - x - w, height},  // right of it
+                            {x, 0, w, y},                       // below it
+                            {x, y + h, w, height - y - h}};     // above it
+  glEnable(GL_SCISSOR_TEST);
+  for (const auto& s : strips) {
+    if (s[2] <= 0 || s[3] <= 0) continue;
+    glScissor(s[0], s[1], s[2], s[3]);
+    glBlitNamedFramebuffer(source, framebuffer, 0, 0, width_, height_, 0, 0, width, height,
+                           GL_COLOR_BUFFER_BIT, same ? GL_NEAREST : GL_LINEAR);
   }
-  glBlitNamedFramebuffer(source, framebuffer, 0, 0, width_, height_, 0, 0, width, height,
-                         GL_COLOR_BUFFER_BIT, same ? GL_NEAREST : GL_LINEAR);
+  glDisable(GL_SCISSOR_TEST);
 }
 
 std::vector<std::uint8_t> OffscreenTarget::read_rgba() {

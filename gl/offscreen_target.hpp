@@ -24,6 +24,10 @@ class OffscreenTarget {
   // The same into `framebuffer` of another size: resolved first where multisampled, then scaled
   // with linear filtering (the window's scene drawn at fewer pixels, render_quality.hpp).
   void resolve_into(GLuint framebuffer, int width, int height) const;
+  // The same, leaving the destination's pixels [x, x + w) x [y, y + h) (from the bottom left)
+  // as they are: what an opaque panel covers is never filtered (a CPU rasteriser pays for every
+  // pixel it scales up).
+  void resolve_around(GLuint framebuffer, int width, int height, int x, int y, int w, int h) const;
   int width() const { return width_; }
   int height() const { return height_; }
   int samples() const { return samples_; }
@@ -33,6 +37,8 @@ class OffscreenTarget {
   Framebuffer msaa_fbo_, resolve_fbo_;
   Renderbuffer msaa_color_, msaa_depth_, resolve_color_;
   std::vector<std::uint8_t> rows_;
+  // The framebuffer the final (scaling) blit reads: the resolved copy where multisampled.
+  GLuint resolved_source(bool same_size) const;
 };
 
 }  // namespace clothlab::vis

@@ -94,32 +94,48 @@ TEST(FrameStepper, TheSolverMayFillAFrameOfATwentiethOfASecond) {
   EXPECT_EQ(stepper.cap(0.090, 0.005, dt, 0.080).limit, FrameLimit::solver);
 }
 
-// What the solver's budget dropped the next frames ask for again, up to 0.1 s; a stall's or a
-// new solver's dropped time is not owed. A solver that catches up takes the owed steps within
-// its budget: the frames together keep real time.
+// What the solver's budget dropped the next frames ask for again, up to kMaxOwed, each a tenth
+// of its own time at most; a stall's or a new solver's dropped time is not owed. A solver that
+// catches up takes the owed steps within its budget: the frames together keep real time.
 TEST(FrameStepper, TimeTheBudgetDroppedIsOwedToTheNextFrames) {
   const auto owner = make_solver(hanging());
   Solver& solver = *owner;
   const FrameStepper stepper;
   const double dt = solver.dt();
   // 1 ms a 0.5 ms step: a 0.2 s frame whose drawing took 0.19 s gets 100 steps (half of it),
-  // 50 ms: 150 ms dropped, 100 ms of it owed.
+  // 50 ms: 150 ms dropped and owed.
   const FrameAdvance short_of = stepper.advance(solver, 0.2, stepper.cap(0.2, 1e-3, dt, 0.19));
   EXPECT_NEAR(short_of.dropped_seconds, 0.15, 1e-12);
-  const double owed = FrameStepper::owed_after(short_of);
-  EXPECT_EQ(owed, FrameStepper::kMaxOwed);
-  // The next frame drew quickly (0.01 s): 40 ms of budget, 40 steps, 20 ms: it asks for its own
-  // 10 ms and the 0.1 s owed, takes 20 ms and still owes 90 ms.
-  const FrameAdvance next = stepper.advance(solver, 0.01 + owed, stepper.cap(0.02, 1e-3, dt, 0.01));
-  EXPECT_EQ(next.steps, 40);
-  EXPECT_NEAR(FrameStepper::owed_after(next), 0.09, 1e-12);
-  // A frame with room for everything owes nothing.
-  EXPECT_EQ(FrameStepper::owed_after(stepper.advance(solver, 0.02, stepper.cap(0.02, 1e-6, dt))),
-            0.0);
-  // A stall's dropped time is given up, not owed.
+  double owed = FrameStepper::owed_after(0.0, 0.0, short_of);
+  EXPECT_NEAR(owed, 0.15, 1e-12);
+  // The next 20 ms frame asks for a tenth of its time beyond it: 2 ms of the 150.
+  const double asked = FrameStepper::catch_up(owed, 0.02);
+  EXPECT_NEAR(asked, 0.002, 1e-15);
+  // It drew quickly (0.01 s) and the host ran the step at 0.2 ms again: 40 ms of budget, room
+  // for its 22 ms; 148 ms still owed.
+  const FrameAdvance next =
+      stepper.advance(solver, 0.02 + asked, stepper.cap(0.02, 0.2e-3, dt, 0.01));
+  EXPECT_EQ(next.steps, 44);
+  EXPECT_FALSE(next.capped);
+  owed = FrameStepper::owed_after(owed, asked, next);
+  EXPECT_NEAR(owed, 0.148, 1e-12);
+  // Frames with room pay it all back, a tenth of their time each: 74 frames of 20 ms.
+  int frames = 0;
+  while (owed > 0.0 && frames < 1000) {
+    const double a = FrameStepper::catch_up(owed, 0.02);
+    owed = FrameStepper::owed_after(
+        owed, a, stepper.advance(solver, 0.02 + a, stepper.cap(0.02, 1e-6, dt, 0.001)));
+    ++frames;
+  }
+  EXPECT_EQ(owed, 0.0);
+  EXPECT_EQ(frames, 74);
+  // The debt stops at kMaxOwed: a solver slower than real time owes that much for good.
+  const FrameAdvance far_short = stepper.advance(solver, 5.0, stepper.cap(1.9, 1e-3, dt, 1.8));
+  EXPECT_EQ(FrameStepper::owed_after(0.5, 0.0, far_short), FrameStepper::kMaxOwed);
+  // A stall's dropped time is given up, and with it what was owed.
   const FrameAdvance stalled = stepper.advance(solver, 10.0, stepper.cap(10.0, 1e-6, dt));
   EXPECT_EQ(stalled.limit, FrameLimit::stall);
-  EXPECT_EQ(FrameStepper::owed_after(stalled), 0.0);
+  EXPECT_EQ(FrameStepper::owed_after(0.5, 0.0, stalled), 0.0);
 }
 
 // A new solver's cost is timed on its first steps (probe_step_cost): the cold first step is left

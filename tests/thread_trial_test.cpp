@@ -69,6 +69,22 @@ TEST(ThreadTrial, SkipsWarmUpAndPausedFrames) {
   EXPECT_EQ(trial.threads(), 0);
 }
 
+// A host that pauses the process for one frame of a side does not decide the trial: each side
+// counts its fastest frame. large_sheet in the window: serial 16 ms a step, parallel 10 ms with
+// one frame of four held up to 30 ms, whose mean (15 ms) would have kept one thread.
+TEST(ThreadTrial, AFrameTheHostHeldUpDoesNotDecide) {
+  ThreadTrial trial(0);
+  trial.record(1, 20e-3, 0.0);  // serial warm-up
+  for (int f = 0; f < ThreadTrial::kFramesPerSide; ++f) trial.record(2, 32e-3, 0.0);
+  ASSERT_EQ(trial.threads(), 0);
+  trial.record(2, 40e-3, 0.0);  // parallel warm-up
+  for (double seconds : {20e-3, 20e-3, 60e-3, 20e-3}) trial.record(2, seconds, 0.0);
+  EXPECT_FALSE(trial.trying());
+  EXPECT_DOUBLE_EQ(trial.parallel_cost(), 10e-3);
+  EXPECT_EQ(trial.threads(), 0);
+  EXPECT_EQ(trial.retrial_seconds(), ThreadTrial::kRetrialSeconds);  // a first clear win
+}
+
 // The load changes: after kRetrialSeconds the trial runs again and follows the new costs.
 TEST(ThreadTrial, TriesAgainWhenTheLoadMayHaveChanged) {
   ThreadTrial trial(0);

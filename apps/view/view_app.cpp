@@ -270,12 +270,13 @@ void ViewApp::simulate(double wall_seconds) {
   cap.seconds = std::max(0.0, cap.seconds - probed);
   // Without music the frame also asks for what earlier frames' caps dropped (catch_up_); the
   // music's clock keeps its own time.
-  const double owed = music_.audible() || !running ? 0.0 : catch_up_;
+  const double owed =
+      music_.audible() || !running ? 0.0 : FrameStepper::catch_up(catch_up_, wall_seconds);
   const double request =
       waiting ? 0.0 : music_.frame_advance(session_, wall_seconds - probed + owed, cap.seconds);
   const auto t0 = std::chrono::steady_clock::now();
   const FrameAdvance r = session_.advance(stepper_, request, cap);
-  catch_up_ = running ? FrameStepper::owed_after(r) : 0.0;
+  catch_up_ = running && !music_.audible() ? FrameStepper::owed_after(catch_up_, owed, r) : 0.0;
   sample.step_seconds =
       probe.seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   sample.steps = probe.steps + r.steps;
@@ -549,7 +550,10 @@ void ViewApp::draw(int width, int height) {
   panel_.scene_width = scene_w;
   panel_.scene_height = scene_h;
   diagnostics_->draw(view_, *renderer_);
-  if (scene_target_) scene_target_->resolve_into(0, width, height);
+  if (scene_target_) {  // the opaque panel covers its rectangle: nothing is scaled up there
+    const vis::PixelRect panel = covered_by_panel(width, height, window_w, window_h);
+    scene_target_->resolve_around(0, width, height, panel.x, panel.y, panel.width, panel.height);
+  }
   draw_legends(view_, *diagnostics_, renderer_->strain_range(), error_.panel_bottom());
   if (grab_.pending() && session_.divergence()) grab_.forget();  // nothing sane to pull
   if (grab_.pending()) {

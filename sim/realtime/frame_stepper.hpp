@@ -6,8 +6,10 @@
 // leaves of 1/20 s. Only a solver slower than that slows the simulation down, and the frame then
 // says so (FrameLimit::solver). A frame that comes after a stall (longer than kMaxFrameSeconds:
 // the window moved, a debugger paused it) makes up for no more than that. What a frame's cap
-// dropped, up to kMaxOwed, the next frames ask for again (owed_after): a host that holds the
-// solver up for a frame costs no real time where the following frames have room.
+// dropped, up to kMaxOwed, the next frames ask for again (catch_up, owed_after), a tenth of their
+// own time at most: a host that holds the solver up for a few frames, or the thread trial's
+// frames on one thread, cost no real time where the following frames have room, and the motion
+// never runs visibly fast while they make it up.
 #pragma once
 
 #include <algorithm>
@@ -80,14 +82,24 @@ class FrameStepper {
   static constexpr double kFrameBudget = 0.05;
   static constexpr double kMaxFrameSeconds = 2.0;  // of wall time one frame makes up for
   static constexpr long kCostSteps = 8;            // steps a new solver's cost is timed on
-  // Simulated time the frames may owe: a few frames' worth. A solver slower than real time owes
-  // it for good; it is never paid at more than a frame's solver budget.
-  static constexpr double kMaxOwed = 0.1;
+  // Simulated time the frames may owe. A solver slower than real time owes it for good.
+  static constexpr double kMaxOwed = 1.0;
+  // The most a frame asks for of what is owed, as a share of its own wall time: the motion runs
+  // at most 10 % fast while the frames catch up, and the catching up never exceeds a frame's
+  // solver budget (the cap).
+  static constexpr double kCatchUpRate = 0.1;
 
-  // What the frames after `a` ask for beyond their own wall time: the time its solver budget
-  // dropped (not a stall's, not a new solver's first frame), up to kMaxOwed.
-  static double owed_after(const FrameAdvance& a) {
-    return a.limit == FrameLimit::solver ? std::min(kMaxOwed, a.dropped_seconds) : 0.0;
+  // What a frame of wall_seconds asks for beyond its own time, of `owed`.
+  static double catch_up(double owed, double wall_seconds) {
+    return std::min(owed, kCatchUpRate * std::max(0.0, wall_seconds));
+  }
+  // What the frames owe after one that asked for `asked` of `owed` beyond its own time and
+  // advanced as `a`: the rest of the debt and whatever its solver budget dropped, up to kMaxOwed.
+  // A stall gives everything up, and so does a new solver's first frame (its cost unknown).
+  static double owed_after(double owed, double asked, const FrameAdvance& a) {
+    if (a.limit == FrameLimit::stall || a.limit == FrameLimit::unknown) return 0.0;
+    const double dropped = a.limit == FrameLimit::solver ? a.dropped_seconds : 0.0;
+    return std::min(kMaxOwed, std::max(0.0, owed - asked) + dropped);
   }
 
   explicit FrameStepper(double solver_share = kSolverShare,

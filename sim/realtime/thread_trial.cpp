@@ -9,9 +9,9 @@ void ThreadTrial::Tally::add(long s, double t) {
     warmed = true;
     return;
   }
+  const double cost = t / double(s);
+  best = frames == 0 ? cost : std::min(best, cost);
   ++frames;
-  steps += s;
-  seconds += t;
 }
 
 void ThreadTrial::record(long steps, double seconds, double now) {
