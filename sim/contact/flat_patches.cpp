@@ -16,6 +16,21 @@ namespace {
 using V3 = Eigen::Vector3d;
 using V2 = Eigen::Vector2d;
 
+// The three Bernstein coefficients of a moving triangle's normal along the axis (a, its edges
+// e and f from its first vertex at x0 and at x1), each against the bound: axis . (e x f) =
+// e . (f x axis). In the solver's scalar; one lane a triangle in block_clears.
+template <class T>
+[[gnu::always_inline]] inline bool coefficients_clear(T e0x, T e0y, T e0z, T f0x, T f0y, T f0z,
+                                                      T e1x, T e1y, T e1z, T f1x, T f1y, T f1z,
+                                                      T ax, T ay, T az, T bound) {
+  const T g0x = f0y * az - f0z * ay, g0y = f0z * ax - f0x * az, g0z = f0x * ay - f0y * ax;
+  const T g1x = f1y * az - f1z * ay, g1y = f1z * ax - f1x * az, g1z = f1x * ay - f1y * ax;
+  const T c0 = e0x * g0x + e0y * g0y + e0z * g0z;
+  const T c1 = e1x * g1x + e1y * g1y + e1z * g1z;
+  const T cm = T(0.5) * ((e0x * g1x + e0y * g1y + e0z * g1z) + (e1x * g0x + e1y * g0y + e1z * g0z));
+  return (c0 >= bound) & (c1 >= bound) & (cm >= bound);
+}
+
 template <class T>
 V3 normal_at(const std::array<int, 3>& t, const Vec3Array<T>& x) {
   const V3 a = load3(x, std::size_t(t[0]));
@@ -35,6 +50,9 @@ FlatPatches<T>::FlatPatches(const TriangleBvh& bvh, const SurfaceFeatures& f,
   node_normal_.assign(bvh.node_count(), V3::Zero());
   patches_.reserve(bvh.node_count());
   work_.reserve(f.triangles.size());
+  for (auto& v : work_vertex_) v.reserve(f.triangles.size());
+  for (auto& a : work_axis_) a.reserve(f.triangles.size());
+  work_bound_.reserve(f.triangles.size());
   patch_of_.assign(f.triangles.size(), -1);
   block_ok_.assign(block_count(f.triangles.size()), 1);
   block_failure_.assign(block_count(f.triangles.size()), 0);
@@ -51,6 +69,9 @@ void FlatPatches<T>::clear() {
   for (const Work& w : work_) patch_of_[std::size_t(w.triangle)] = -1;
   patches_.clear();
   work_.clear();
+  for (auto& v : work_vertex_) v.clear();
+  for (auto& a : work_axis_) a.clear();
+  work_bound_.clear();
 }
 
 // Each node's normals summed at x (its axis), bottom-up: children come after their parents.
@@ -104,7 +125,7 @@ void FlatPatches<T>::visit(int node, std::size_t hint, const TriangleBvh& bvh,
     } else {
       failed = first + first_failure(size, threads, fails);
       if (failed == first + size && rim_simple(node, axis, x0, x1, rims_[0])) {
-        choose_node(node, axis, begin, size);
+        choose_node(node, axis, f, begin, size);
         return;
       }
     }
@@ -129,13 +150,21 @@ std::size_t FlatPatches<T>::first_failure(std::size_t size, int threads, const F
 }
 
 template <class T>
-void FlatPatches<T>::choose_node(int node, const V3& axis, const int* begin, std::size_t size) {
+void FlatPatches<T>::choose_node(int node, const V3& axis, const SurfaceFeatures& f,
+                                 const int* begin, std::size_t size) {
   chosen_[std::size_t(node)] = 1;
   const auto patch = std::int32_t(patches_.size());
   patches_.push_back({node, axis, axis.cast<T>()});
+  const Axis axis_t = axis.cast<T>();
   for (std::size_t k = 0; k < size; ++k) {
+    const auto t = std::size_t(begin[k]);
     work_.push_back({begin[k], patch});
-    patch_of_[std::size_t(begin[k])] = patch;
+    patch_of_[t] = patch;
+    for (std::size_t j = 0; j < 3; ++j) {
+      work_vertex_[j].push_back(f.triangles[t][j]);
+      work_axis_[j].push_back(axis_t[long(j)]);
+    }
+    work_bound_.push_back(T(kKeepBound) * rest_area2_[t]);
   }
 }
 
@@ -145,14 +174,7 @@ bool FlatPatches<T>::still_flat(const SurfaceFeatures& f, const Vec3Array<T>& x0
   if (patches_.empty()) return true;
   for_each_block_indexed(work_.size(), contact_threads(work_.size(), threads),
                          [&](std::size_t b, std::size_t lo, std::size_t hi) {
-                           std::uint8_t ok = 1;
-                           for (std::size_t k = lo; k < hi && ok; ++k) {
-                             const auto t = std::size_t(work_[k].triangle);
-                             ok = clears(f.triangles[t],
-                                         patches_[std::size_t(work_[k].patch)].axis_t,
-                                         T(kKeepBound) * rest_area2_[t], x0, x1);
-                           }
-                           block_ok_[b] = ok;
+                           block_ok_[b] = block_clears(lo, hi, x0, x1) ? 1 : 0;
                          });
   if (!std::all_of(block_ok_.begin(), block_ok_.begin() + long(block_count(work_.size())),
                    [](std::uint8_t ok) { return ok != 0; }))
@@ -194,9 +216,36 @@ bool FlatPatches<T>::clears(const std::array<int, 3>& t, const Axis& axis, T bou
   const Axis a0 = at(x0, t[0]), a1 = at(x1, t[0]);
   const Axis e0 = at(x0, t[1]) - a0, f0 = at(x0, t[2]) - a0;
   const Axis e1 = at(x1, t[1]) - a1, f1 = at(x1, t[2]) - a1;
-  // axis . (e x f) = e . (f x axis)
-  const Axis g0 = f0.cross(axis), g1 = f1.cross(axis);
-  return e0.dot(g0) >= bound && e1.dot(g1) >= bound && T(0.5) * (e0.dot(g1) + e1.dot(g0)) >= bound;
+  return coefficients_clear(e0.x(), e0.y(), e0.z(), f0.x(), f0.y(), f0.z(), e1.x(), e1.y(), e1.z(),
+                            f1.x(), f1.y(), f1.z(), axis.x(), axis.y(), axis.z(), bound);
+}
+
+template <class T>
+bool FlatPatches<T>::block_clears(std::size_t lo, std::size_t hi, const Vec3Array<T>& x0,
+                                  const Vec3Array<T>& x1) const {
+  const std::int32_t* __restrict va = work_vertex_[0].data();
+  const std::int32_t* __restrict vb = work_vertex_[1].data();
+  const std::int32_t* __restrict vc = work_vertex_[2].data();
+  const T* __restrict ax = work_axis_[0].data();
+  const T* __restrict ay = work_axis_[1].data();
+  const T* __restrict az = work_axis_[2].data();
+  const T* __restrict bound = work_bound_.data();
+  const T* __restrict px = x0.x.data();
+  const T* __restrict py = x0.y.data();
+  const T* __restrict pz = x0.z.data();
+  const T* __restrict qx = x1.x.data();
+  const T* __restrict qy = x1.y.data();
+  const T* __restrict qz = x1.z.data();
+  int ok = 1;
+#pragma omp simd reduction(& : ok)
+  for (std::size_t k = lo; k < hi; ++k) {
+    const std::int32_t a = va[k], b = vb[k], c = vc[k];
+    ok &= int(coefficients_clear(px[b] - px[a], py[b] - py[a], pz[b] - pz[a], px[c] - px[a],
+                                 py[c] - py[a], pz[c] - pz[a], qx[b] - qx[a], qy[b] - qy[a],
+                                 qz[b] - qz[a], qx[c] - qx[a], qy[c] - qy[a], qz[c] - qz[a], ax[k],
+                                 ay[k], az[k], bound[k]));
+  }
+  return ok != 0;
 }
 
 // Whether the node's rim, projected onto the plane across the axis, stays clear of itself over

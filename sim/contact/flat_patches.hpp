@@ -79,11 +79,16 @@ class FlatPatches {
              const Vec3Array<T>& x0, const Vec3Array<T>& x1, int threads);
   template <class Fails>
   std::size_t first_failure(std::size_t size, int threads, const Fails& fails);
-  void choose_node(int node, const Eigen::Vector3d& axis, const int* begin, std::size_t size);
+  void choose_node(int node, const Eigen::Vector3d& axis, const SurfaceFeatures& f,
+                   const int* begin, std::size_t size);
   void node_normals(const TriangleBvh& bvh, const SurfaceFeatures& f, const Vec3Array<T>& x,
                     int threads);
   bool clears(const std::array<int, 3>& t, const Axis& axis, T bound, const Vec3Array<T>& x0,
               const Vec3Array<T>& x1) const;
+  // Whether the chosen triangles [lo, hi) of work_ all clear their keep bound (clears(), one
+  // vector lane a triangle: no early exit, the block fails or passes as a whole).
+  bool block_clears(std::size_t lo, std::size_t hi, const Vec3Array<T>& x0,
+                    const Vec3Array<T>& x1) const;
   bool rim_simple(int node, const Eigen::Vector3d& axis, const Vec3Array<T>& x0,
                   const Vec3Array<T>& x1, std::vector<RimEdge>& rim) const;
   // Whether every patch's rim stays simple (rim_simple), the patches shared among the threads.
@@ -96,7 +101,12 @@ class FlatPatches {
   std::vector<std::uint8_t> chosen_;          // per node
   std::vector<Eigen::Vector3d> node_normal_;  // per node: its triangles' normals summed (x1)
   std::vector<Patch> patches_;
-  std::vector<Work> work_;                  // the chosen patches' triangles
+  std::vector<Work> work_;  // the chosen patches' triangles
+  // The same, as the test every substep reads them: each triangle's vertices, its patch's axis
+  // and its keep bound, one array each.
+  std::array<std::vector<std::int32_t>, 3> work_vertex_;
+  std::array<std::vector<T>, 3> work_axis_;
+  std::vector<T> work_bound_;
   std::vector<std::int32_t> patch_of_;      // per triangle: its chosen patch, or -1
   std::vector<std::uint8_t> block_ok_;      // per block of a parallel test
   std::vector<std::size_t> block_failure_;  // per block: its first failing triangle
