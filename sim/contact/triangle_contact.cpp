@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <type_traits>
 
 #include "sim/contact/ccd.hpp"
 #include "sim/contact/intersections.hpp"
@@ -289,17 +290,44 @@ StraySummary TriangleContact<T>::deviations(const Vec3Array<T>& x, const RigidFi
                                             int threads) {
   const std::size_t n = xc_.size(), blocks = block_count(n);
   const double slack = (1.0 - strays_.shrink) * 0.5 * thickness_;
+  const Eigen::Matrix3d& r = fit.rotation;
+  const double shrink = strays_.shrink;
   for_each_block_indexed(
       n, contact_threads(n, threads), [&](std::size_t b, std::size_t lo, std::size_t hi) {
+        // One vector lane a vertex: the fit's terms as scalars, the arrays as plain pointers.
+        const T* __restrict px = x.x.data(), * __restrict py = x.y.data(), * __restrict pz = x.z.data();
+        const T *__restrict cx = xc_.x.data(), *__restrict cy = xc_.y.data(),
+                *__restrict cz = xc_.z.data();
+        float* __restrict out = dev.data();
+        const float* __restrict before = also ? also->data() : nullptr;
+        const float* __restrict allow = strays_.allow.data();
+        const double f0 = fit.from.x(), f1 = fit.from.y(), f2 = fit.from.z();
+        const double t0 = fit.to.x(), t1 = fit.to.y(), t2 = fit.to.z();
+        const double r00 = r(0, 0), r01 = r(0, 1), r02 = r(0, 2), r10 = r(1, 0), r11 = r(1, 1),
+                     r12 = r(1, 2), r20 = r(2, 0), r21 = r(2, 1), r22 = r(2, 2);
         double most = 0.0, excess = -INFINITY;
-        for (std::size_t i = lo; i < hi; ++i) {
-          const double d =
-              (load3(x, i) - fit.to - fit.rotation * (load3(xc_, i) - fit.from)).norm();
-          dev[i] = float(d * (1.0 + 1e-6) + 1e-12);  // rounded up
-          most = std::max(most, d);
-          const float moved = also ? std::max(dev[i], (*also)[i]) : dev[i];
-          excess =
-              std::max(excess, double(moved) + slack - strays_.shrink * double(strays_.allow[i]));
+        const auto sweep = [&](auto with_before) {
+#pragma omp simd reduction(max : most, excess)
+          for (std::size_t i = lo; i < hi; ++i) {
+            const double v0 = double(cx[i]) - f0, v1 = double(cy[i]) - f1, v2 = double(cz[i]) - f2;
+            const double e0 = (double(px[i]) - t0) - (r00 * v0 + r01 * v1 + r02 * v2);
+            const double e1 = (double(py[i]) - t1) - (r10 * v0 + r11 * v1 + r12 * v2);
+            const double e2 = (double(pz[i]) - t2) - (r20 * v0 + r21 * v1 + r22 * v2);
+            const double d = std::sqrt(e0 * e0 + e1 * e1 + e2 * e2);
+            const float up = float(d * (1.0 + 1e-6) + 1e-12);  // rounded up
+            out[i] = up;
+            most = most < d ? d : most;  // std::max's choice, NaN included
+            float moved = up;
+            if constexpr (decltype(with_before)::value)
+              moved = moved < before[i] ? before[i] : moved;
+            const double over = double(moved) + slack - shrink * double(allow[i]);
+            excess = excess < over ? over : excess;
+          }
+        };
+        if (before) {
+          sweep(std::true_type{});
+        } else {
+          sweep(std::false_type{});
         }
         block_sums_[2 * b] = most;
         block_sums_[2 * b + 1] = excess;
