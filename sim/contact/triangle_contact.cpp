@@ -93,7 +93,8 @@ std::array<double, 4> closest_weights(bool edge_edge, const std::array<V3, 4>& x
   return {1.0, -c.w[0], -c.w[1], -c.w[2]};
 }
 
-V3 combine(const std::array<double, 4>& w, const std::array<V3, 4>& x) {
+[[gnu::always_inline]] inline V3 combine(const std::array<double, 4>& w,
+                                         const std::array<V3, 4>& x) {
   return w[0] * x[0] + w[1] * x[1] + w[2] * x[2] + w[3] * x[3];
 }
 
@@ -121,6 +122,25 @@ bool sides_within(bool edge_edge, const std::array<V3, 4>& lo, const std::array<
     hi_q = hi_q.cwiseMax(hi[k]);
   }
   return (lo_p.array() <= hi_q.array() + d).all() && (lo_q.array() <= hi_p.array() + d).all();
+}
+
+// sides_within where each vertex spans only its own position (the pushes' and the proximity
+// pass's test at one moment): the same answer, NaN included, one axis at a time.
+bool points_within(bool edge_edge, const std::array<V3, 4>& x, double d) {
+  for (long a = 0; a < 3; ++a) {
+    double lo_p = x[0][a], hi_p = lo_p, lo_q = x[3][a], hi_q = lo_q;
+    if (edge_edge) {
+      lo_p = std::min(lo_p, x[1][a]);
+      hi_p = std::max(hi_p, x[1][a]);
+      lo_q = std::min(lo_q, x[2][a]);
+      hi_q = std::max(hi_q, x[2][a]);
+    } else {
+      lo_q = std::min(std::min(lo_q, x[1][a]), x[2][a]);
+      hi_q = std::max(std::max(hi_q, x[1][a]), x[2][a]);
+    }
+    if (!(lo_p <= hi_q + d) || !(lo_q <= hi_p + d)) return false;
+  }
+  return true;
 }
 
 // The cloth of each vertex and of each triangle (the tree keeps the cloths in their own subtrees,
@@ -618,7 +638,7 @@ typename TriangleContact<T>::FloatBox TriangleContact<T>::point_box(int v) const
 template <class T>
 bool TriangleContact<T>::needs_push(const Pair& p, const Vec3Array<T>& x) const {
   const std::array<V3, 4> x1 = gather(x, p.v);
-  if (!sides_within(p.edge_edge, x1, x1, thickness_)) return false;
+  if (!points_within(p.edge_edge, x1, thickness_)) return false;
   const std::array<double, 4> w = closest_weights(p.edge_edge, x1);
   const V3 r1 = combine(w, x1);
   return r1.squaredNorm() < thickness_ * thickness_ || r1.dot(combine(w, gather(x0_, p.v))) <= 0.0;
@@ -633,7 +653,7 @@ bool TriangleContact<T>::push_apart(const Model<T>& m, State<T>& s, const Pair& 
   const std::array<V3, 4> x = gather(s.pos, p.v);
   // Farther apart than the thickness along some axis: nothing to do (most candidates). A pair
   // that passed through each other by more than that is the fail-safe's.
-  if (!sides_within(p.edge_edge, x, x, thickness_)) return false;
+  if (!points_within(p.edge_edge, x, thickness_)) return false;
   const std::array<double, 4> w = closest_weights(p.edge_edge, x);
   const V3 r1 = combine(w, x);
   const double th = thickness_;
