@@ -144,7 +144,8 @@ class ViewApp {
   long costed_build_ = -1;  // the session's build step_cost_ belongs to
   std::optional<double> last_step_seconds_;  // the solver's wall time in the last frame
   std::optional<double> other_seconds_;      // a frame's wall time outside the solver, smoothed
-  double catch_up_ = 0.0;  // simulated seconds the last frames' caps dropped, asked for again
+  // Simulated seconds the frames' caps dropped and the frames still owe (FrameStepper::catch_up).
+  double catch_up_ = 0.0;
   FrameStats stats_;
   FrameSample run_totals_;  // summed over the run from the second frame, printed on exit
   long run_frames_ = 0;
