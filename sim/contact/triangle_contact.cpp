@@ -336,7 +336,7 @@ StraySummary TriangleContact<T>::deviations(const Vec3Array<T>& x, const RigidFi
             const double d = std::sqrt(e0 * e0 + e1 * e1 + e2 * e2);
             const float up = float(d * (1.0 + 1e-6) + 1e-12);  // rounded up
             out[i] = up;
-            most = most < d ? d : most;  // std::max's choice, NaN included
+            most = most < d ? d : most;  // std::max's choice within a lane
             float moved = up;
             if constexpr (decltype(with_before)::value)
               moved = moved < before[i] ? before[i] : moved;

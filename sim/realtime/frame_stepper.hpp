@@ -9,7 +9,7 @@
 // dropped, up to kMaxOwed, the next frames ask for again (catch_up, owed_after), a tenth of their
 // own time at most: a host that holds the solver up for a few frames, or the thread trial's
 // frames on one thread, cost no real time where the following frames have room, and the motion
-// never runs visibly fast while they make it up.
+// runs at most 10 % fast while they make it up.
 #pragma once
 
 #include <algorithm>

@@ -49,8 +49,8 @@ class ThreadTrial {
   void decide(double now);  // from both sides' tallies, at wall time `now`
   // A side's cost is its fastest counted frame's seconds per step: a host that pauses the
   // process adds time to some frames and never takes any away, so the least is the step's own
-  // cost (large_sheet in the window: one paused frame of four made the parallel side's mean
-  // 13.8-14.2 ms against its 10-11, below the clear win its 16-21 ms serial steps give).
+  // cost (large_sheet in the window, eight trials by the mean: the parallel side at 9.9-12.0 ms
+  // in six, 13.8 and 14.2 ms in two, short of the clear win over its 15-22 ms serial steps).
   struct Tally {
     int frames = 0;  // counted, after the warm-up frame
     double best = 0.0;
