@@ -51,10 +51,14 @@ GLuint OffscreenTarget::resolved_source(bool same_size) const {
   return resolve_fbo_.get();
 }
 
-void OffscreenTarget::resolve_into(GLuint framebuffer, int width, int height) const {
+void OffscreenTarget::blit(GLuint source, GLuint framebuffer, int width, int height) const {
   const bool same = width == width_ && height == height_;
-  glBlitNamedFramebuffer(resolved_source(same), framebuffer, 0, 0, width_, height_, 0, 0, width,
-                         height, GL_COLOR_BUFFER_BIT, same ? GL_NEAREST : GL_LINEAR);
+  glBlitNamedFramebuffer(source, framebuffer, 0, 0, width_, height_, 0, 0, width, height,
+                         GL_COLOR_BUFFER_BIT, same ? GL_NEAREST : GL_LINEAR);
+}
+
+void OffscreenTarget::resolve_into(GLuint framebuffer, int width, int height) const {
+  blit(resolved_source(width == width_ && height == height_), framebuffer, width, height);
 }
 
 // The whole blit each time, scissored to one of the four strips around the rectangle, so every
@@ -66,8 +70,7 @@ void OffscreenTarget::resolve_around(GLuint framebuffer, int width, int height, 
   w = std::clamp(w, 0, width - x);
   h = std::clamp(h, 0, height - y);
   if (w == 0 || h == 0) return resolve_into(framebuffer, width, height);
-  const bool same = width == width_ && height == height_;
-  const GLuint source = resolved_source(same);
+  const GLuint source = resolved_source(width == width_ && height == height_);
   const int strips[4][4] = {{0, 0, x, height},                  // left of it
                             {x + w, 0, width - x - w, height},  // right of it
                             {x, 0, w, y},                       // below it
@@ -76,8 +79,7 @@ void OffscreenTarget::resolve_around(GLuint framebuffer, int width, int height, 
   for (const auto& s : strips) {
     if (s[2] <= 0 || s[3] <= 0) continue;
     glScissor(s[0], s[1], s[2], s[3]);
-    glBlitNamedFramebuffer(source, framebuffer, 0, 0, width_, height_, 0, 0, width, height,
-                           GL_COLOR_BUFFER_BIT, same ? GL_NEAREST : GL_LINEAR);
+    blit(source, framebuffer, width, height);
   }
   glDisable(GL_SCISSOR_TEST);
 }

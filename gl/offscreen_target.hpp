@@ -39,6 +39,9 @@ class OffscreenTarget {
   std::vector<std::uint8_t> rows_;
   // The framebuffer the final (scaling) blit reads: the resolved copy where multisampled.
   GLuint resolved_source(bool same_size) const;
+  // `source` (this target's size) into framebuffer's [0, width) x [0, height): copied at the same
+  // size, else scaled with linear filtering.
+  void blit(GLuint source, GLuint framebuffer, int width, int height) const;
 };
 
 }  // namespace clothlab::vis

@@ -66,7 +66,7 @@ FlatPatches<T>::FlatPatches(const TriangleBvh& bvh, const SurfaceFeatures& f,
 template <class T>
 void FlatPatches<T>::clear() {
   for (const Patch& p : patches_) chosen_[std::size_t(p.node)] = 0;
-  for (const Work& w : work_) patch_of_[std::size_t(w.triangle)] = -1;
+  for (const std::int32_t t : work_) patch_of_[std::size_t(t)] = -1;
   patches_.clear();
   work_.clear();
   for (auto& v : work_vertex_) v.clear();
@@ -154,11 +154,11 @@ void FlatPatches<T>::choose_node(int node, const V3& axis, const SurfaceFeatures
                                  const int* begin, std::size_t size) {
   chosen_[std::size_t(node)] = 1;
   const auto patch = std::int32_t(patches_.size());
-  patches_.push_back({node, axis, axis.cast<T>()});
+  patches_.push_back({node, axis});
   const Axis axis_t = axis.cast<T>();
   for (std::size_t k = 0; k < size; ++k) {
     const auto t = std::size_t(begin[k]);
-    work_.push_back({begin[k], patch});
+    work_.push_back(begin[k]);
     patch_of_[t] = patch;
     for (std::size_t j = 0; j < 3; ++j) {
       work_vertex_[j].push_back(f.triangles[t][j]);

@@ -64,16 +64,12 @@ class FlatPatches {
   struct Patch {
     int node = 0;
     Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
-    Axis axis_t = Axis::UnitZ();  // in the solver's scalar, for the test every substep
   };
   struct RimEdge {
     std::array<double, 2> lo{}, hi{};
     std::array<std::int32_t, 2> v{};
     std::array<Eigen::Vector2d, 4>
         p;  // a and b at x0, then at x1 (the rim's mean motion taken away)
-  };
-  struct Work {
-    std::int32_t triangle = 0, patch = 0;
   };
   void visit(int node, std::size_t hint, const TriangleBvh& bvh, const SurfaceFeatures& f,
              const Vec3Array<T>& x0, const Vec3Array<T>& x1, int threads);
@@ -101,7 +97,7 @@ class FlatPatches {
   std::vector<std::uint8_t> chosen_;          // per node
   std::vector<Eigen::Vector3d> node_normal_;  // per node: its triangles' normals summed (x1)
   std::vector<Patch> patches_;
-  std::vector<Work> work_;  // the chosen patches' triangles
+  std::vector<std::int32_t> work_;  // the chosen patches' triangles
   // The same, as the test every substep reads them: each triangle's vertices, its patch's axis
   // and its keep bound, one array each.
   std::array<std::vector<std::int32_t>, 3> work_vertex_;
