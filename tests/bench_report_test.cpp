@@ -27,6 +27,18 @@ TEST(BenchReport, PeopleReadFourSignificantDigits) {
   EXPECT_EQ(for_people("nan"), "nan");
 }
 
+// The contact suite's slowest second: the largest mean of a window of consecutive frames, found
+// wherever it lies (first, last, middle), and the whole run's mean when it is shorter.
+TEST(BenchReport, SlowestWindowIsTheLargestMeanOfConsecutiveValues) {
+  EXPECT_DOUBLE_EQ(slowest_window_mean({5, 1, 1, 1}, 2), 3.0);
+  EXPECT_DOUBLE_EQ(slowest_window_mean({1, 1, 1, 4, 6}, 2), 5.0);
+  EXPECT_DOUBLE_EQ(slowest_window_mean({1, 9, 1, 1, 8, 2}, 3), 11.0 / 3.0);
+  // One slow value alone is not the slowest window of three.
+  EXPECT_DOUBLE_EQ(slowest_window_mean({1, 1, 9, 1, 1, 4, 4, 4}, 3), 4.0);
+  EXPECT_DOUBLE_EQ(slowest_window_mean({2, 4}, 60), 3.0);
+  EXPECT_DOUBLE_EQ(slowest_window_mean({}, 60), 0.0);
+}
+
 // The printed table shows the short form and the note; the CSV keeps %.9g.
 TEST(BenchReport, PrintedShortCsvFull) {
   Table t;

@@ -153,4 +153,17 @@ double median(std::vector<double> values) {
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
+double slowest_window_mean(const std::vector<double>& values, std::size_t window) {
+  const std::size_t w = std::min(window, values.size());
+  if (w == 0) return 0.0;
+  double sum = 0.0;
+  for (std::size_t k = 0; k < w; ++k) sum += values[k];
+  double most = sum;
+  for (std::size_t k = w; k < values.size(); ++k) {
+    sum += values[k] - values[k - w];
+    most = std::max(most, sum);
+  }
+  return most / double(w);
+}
+
 }  // namespace clothlab::bench

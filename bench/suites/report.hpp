@@ -60,4 +60,8 @@ class Stopwatch {
 // The median of a few repetitions: robust against one run disturbed by another process.
 double median(std::vector<double> values);
 
+// The largest mean of `window` consecutive values, of all of them when there are fewer (0 for
+// none): the slowest stretch of a run's frame times.
+double slowest_window_mean(const std::vector<double>& values, std::size_t window);
+
 }  // namespace clothlab::bench

@@ -95,14 +95,12 @@ EdgeEdgeClosest closest_edge_edge(const V3& p0, const V3& p1, const V3& q0, cons
       const double b = d1.dot(d2), denom = a * e - b * b;
       // Parallel (denom within round-off of 0): any s works; 0 keeps it deterministic.
       s = denom > 1e-14 * a * e ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
-      t = (b * s + f) / e;
-      if (t < 0.0) {
-        t = 0.0;
-        s = std::clamp(-c / a, 0.0, 1.0);
-      } else if (t > 1.0) {
-        t = 1.0;
-        s = std::clamp((b - c) / a, 0.0, 1.0);
-      }
+      // t clamped to an end, s again for that end; both ends' s computed and one chosen (a
+      // select, not a branch: which end, if any, is as likely as not).
+      const double free_t = (b * s + f) / e;
+      const double s_at0 = std::clamp(-c / a, 0.0, 1.0), s_at1 = std::clamp((b - c) / a, 0.0, 1.0);
+      s = free_t < 0.0 ? s_at0 : free_t > 1.0 ? s_at1 : s;
+      t = free_t < 0.0 ? 0.0 : free_t > 1.0 ? 1.0 : free_t;
     }
   }
   out.s = s;

@@ -124,23 +124,46 @@ bool sides_within(bool edge_edge, const std::array<V3, 4>& lo, const std::array<
   return (lo_p.array() <= hi_q.array() + d).all() && (lo_q.array() <= hi_p.array() + d).all();
 }
 
+// The span along axis a of the pair's first side (the point, or edge p) and of its other side
+// (the triangle, or edge q), each vertex at its own position.
+struct SideSpans {
+  double lo_p, hi_p, lo_q, hi_q;
+};
+[[gnu::always_inline]] inline SideSpans side_spans(bool edge_edge, const std::array<V3, 4>& x,
+                                                   long a) {
+  SideSpans s{x[0][a], x[0][a], x[3][a], x[3][a]};
+  if (edge_edge) {
+    s.lo_p = std::min(s.lo_p, x[1][a]);
+    s.hi_p = std::max(s.hi_p, x[1][a]);
+    s.lo_q = std::min(s.lo_q, x[2][a]);
+    s.hi_q = std::max(s.hi_q, x[2][a]);
+  } else {
+    s.lo_q = std::min(std::min(s.lo_q, x[1][a]), x[2][a]);
+    s.hi_q = std::max(std::max(s.hi_q, x[1][a]), x[2][a]);
+  }
+  return s;
+}
+
 // sides_within where each vertex spans only its own position (the pushes' and the proximity
 // pass's test at one moment): the same answer, NaN included, one axis at a time.
 bool points_within(bool edge_edge, const std::array<V3, 4>& x, double d) {
   for (long a = 0; a < 3; ++a) {
-    double lo_p = x[0][a], hi_p = lo_p, lo_q = x[3][a], hi_q = lo_q;
-    if (edge_edge) {
-      lo_p = std::min(lo_p, x[1][a]);
-      hi_p = std::max(hi_p, x[1][a]);
-      lo_q = std::min(lo_q, x[2][a]);
-      hi_q = std::max(hi_q, x[2][a]);
-    } else {
-      lo_q = std::min(std::min(lo_q, x[1][a]), x[2][a]);
-      hi_q = std::max(std::max(hi_q, x[1][a]), x[2][a]);
-    }
-    if (!(lo_p <= hi_q + d) || !(lo_q <= hi_p + d)) return false;
+    const SideSpans s = side_spans(edge_edge, x, a);
+    if (!(s.lo_p <= s.hi_q + d) || !(s.lo_q <= s.hi_p + d)) return false;
   }
   return true;
+}
+
+// The squared Euclidean gap between the boxes around the pair's two sides: at most their
+// squared distance.
+double box_gap2(bool edge_edge, const std::array<V3, 4>& x) {
+  double gap2 = 0.0;
+  for (long a = 0; a < 3; ++a) {
+    const SideSpans s = side_spans(edge_edge, x, a);
+    const double gap = std::max({0.0, s.lo_q - s.hi_p, s.lo_p - s.hi_q});
+    gap2 += gap * gap;
+  }
+  return gap2;
 }
 
 // The cloth of each vertex and of each triangle (the tree keeps the cloths in their own subtrees,
@@ -614,8 +637,12 @@ bool TriangleContact<T>::keep_if_close(Pair p, PairPool::List& out) {
   const float first = p.edge_edge ? std::max(a(0), a(1)) : a(0);
   const float other = std::max({a(2), a(3), p.edge_edge ? a(2) : a(1)});
   const double d = thickness_ + double(first) + double(other);
-  const double dist2 = pair_dist2(
-      p.edge_edge ? PrimitivePair::edge_edge : PrimitivePair::point_triangle, gather(xc_, p.v));
+  const std::array<V3, 4> x = gather(xc_, p.v);
+  // The gap between the boxes around the two sides bounds their distance from below: a third
+  // of the pairs the exact test drops on the pile, an eighth on the stack, go without it.
+  if (box_gap2(p.edge_edge, x) > d * d) return true;
+  const double dist2 =
+      pair_dist2(p.edge_edge ? PrimitivePair::edge_edge : PrimitivePair::point_triangle, x);
   if (dist2 > d * d) return true;
   p.dist = float(std::sqrt(dist2) * (1.0 - 1e-6));
   return pool_.push(out, p);
