@@ -7,6 +7,7 @@
 
 #include "sim/contact/ccd.hpp"
 #include "sim/contact/intersections.hpp"
+#include "sim/contact/pair_spans.hpp"
 #include "sim/contact/primitive_distance.hpp"
 #include "sim/contact/rigid_fit.hpp"
 #include "sim/core/parallel.hpp"
@@ -122,48 +123,6 @@ bool sides_within(bool edge_edge, const std::array<V3, 4>& lo, const std::array<
     hi_q = hi_q.cwiseMax(hi[k]);
   }
   return (lo_p.array() <= hi_q.array() + d).all() && (lo_q.array() <= hi_p.array() + d).all();
-}
-
-// The span along axis a of the pair's first side (the point, or edge p) and of its other side
-// (the triangle, or edge q), each vertex at its own position.
-struct SideSpans {
-  double lo_p, hi_p, lo_q, hi_q;
-};
-[[gnu::always_inline]] inline SideSpans side_spans(bool edge_edge, const std::array<V3, 4>& x,
-                                                   long a) {
-  SideSpans s{x[0][a], x[0][a], x[3][a], x[3][a]};
-  if (edge_edge) {
-    s.lo_p = std::min(s.lo_p, x[1][a]);
-    s.hi_p = std::max(s.hi_p, x[1][a]);
-    s.lo_q = std::min(s.lo_q, x[2][a]);
-    s.hi_q = std::max(s.hi_q, x[2][a]);
-  } else {
-    s.lo_q = std::min(std::min(s.lo_q, x[1][a]), x[2][a]);
-    s.hi_q = std::max(std::max(s.hi_q, x[1][a]), x[2][a]);
-  }
-  return s;
-}
-
-// sides_within where each vertex spans only its own position (the pushes' and the proximity
-// pass's test at one moment): the same answer, NaN included, one axis at a time.
-bool points_within(bool edge_edge, const std::array<V3, 4>& x, double d) {
-  for (long a = 0; a < 3; ++a) {
-    const SideSpans s = side_spans(edge_edge, x, a);
-    if (!(s.lo_p <= s.hi_q + d) || !(s.lo_q <= s.hi_p + d)) return false;
-  }
-  return true;
-}
-
-// The squared Euclidean gap between the boxes around the pair's two sides: at most their
-// squared distance.
-double box_gap2(bool edge_edge, const std::array<V3, 4>& x) {
-  double gap2 = 0.0;
-  for (long a = 0; a < 3; ++a) {
-    const SideSpans s = side_spans(edge_edge, x, a);
-    const double gap = std::max({0.0, s.lo_q - s.hi_p, s.lo_p - s.hi_q});
-    gap2 += gap * gap;
-  }
-  return gap2;
 }
 
 // The cloth of each vertex and of each triangle (the tree keeps the cloths in their own subtrees,
