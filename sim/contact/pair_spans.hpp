@@ -32,7 +32,9 @@ struct SideSpans {
 }
 
 // Whether the two sides' boxes come within d of each other along every axis (false for NaN).
-inline bool points_within(bool edge_edge, const std::array<Eigen::Vector3d, 4>& x, double d) {
+[[gnu::always_inline]] inline bool points_within(bool edge_edge,
+                                                 const std::array<Eigen::Vector3d, 4>& x,
+                                                 double d) {
   for (long a = 0; a < 3; ++a) {
     const SideSpans s = side_spans(edge_edge, x, a);
     if (!(s.lo_p <= s.hi_q + d) || !(s.lo_q <= s.hi_p + d)) return false;
@@ -41,7 +43,8 @@ inline bool points_within(bool edge_edge, const std::array<Eigen::Vector3d, 4>& 
 }
 
 // The squared Euclidean gap between the two sides' boxes: at most the sides' squared distance.
-inline double box_gap2(bool edge_edge, const std::array<Eigen::Vector3d, 4>& x) {
+[[gnu::always_inline]] inline double box_gap2(bool edge_edge,
+                                              const std::array<Eigen::Vector3d, 4>& x) {
   double gap2 = 0.0;
   for (long a = 0; a < 3; ++a) {
     const SideSpans s = side_spans(edge_edge, x, a);

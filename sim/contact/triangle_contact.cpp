@@ -597,8 +597,9 @@ bool TriangleContact<T>::keep_if_close(Pair p, PairPool::List& out) {
   const float other = std::max({a(2), a(3), p.edge_edge ? a(2) : a(1)});
   const double d = thickness_ + double(first) + double(other);
   const std::array<V3, 4> x = gather(xc_, p.v);
-  // The gap between the boxes around the two sides bounds their distance from below: a third
-  // of the pairs the exact test drops on the pile, an eighth on the stack, go without it.
+  // The gap between the boxes around the two sides bounds their distance from below: of the
+  // pairs the exact test would drop, four in five on large_sheet go without it, an eighth on the
+  // stack on the ball (docs/contact.md section 7, "The exact tests").
   if (box_gap2(p.edge_edge, x) > d * d) return true;
   const double dist2 =
       pair_dist2(p.edge_edge ? PrimitivePair::edge_edge : PrimitivePair::point_triangle, x);
