@@ -286,21 +286,23 @@ bool ContactResponse<T>::edge(std::size_t a, std::size_t b, const Model<T>& m, S
   return true;
 }
 
-// The vertices of the blocks near a collider, each against every collider.
+// The vertices of the blocks near a collider, each against every collider. Blocks resting on a
+// collider cost far more than those that only pass its box test (the stack on the ball's lower
+// sheet, the first 1600 vertices, against its upper one): balanced, not halved by index.
 template <class T>
 void ContactResponse<T>::respond_vertices(const Model<T>& m, State<T>& s, double h, int threads) {
-  for_each_block_indexed(s.pos.size(), threads,
-                         [&](std::size_t block, std::size_t b, std::size_t e) {
-                           BlockResult& r = blocks_[block];
-                           if (!r.near) return;
-                           for (std::size_t i = b; i < e; ++i) {
-                             double depth = 0.0;
-                             if (vertex(i, m, s, h, depth)) {
-                               ++r.contacts;
-                               r.max_depth = std::max(r.max_depth, depth);
-                             }
-                           }
-                         });
+  for_each_block_balanced(s.pos.size(), threads,
+                          [&](std::size_t block, std::size_t b, std::size_t e) {
+                            BlockResult& r = blocks_[block];
+                            if (!r.near) return;
+                            for (std::size_t i = b; i < e; ++i) {
+                              double depth = 0.0;
+                              if (vertex(i, m, s, h, depth)) {
+                                ++r.contacts;
+                                r.max_depth = std::max(r.max_depth, depth);
+                              }
+                            }
+                          });
   for (const BlockResult& r : blocks_) {
     stats_.contacts += r.contacts;
     stats_.max_depth = std::max(stats_.max_depth, r.max_depth);

@@ -95,6 +95,21 @@ void for_each_block_indexed(std::size_t n, int threads, Fn&& fn) {
   });
 }
 
+// for_each_block_indexed for blocks whose cost differs widely (the vertices resting on a collider
+// against those far from it): each thread takes the next block when done with its last, so
+// neither waits on the other's share. fn must write only its own block's results.
+template <class Fn>
+void for_each_block_balanced(std::size_t n, int threads, Fn&& fn) {
+  const long blocks = static_cast<long>(block_count(n));
+  run_team(blocks > 1 ? threads : 1, [&] {
+#pragma omp for schedule(dynamic, 1)
+    for (long b = 0; b < blocks; ++b) {
+      const std::size_t begin = static_cast<std::size_t>(b) * kBlockSize;
+      fn(static_cast<std::size_t>(b), begin, std::min(n, begin + kBlockSize));
+    }
+  });
+}
+
 // Runs `phases` rounds of blocks in one parallel region, a barrier after each: fn(phase, begin,
 // end) over the blocks of [0, size(phase)). For Gauss-Seidel colours, where a region per colour
 // would cost a thread wake-up per colour (with a passive wait policy, tens of microseconds).
