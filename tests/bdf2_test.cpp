@@ -14,13 +14,14 @@
 namespace clothlab {
 namespace {
 
-constexpr double kMass = 0.1, kStiffness = 100.0, kRest = 0.5, kG = 9.81;
-const double kOmega = std::sqrt(kStiffness / kMass);
-const double kAmplitude = kMass * kG / kStiffness;
+using testing::kGravity, testing::kSpringAmplitude, testing::kSpringMass;
+using testing::kSpringOmega, testing::kSpringRest, testing::kSpringStiffness;
+using testing::spring_exact_y;
 
 // The single spring released at its rest length: y(t) = -L - A (1 - cos(w t)).
 Scene spring(double dt, StepSolver solver) {
-  Scene scene = testing::single_spring(kMass, kStiffness, kRest, IntegratorKind::bdf2, dt);
+  Scene scene =
+      testing::single_spring(kSpringMass, kSpringStiffness, kSpringRest, IntegratorKind::bdf2, dt);
   scene.solver.bdf2_solver = solver;
   scene.solver.iterations = 50;        // vbd: converged
   scene.solver.newton_iterations = 2;  // newton: the force is linear, one iteration solves it
@@ -28,13 +29,12 @@ Scene spring(double dt, StepSolver solver) {
   return scene;
 }
 
-double max_error_over_half_second(long steps, StepSolver solver) {
+double bdf2_error_over_half_second(long steps, StepSolver solver) {
   std::unique_ptr<Solver> s = make_solver(spring(0.5 / double(steps), solver));
   double worst = 0.0;
   for (long k = 0; k < steps; ++k) {
     EXPECT_TRUE(s->step(1).ok());
-    const double exact = -kRest - kAmplitude * (1.0 - std::cos(kOmega * s->time()));
-    worst = std::max(worst, std::abs(s->position(1)[1] - exact));
+    worst = std::max(worst, std::abs(s->position(1)[1] - spring_exact_y(s->time())));
   }
   return worst;
 }
@@ -43,9 +43,9 @@ class Bdf2Order : public ::testing::TestWithParam<StepSolver> {};
 
 TEST_P(Bdf2Order, SingleSpringIsSecondOrder) {
   const StepSolver solver = GetParam();
-  const double e1 = max_error_over_half_second(250, solver);
-  const double e2 = max_error_over_half_second(500, solver);
-  const double e3 = max_error_over_half_second(1000, solver);
+  const double e1 = bdf2_error_over_half_second(250, solver);
+  const double e2 = bdf2_error_over_half_second(500, solver);
+  const double e3 = bdf2_error_over_half_second(1000, solver);
   std::printf("[ measured ] bdf2 errors %.4g %.4g %.4g, orders %.4f %.4f\n", e1, e2, e3,
               std::log2(e1 / e2), std::log2(e2 / e3));
   EXPECT_NEAR(std::log2(e1 / e2), 2.0, 0.2) << "errors " << e1 << " and " << e2;
@@ -60,7 +60,8 @@ INSTANTIATE_TEST_SUITE_P(Bdf2, Bdf2Order, ::testing::Values(StepSolver::newton, 
 // Oscillation energy about the equilibrium y = -L - A: 1/2 m v^2 + 1/2 k (y + L + A)^2.
 double oscillation_energy(const Solver& s) {
   const double y = s.position(1)[1], v = s.velocity(1)[1];
-  return 0.5 * kMass * v * v + 0.5 * kStiffness * std::pow(y + kRest + kAmplitude, 2);
+  return 0.5 * kSpringMass * v * v +
+         0.5 * kSpringStiffness * std::pow(y + kSpringRest + kSpringAmplitude, 2);
 }
 
 // The spring's motion about its equilibrium is the linear oscillator, on which BDF2 multiplies
@@ -71,8 +72,8 @@ double oscillation_energy(const Solver& s) {
 // energy falls by |r|^(2N), N steps per period, within 1 % of the decay.
 TEST(Bdf2, EnergyDecayOverOnePeriodMatchesItsAmplificationFactor) {
   constexpr int kSteps = 20;  // per period: h w = 0.31
-  const double period = 2.0 * M_PI / kOmega, h = period / kSteps;
-  const std::complex<double> z(0.0, h * kOmega);
+  const double period = 2.0 * M_PI / kSpringOmega, h = period / kSteps;
+  const std::complex<double> z(0.0, h * kSpringOmega);
   const std::complex<double> a = 1.5 - z, disc = std::sqrt(4.0 - 2.0 * a);
   const double r = std::max(std::abs((2.0 + disc) / (2.0 * a)), std::abs((2.0 - disc) / (2.0 * a)));
   const double expected = std::pow(r, 2 * kSteps);
@@ -82,7 +83,7 @@ TEST(Bdf2, EnergyDecayOverOnePeriodMatchesItsAmplificationFactor) {
   ASSERT_TRUE(s->step(kSteps).ok());
   const double measured = oscillation_energy(*s) / e1;
   // Backward Euler over the same period: (1 + (h w)^2)^-N, far more damping.
-  const double backward_euler = std::pow(1.0 + std::pow(h * kOmega, 2), -kSteps);
+  const double backward_euler = std::pow(1.0 + std::pow(h * kSpringOmega, 2), -kSteps);
   std::printf("[ measured ] energy over one period: %.6f (closed form %.6f; backward Euler %.4f)\n",
               measured, expected, backward_euler);
   EXPECT_NEAR(1.0 - measured, 1.0 - expected, 0.01 * (1.0 - expected));

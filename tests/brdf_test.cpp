@@ -25,7 +25,6 @@ namespace {
 namespace brdf = vis::brdf;
 using glm::dvec3;
 using glm::vec3;
-constexpr double kPi = std::numbers::pi;
 
 // The view direction at cosine mu in the xz plane (normal +z).
 vec3 view_at(double mu) {
@@ -41,11 +40,11 @@ double cosine_grid_albedo(F f, int n) {
   for (int i = 0; i < n; ++i) {
     const double u = (i + 0.5) / n, r = std::sqrt(u), z = std::sqrt(1.0 - u);
     for (int j = 0; j < n; ++j) {
-      const double phi = 2.0 * kPi * (j + 0.5) / n;
+      const double phi = 2.0 * std::numbers::pi * (j + 0.5) / n;
       sum += f(vec3(dvec3(r * std::cos(phi), r * std::sin(phi), z)));
     }
   }
-  return kPi * sum / (static_cast<double>(n) * n);
+  return std::numbers::pi * sum / (static_cast<double>(n) * n);
 }
 
 // Directional albedo of a GGX-type lobe at view v, sampled by half vectors: h distributed as
@@ -58,10 +57,10 @@ double ggx_half_vector_albedo(F f, double ax, double ay, const dvec3& v, int n) 
   for (int i = 0; i < n; ++i) {
     const double u = (i + 0.5) / n, r = std::sqrt(u / (1.0 - u));
     for (int j = 0; j < n; ++j) {
-      const double phi = 2.0 * kPi * (j + 0.5) / n;
+      const double phi = 2.0 * std::numbers::pi * (j + 0.5) / n;
       const dvec3 h = glm::normalize(dvec3(-ax * r * std::cos(phi), -ay * r * std::sin(phi), 1.0));
       const double q = (h.x / ax) * (h.x / ax) + (h.y / ay) * (h.y / ay) + h.z * h.z;
-      const double d = 1.0 / (kPi * ax * ay * q * q);
+      const double d = 1.0 / (std::numbers::pi * ax * ay * q * q);
       const double vh = glm::dot(v, h);
       if (vh <= 0.0) continue;
       const dvec3 l = 2.0 * vh * h - v;
@@ -94,7 +93,7 @@ double relative_difference(const vec3& a, const vec3& b) {
 }
 
 const std::vector<double> kViewCosines = {0.05, 0.1, 0.2, 0.35, 0.5, 0.7, 0.85, 1.0};
-const std::vector<double> kSigmas = {0.0, 0.25, 0.5, 1.0, kPi / 2, kPi};
+const std::vector<double> kSigmas = {0.0, 0.25, 0.5, 1.0, std::numbers::pi / 2, std::numbers::pi};
 const std::vector<double> kSheenAlphas = {0.07, 0.1, 0.15, 0.2, 0.35, 0.5, 0.75, 1.0};
 
 // ---- Normalisation: the integral of D(h) (n.h) over the hemisphere is 1 -------------------
@@ -104,12 +103,12 @@ const std::vector<double> kSheenAlphas = {0.07, 0.1, 0.15, 0.2, 0.35, 0.5, 0.75,
 template <class D>
 double isotropic_projected_area(D d, int n) {
   double sum = 0.0;
-  const double dtheta = 0.5 * kPi / n;
+  const double dtheta = 0.5 * std::numbers::pi / n;
   for (int i = 0; i < n; ++i) {
     const double theta = (i + 0.5) * dtheta;
     sum += d(static_cast<float>(std::cos(theta))) * std::cos(theta) * std::sin(theta);
   }
-  return 2.0 * kPi * sum * dtheta;
+  return 2.0 * std::numbers::pi * sum * dtheta;
 }
 
 TEST(BrdfTest, CharlieDistributionIsNormalised) {
@@ -143,11 +142,11 @@ TEST(BrdfTest, AnisotropicGgxDistributionIsNormalised) {
       const double ct = std::cos(theta), st = std::sin(theta);
       double ring = 0.0;
       for (int j = 0; j < nphi; ++j) {
-        const double phi = 2.0 * kPi * (j + 0.5) / nphi;
+        const double phi = 2.0 * std::numbers::pi * (j + 0.5) / nphi;
         ring += brdf::d_ggx_aniso(float(ax), float(ay), float(ct), float(st * std::cos(phi)),
                                   float(st * std::sin(phi)));
       }
-      sum += ring * (2.0 * kPi / nphi) * ct * st * dtheta_dw / nw;
+      sum += ring * (2.0 * std::numbers::pi / nphi) * ct * st * dtheta_dw / nw;
     }
     std::printf("  GGX ax %.2f ay %.2f: integral D (n.h) = %.6f\n", ax, ay, sum);
     EXPECT_NEAR(sum, 1.0, 0.01) << "ax " << ax << " ay " << ay;
@@ -169,7 +168,7 @@ TEST(BrdfTest, OrenNayarAtSigmaZeroIsLambertExactly) {
     ASSERT_EQ(on.y, lambert.y) << k;
     ASSERT_EQ(on.z, lambert.z) << k;
   }
-  EXPECT_FLOAT_EQ(brdf::brdf_lambert(vec3(1.0f)).x, float(1.0 / kPi));
+  EXPECT_FLOAT_EQ(brdf::brdf_lambert(vec3(1.0f)).x, float(1.0 / std::numbers::pi));
 }
 
 TEST(BrdfTest, BrdfsAreReciprocal) {
@@ -188,7 +187,8 @@ TEST(BrdfTest, BrdfsAreReciprocal) {
     const float nv = glm::dot(N, V), nl = glm::dot(N, L), lv = glm::dot(L, V);
     const float nh = glm::dot(N, glm::normalize(V + L));
     const vec3 albedo(uni(rng), uni(rng), uni(rng)), sheen(uni(rng), uni(rng), uni(rng));
-    const float sigma = float(kPi * uni(rng)), sheen_alpha = float(0.07 + 0.93 * uni(rng));
+    const float sigma = float(std::numbers::pi * uni(rng)),
+                sheen_alpha = float(0.07 + 0.93 * uni(rng));
     const float alpha = float(0.03 + 0.97 * uni(rng)), ax = float(0.03 + 0.97 * uni(rng)),
                 ay = float(0.03 + 0.97 * uni(rng));
 
@@ -449,7 +449,7 @@ void main() {
     const dvec3 t = glm::normalize(glm::cross(n, glm::dvec3(random_in_hemisphere(rng, n))));
     const vec3 N(n), T(t), B(glm::cross(N, T));
     const vec3 V = random_in_hemisphere(rng, n), L = random_in_hemisphere(rng, n);
-    const glm::vec4 p(float(kPi * uni(rng)), float(0.07 + 0.93 * uni(rng)),
+    const glm::vec4 p(float(std::numbers::pi * uni(rng)), float(0.07 + 0.93 * uni(rng)),
                       float(0.05 + 0.95 * uni(rng)), float(0.05 + 0.95 * uni(rng)));
     c = {glm::vec4(N, 0.0f), glm::vec4(V, 0.0f), glm::vec4(L, 0.0f), glm::vec4(T, 0.0f), p};
     const float nh = glm::dot(N, glm::normalize(V + L));

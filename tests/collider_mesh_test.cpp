@@ -14,8 +14,6 @@
 namespace clothlab {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 void expect_on_surface(const vis::Mesh& mesh, const ColliderSpec& spec) {
   const Collider collider(spec);
   ASSERT_EQ(mesh.normals.size(), mesh.positions.size());
@@ -36,7 +34,8 @@ TEST(ColliderMeshTest, CapsuleLiesOnTheCapsuleCollider) {
   const vis::Mesh mesh = vis::make_capsule(0.2f, 0.35f, 48, 12);
   expect_on_surface(mesh, spec);
   const double r = 0.2, h = 0.35;
-  const double volume = kPi * r * r * 2.0 * h + 4.0 / 3.0 * kPi * r * r * r;
+  const double volume =
+      std::numbers::pi * r * r * 2.0 * h + 4.0 / 3.0 * std::numbers::pi * r * r * r;
   EXPECT_NEAR(vis::signed_volume(mesh) / volume, 1.0, 0.01);  // positive: outward-facing
   EXPECT_EQ(mesh.tangents.size(), mesh.vertex_count());
 }
@@ -51,8 +50,9 @@ TEST(ColliderMeshTest, RoundedBoxLiesOnTheRoundedBoxCollider) {
   expect_on_surface(mesh, spec);
   // The inner box grown by r: abc + 2r(ab + bc + ca) + pi r^2 (a + b + c) + 4/3 pi r^3.
   const double r = 0.08, a = 2 * (0.5 - r), b = 2 * (0.3 - r), c = 2 * (0.2 - r);
-  const double volume = a * b * c + 2 * r * (a * b + b * c + c * a) + kPi * r * r * (a + b + c) +
-                        4.0 / 3.0 * kPi * r * r * r;
+  const double volume = a * b * c + 2 * r * (a * b + b * c + c * a) +
+                        std::numbers::pi * r * r * (a + b + c) +
+                        4.0 / 3.0 * std::numbers::pi * r * r * r;
   EXPECT_NEAR(vis::signed_volume(mesh) / volume, 1.0, 0.005);
   // No rounding: the plain box.
   EXPECT_EQ(vis::make_rounded_box({0.5f, 0.3f, 0.2f}, 0.0f, 6).vertex_count(), 24u);

@@ -20,7 +20,7 @@
 namespace clothlab {
 namespace {
 
-constexpr int kW = 320, kH = 240;
+constexpr int kColouredShadowW = 320, kColouredShadowH = 240;
 constexpr double kCoverage = 0.6, kTau = 0.5;
 const Vec3d kRed{0.8, 0.1, 0.1};  // sRGB albedo of the sheets
 
@@ -49,7 +49,9 @@ struct Fixture {
 
 class ColouredShadow : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() { renderer_ = std::make_unique<vis::HeadlessRenderer>(kW, kH); }
+  static void SetUpTestSuite() {
+    renderer_ = std::make_unique<vis::HeadlessRenderer>(kColouredShadowW, kColouredShadowH);
+  }
   static void TearDownTestSuite() { renderer_.reset(); }
 
   // Light straight down (white, directional); the camera low under the sheets looking at the
@@ -90,7 +92,8 @@ class ColouredShadow : public ::testing::Test {
       return test::render_frame(*renderer_, *f.solver, v);
     }();
     const std::vector<std::uint8_t> shadow_img = test::render_frame(*renderer_, *f.solver, f.view);
-    const std::size_t k = testing::pixel_index(f.view.camera, kW, kH, p);
+    const std::size_t k =
+        testing::pixel_index(f.view.camera, kColouredShadowW, kColouredShadowH, p);
     std::array<double, 3> out{};
     for (int ch = 0; ch < 3; ++ch)
       out[ch] = testing::srgb_byte_to_linear(shadow_img[k + ch]) /

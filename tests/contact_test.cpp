@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -22,8 +23,7 @@ namespace clothlab {
 namespace {
 
 using V3 = Eigen::Vector3d;
-constexpr double kG = 9.81;
-constexpr double kPi = 3.14159265358979323846;
+using testing::kGravity;
 
 ColliderSpec plane(Vec3d point, Vec3d normal, double mu_s, double mu_k) {
   ColliderSpec c;
@@ -36,7 +36,7 @@ ColliderSpec plane(Vec3d point, Vec3d normal, double mu_s, double mu_k) {
   return c;
 }
 
-ColliderSpec sphere(Vec3d center, double radius, double mu = 0.3) {
+ColliderSpec contact_sphere(Vec3d center, double radius, double mu = 0.3) {
   ColliderSpec c;
   c.kind = ColliderKind::sphere;
   c.center = center;
@@ -104,7 +104,7 @@ class Incline : public ::testing::TestWithParam<IntegratorKind> {};
 
 // Static friction above tan(theta) holds the patch: after 1 s it has moved less than 0.1 mm.
 TEST_P(Incline, StaticFrictionHolds) {
-  const double theta = 20.0 * kPi / 180.0;  // tan = 0.364
+  const double theta = 20.0 * std::numbers::pi / 180.0;  // tan = 0.364
   std::unique_ptr<Solver> s = make_solver(incline(theta, 0.5, 0.4, GetParam()));
   const V3 start = centroid(*s);
   ASSERT_TRUE(s->advance(1.0).ok());
@@ -114,14 +114,14 @@ TEST_P(Incline, StaticFrictionHolds) {
 // Below it the patch slides with a = g (sin theta - mu_k cos theta), within 1 %: measured from
 // the distance slid in 0.5 s, s = a t^2 / 2.
 TEST_P(Incline, KineticFrictionSlidesAtTheClosedFormRate) {
-  const double theta = 30.0 * kPi / 180.0;
+  const double theta = 30.0 * std::numbers::pi / 180.0;
   for (double mu : {0.2, 0.5}) {
     std::unique_ptr<Solver> s = make_solver(incline(theta, mu, mu, GetParam()));
     const V3 start = centroid(*s);
     ASSERT_TRUE(s->advance(0.5).ok());
     const V3 moved = centroid(*s) - start;
     const V3 down(std::cos(theta), -std::sin(theta), 0.0);
-    const double expected = kG * (std::sin(theta) - mu * std::cos(theta));
+    const double expected = kGravity * (std::sin(theta) - mu * std::cos(theta));
     const double measured = 2.0 * moved.dot(down) / (0.5 * 0.5);
     EXPECT_NEAR(measured, expected, 0.01 * expected) << "mu " << mu;
     EXPECT_LT((moved - moved.dot(down) * down).norm(), 1e-4) << "it stays on the plane";
@@ -148,7 +148,7 @@ TEST(ContactResponse, NeverRaisesKineticEnergyAgainstAStaticCollider) {
   capsule.a = {-0.3, 0.0, 0.0};
   capsule.b = {0.3, 0.1, 0.0};
   capsule.radius = 0.1;
-  for (const ColliderSpec& spec : {sphere({0.0, 0.0, 0.0}, 0.3), box, capsule,
+  for (const ColliderSpec& spec : {contact_sphere({0.0, 0.0, 0.0}, 0.3), box, capsule,
                                    plane({0.0, 0.0, 0.0}, {0.2, 1.0, 0.0}, 0.6, 0.4)}) {
     Scene scene = testing::sheet(20, 1.0, 0.2, 100.0, IntegratorKind::symplectic_euler, 1e-3);
     scene.solver.precision = Precision::f64;
@@ -188,7 +188,7 @@ TEST(ContactResponse, RecordsTheVerticesItHoldsAndTheirNormals) {
   Scene scene = testing::sheet(20, 1.0, 0.2, 100.0, IntegratorKind::symplectic_euler, 1e-3);
   scene.solver.precision = Precision::f64;
   const Model<double> m = build_model<double>(scene);
-  ContactResponse<double> response({sphere({0.0, 0.0, 0.0}, 0.3)}, m);
+  ContactResponse<double> response({contact_sphere({0.0, 0.0, 0.0}, 0.3)}, m);
   State<double> s;
   s.pos.resize(m.n);
   s.vel.resize(m.n);
@@ -240,7 +240,7 @@ TEST(ContactResponse, HoldsTheVerticesWithinReachOfAShell) {
   scene.solver.precision = Precision::f64;
   const Model<double> m = build_model<double>(scene);
   for (const double reach : {0.005, 0.0}) {
-    ContactResponse<double> response({sphere({0.0, 0.0, 0.0}, 0.3)}, m, reach);
+    ContactResponse<double> response({contact_sphere({0.0, 0.0, 0.0}, 0.3)}, m, reach);
     State<double> s;
     s.pos.resize(m.n);
     s.vel.resize(m.n);
@@ -319,7 +319,7 @@ Scene drop(double offset, double sphere_friction = 0.3) {
   s.forces.drag = 0.002;
   s.solver.precision = Precision::f64;
   s.colliders = {plane({0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0.6, 0.4),
-                 sphere({0.0, 0.3, 0.0}, 0.3, sphere_friction)};
+                 contact_sphere({0.0, 0.3, 0.0}, 0.3, sphere_friction)};
   return s;
 }
 
@@ -555,7 +555,7 @@ TEST(MovingCollider, PinsFollowATurningBody) {
     ASSERT_TRUE(s->advance(2.0).ok());
     const double angle = 3.0 * s->time();
     for (int i = 0; i < 16; ++i) {
-      const double a0 = 2.0 * kPi * i / 16.0;
+      const double a0 = 2.0 * std::numbers::pi * i / 16.0;
       const Vec3d p = s->position(i);
       // Where the waist's vertex i started (angle a0 from +x towards +z), turned about +y.
       const V3 start(0.12 * std::cos(a0), 1.0, 0.12 * std::sin(a0));

@@ -16,11 +16,11 @@
 namespace clothlab {
 namespace {
 
-constexpr int kRes = 16;
+constexpr int kCopiesRes = 16;
 
 // A horizontal 1 m sheet held at one corner above a ball, released at rest.
-Scene drop(IntegratorKind kind) {
-  Scene s = testing::sheet(kRes, 1.0, 0.3, 300.0, kind, 1e-3);
+Scene copies_drop(IntegratorKind kind) {
+  Scene s = testing::sheet(kCopiesRes, 1.0, 0.3, 300.0, kind, 1e-3);
   s.cloths[0].origin = {-0.5, 0.8, -0.5};
   s.cloths[0].v_axis = {0.0, 0.0, 1.0};
   s.cloths[0].pins = {{0, 0}};
@@ -39,7 +39,7 @@ Scene drop(IntegratorKind kind) {
 }
 
 TEST(Copies, LayOutOnASquareGridAndShareThePlanes) {
-  const Scene one = drop(IntegratorKind::symplectic_euler);
+  const Scene one = copies_drop(IntegratorKind::symplectic_euler);
   const Scene five = with_copies(one, 5, 2.0);
   ASSERT_EQ(five.cloths.size(), 5u);
   ASSERT_EQ(five.colliders.size(), 2u + 4u);  // the floor once, a ball per copy
@@ -53,7 +53,7 @@ TEST(Copies, LayOutOnASquareGridAndShareThePlanes) {
 
 // Largest distance of copy k's vertices from the original's, shifted by copy k's offset.
 double from_original(const Solver& single, const Solver& many, int k, int copies) {
-  const int n = kRes * kRes;
+  const int n = kCopiesRes * kCopiesRes;
   const Vec3d off = copy_offset(k, copies, 2.0);
   double worst = 0.0;
   for (int i = 0; i < n; ++i) {
@@ -75,9 +75,9 @@ double centroid_y(const Solver& s, int first, int count) {
 // amplifies round-off (stick or slip is a threshold) and they drape alike rather than identically.
 TEST(Copies, EachCopyMovesAsTheOriginal) {
   for (const IntegratorKind kind : {IntegratorKind::symplectic_euler, IntegratorKind::verlet}) {
-    const Scene one = drop(kind);
+    const Scene one = copies_drop(kind);
     constexpr int kCopies = 4;
-    const int n = kRes * kRes;
+    const int n = kCopiesRes * kCopiesRes;
     auto single = make_solver(one);
     auto many = make_solver(with_copies(one, kCopies, 2.0));
     ASSERT_EQ(many->dt(), single->dt());
@@ -106,10 +106,10 @@ TEST(Copies, SimulatedTimePerFrameIsTheSameForAnyCount) {
   double simulated[3] = {};
   const int counts[3] = {1, 4, 16};
   for (int c = 0; c < 3; ++c) {
-    vis::SimSession session(drop(IntegratorKind::symplectic_euler));
+    vis::SimSession session(copies_drop(IntegratorKind::symplectic_euler));
     ASSERT_EQ(session.set_copies(counts[c]), "");
     ASSERT_EQ(session.copies(), counts[c]);
-    ASSERT_EQ(session.solver().vertex_count(), std::size_t(counts[c] * kRes * kRes));
+    ASSERT_EQ(session.solver().vertex_count(), std::size_t(counts[c] * kCopiesRes * kCopiesRes));
     ASSERT_EQ(session.scene().cloths.size(), std::size_t(counts[c]));
     const FrameStepper stepper;
     for (int f = 0; f < 20; ++f) session.advance(stepper, 1.0 / 60.0);
@@ -121,7 +121,7 @@ TEST(Copies, SimulatedTimePerFrameIsTheSameForAnyCount) {
 }
 
 TEST(Copies, SessionClampsAndRestarts) {
-  vis::SimSession session(drop(IntegratorKind::symplectic_euler));
+  vis::SimSession session(copies_drop(IntegratorKind::symplectic_euler));
   session.advance(FrameStepper(), 0.05);
   ASSERT_GT(session.solver().time(), 0.0);
   const long generation = session.generation();
@@ -139,13 +139,13 @@ TEST(Copies, SessionClampsAndRestarts) {
 }
 
 TEST(Copies, ScenesThatCannotBeCopiedSayWhy) {
-  Scene s = drop(IntegratorKind::symplectic_euler);
+  Scene s = copies_drop(IntegratorKind::symplectic_euler);
   s.mannequin.emplace();
   EXPECT_EQ(copies_unsupported_reason(s),
             "the mannequin is one body: a scene with a mannequin is not copied");
   EXPECT_THROW(with_copies(s, 2, 2.0), std::invalid_argument);
   EXPECT_EQ(with_copies(s, 1, 2.0).cloths.size(), 1u);
-  Scene follow = drop(IntegratorKind::symplectic_euler);
+  Scene follow = copies_drop(IntegratorKind::symplectic_euler);
   follow.cloths[0].pins_follow = {0};
   EXPECT_NE(copies_unsupported_reason(follow).find("pins_follow"), std::string::npos);
 }
@@ -155,7 +155,7 @@ TEST(Copies, ScenesThatCannotBeCopiedSayWhy) {
 // busy machine's slow parallel step keeps one thread. M is the user's choice and ends the trial;
 // a small cloth never runs one.
 TEST(Copies, ManyCopiesMeasureWhichThreadCountIsFaster) {
-  Scene scene = drop(IntegratorKind::symplectic_euler);
+  Scene scene = copies_drop(IntegratorKind::symplectic_euler);
   scene.solver.threads = 0;  // automatic, as the shipped scenes
   vis::SimSession session(scene);
   EXPECT_EQ(session.thread_trial(), nullptr);
@@ -181,7 +181,7 @@ TEST(Copies, ManyCopiesMeasureWhichThreadCountIsFaster) {
 // on the ball in the window: 44 % of real time on one thread, 80 % on two). Where the parallel
 // step measures faster it is kept.
 TEST(Copies, ASmallClothWithContactMeasuresWhichThreadCountIsFaster) {
-  Scene scene = drop(IntegratorKind::symplectic_euler);
+  Scene scene = copies_drop(IntegratorKind::symplectic_euler);
   scene.solver.threads = 0;
   scene.solver.cloth_contact = true;
   vis::SimSession session(scene);

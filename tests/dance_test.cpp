@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "allocation_counter.hpp"
+#include "body_box_distance.hpp"
 #include "sim/body/dance.hpp"
 
 namespace clothlab {
@@ -20,7 +21,6 @@ namespace {
 
 using Eigen::Quaterniond;
 using Eigen::Vector3d;
-constexpr double kPi = std::numbers::pi;
 using Frames = std::array<RigidState, 32>;
 
 double angle_between(const Quaterniond& a, const Quaterniond& b) {
@@ -217,14 +217,14 @@ TEST(Dance, PelvisTurnsAFullCircleInEachLoop) {
   double unwrapped = 0, previous = heading(keys[0]), lo = 0, hi = 0;
   for (double t = keys[0]; t <= keys[16]; t += 1e-3) {
     const double h = heading(t);
-    unwrapped += std::remainder(h - previous, 2 * kPi);
+    unwrapped += std::remainder(h - previous, 2 * std::numbers::pi);
     previous = h;
     lo = std::min(lo, unwrapped);
     hi = std::max(hi, unwrapped);
   }
   std::printf("pelvis heading over one loop: %.3f rad in all, range %.3f\n", unwrapped, hi - lo);
-  EXPECT_NEAR(std::abs(unwrapped), 2 * kPi, 0.05);
-  EXPECT_GT(hi - lo, 2 * kPi - 0.2);
+  EXPECT_NEAR(std::abs(unwrapped), 2 * std::numbers::pi, 0.05);
+  EXPECT_GT(hi - lo, 2 * std::numbers::pi - 0.2);
 }
 
 TEST(Dance, ChangingTempoStillLandsKeyframesAndStaysC1) {
@@ -301,12 +301,6 @@ TEST(Dance, AmplitudeScalesTheDeviationFromRest) {
   EXPECT_GT(angle_between(full.keyframe(10).root_rotation, Quaterniond::Identity()), 3.0);
 }
 
-// Signed distance from a point to a box primitive's surface (negative inside).
-double box_distance(const BodyPrimitive& box, const RigidState& f, const Vector3d& x) {
-  const Vector3d q = (f.rotation.conjugate() * (x - f.position)).cwiseAbs() - box.half_extents;
-  return q.cwiseMax(0.0).norm() + std::min(q.maxCoeff(), 0.0);
-}
-
 TEST(Dance, ArmsNeverEnterTheTorso) {
   // Cloth caught between an arm and the chest would be crushed: the choreography keeps arms out.
   const Mannequin m = make_mannequin();
@@ -322,7 +316,7 @@ TEST(Dance, ArmsNeverEnterTheTorso) {
         const double top = p.name.ends_with("upper_arm") ? 1 - p.radius / p.half_length : 1;
         for (double s = -1; s <= top; s += 0.05) {
           const Vector3d x = f[i].rotation * Vector3d(0, s * p.half_length, 0) + f[i].position;
-          closest = std::min(closest, box_distance(d.primitives()[b], f[b], x) - p.radius);
+          closest = std::min(closest, testing::box_distance(d.primitives()[b], f[b], x) - p.radius);
         }
       }
     }

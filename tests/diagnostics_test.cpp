@@ -21,7 +21,7 @@
 namespace clothlab {
 namespace {
 
-constexpr int kWidth = 320, kHeight = 240;
+constexpr int kDiagnosticsWidth = 320, kDiagnosticsHeight = 240;
 
 // A flat res x res sheet, 1 m, lying horizontal at height 1 m and tilted by `rise` (m over its
 // depth), all vertices pinned so it stays exactly where it was built.
@@ -49,7 +49,8 @@ vis::ViewSettings top_view(const Solver& solver) {
 }
 
 std::array<int, 3> pixel(const std::vector<std::uint8_t>& rgba, int x, int y) {
-  const std::size_t i = 4 * (static_cast<std::size_t>(y) * kWidth + static_cast<std::size_t>(x));
+  const std::size_t i =
+      4 * (static_cast<std::size_t>(y) * kDiagnosticsWidth + static_cast<std::size_t>(x));
   return {rgba[i], rgba[i + 1], rgba[i + 2]};
 }
 
@@ -62,14 +63,15 @@ int off_by(const std::array<int, 3>& p, glm::vec3 c) {
 }
 
 std::array<int, 2> pixel_of(const vis::ViewSettings& view, glm::vec3 p) {
-  const glm::vec2 s = testing::screen_position(view.camera, kWidth, kHeight, p);
+  const glm::vec2 s =
+      testing::screen_position(view.camera, kDiagnosticsWidth, kDiagnosticsHeight, p);
   return {static_cast<int>(std::floor(s.x)), static_cast<int>(std::floor(s.y))};
 }
 
 class DiagnosticsTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    renderer_ = std::make_unique<vis::HeadlessRenderer>(kWidth, kHeight);
+    renderer_ = std::make_unique<vis::HeadlessRenderer>(kDiagnosticsWidth, kDiagnosticsHeight);
   }
   static void TearDownTestSuite() { renderer_.reset(); }
   static std::unique_ptr<vis::HeadlessRenderer> renderer_;
@@ -88,9 +90,11 @@ TEST_F(DiagnosticsTest, RangeEndsShowTheTablesEndEntries) {
     view.color.map = map;
     const auto table = vis::colormap_table(map);
     view.color.fixed = {1.0, 2.0};  // the sheet at 1 m is the minimum
-    const auto low = pixel(test::render_frame(*renderer_, *solver, view), kWidth / 2, kHeight / 2);
+    const auto low = pixel(test::render_frame(*renderer_, *solver, view), kDiagnosticsWidth / 2,
+                           kDiagnosticsHeight / 2);
     view.color.fixed = {-3.0, 0.5};  // above the maximum
-    const auto high = pixel(test::render_frame(*renderer_, *solver, view), kWidth / 2, kHeight / 2);
+    const auto high = pixel(test::render_frame(*renderer_, *solver, view), kDiagnosticsWidth / 2,
+                            kDiagnosticsHeight / 2);
     for (int k = 0; k < 3; ++k) {
       const int lo_entry[3] = {table[0].r, table[0].g, table[0].b};
       const int hi_entry[3] = {table[255].r, table[255].g, table[255].b};

@@ -20,7 +20,7 @@
 namespace clothlab {
 namespace {
 
-constexpr int kW = 320, kH = 240;
+constexpr int kDiffusionW = 320, kDiffusionH = 240;
 
 // A white horizontal 1.5 m sheet at 0.5 m, free, without gravity (it stays as built).
 Scene white_sheet() {
@@ -35,7 +35,7 @@ Scene white_sheet() {
 class Diffusion : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    renderer_ = std::make_unique<vis::HeadlessRenderer>(kW, kH);
+    renderer_ = std::make_unique<vis::HeadlessRenderer>(kDiffusionW, kDiffusionH);
     solver_ = make_solver(white_sheet());
     renderer_->set_cloth(*solver_);
   }
@@ -67,7 +67,7 @@ class Diffusion : public ::testing::Test {
   }
   static std::array<double, 3> at(const std::vector<std::uint8_t>& img, const vis::ViewSettings& v,
                                   glm::vec3 p) {
-    const std::size_t k = testing::pixel_index(v.camera, kW, kH, p);
+    const std::size_t k = testing::pixel_index(v.camera, kDiffusionW, kDiffusionH, p);
     return {testing::srgb_byte_to_linear(img[k]), testing::srgb_byte_to_linear(img[k + 1]),
             testing::srgb_byte_to_linear(img[k + 2])};
   }

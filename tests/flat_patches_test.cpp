@@ -46,13 +46,13 @@ struct Culling {
   }
 };
 
-V3 plane(int i, int j) {
+V3 flat_plane(int i, int j) {
   return V3(0.05 * i, 0.0, 0.05 * j);
 }
 
 TEST(PatchTopology, GridNodesAreDisksAndEachClothHasItsOwnSubtree) {
   Mesh one;
-  add_grid(one, 12, 12, 0, plane);
+  add_grid(one, 12, 12, 0, flat_plane);
   const TriangleBvh bvh(triangle_centroids(one.triangles, one.x));
   const PatchTopology t =
       patch_topology(bvh, surface_features(one.triangles, one.x.size()), one.x.size());
@@ -60,7 +60,7 @@ TEST(PatchTopology, GridNodesAreDisksAndEachClothHasItsOwnSubtree) {
   EXPECT_EQ(t.rim_begin[1] - t.rim_begin[0], 4 * 11);  // the grid's border
   // Two sheets one above the other: the root is two disks, split between the cloths first.
   Mesh two = one;
-  add_grid(two, 12, 12, 1, [](int i, int j) { return V3(plane(i, j) + V3(0, 0.01, 0)); });
+  add_grid(two, 12, 12, 1, [](int i, int j) { return V3(flat_plane(i, j) + V3(0, 0.01, 0)); });
   const TriangleBvh by_cloth(triangle_centroids(two.triangles, two.x), two.groups);
   const PatchTopology u =
       patch_topology(by_cloth, surface_features(two.triangles, two.x.size()), two.x.size());
@@ -80,7 +80,7 @@ TEST(PatchTopology, GridNodesAreDisksAndEachClothHasItsOwnSubtree) {
 // a third of the sheet: the tree's median splits do not follow the fold).
 TEST(FlatPatches, FlatAndGentlyBentSheetsAreOnePatchAFoldIsNot) {
   Mesh m;
-  add_grid(m, 16, 16, 0, plane);
+  add_grid(m, 16, 16, 0, flat_plane);
   Culling c(m, m.x);
   std::vector<V3> moved = m.x;
   for (V3& p : moved) p += V3(0.01, -0.02, 0.003);
@@ -130,7 +130,7 @@ TEST(FlatPatches, AStripWoundOverItselfIsCaughtByItsRim) {
 // coefficient of its normal points the other way), so nothing is a patch.
 TEST(FlatPatches, AHalfTurnWithinOneSubstepIsNotFlat) {
   Mesh m;
-  add_grid(m, 16, 16, 0, plane);
+  add_grid(m, 16, 16, 0, flat_plane);
   Culling c(m, m.x);
   std::vector<V3> turned = m.x;
   const V3 centre(0.375, 0.0, 0.375);

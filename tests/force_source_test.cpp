@@ -21,13 +21,13 @@
 namespace clothlab {
 namespace {
 
-constexpr int kRes = 12;
+constexpr int kSourceRes = 12;
 
 // A sheet hanging from its two top corners in the x-y plane, blown along z by a gusty wind,
 // with along-spring damping and linear drag; two solver threads.
-Scene windy_sheet(bool damped, bool wind, Precision precision) {
-  Scene s = testing::sheet(kRes, 1.0, 0.5, 800.0, IntegratorKind::symplectic_euler, 1e-4);
-  s.cloths[0].pins = {{0, 0}, {kRes - 1, 0}};
+Scene source_windy_sheet(bool damped, bool wind, Precision precision) {
+  Scene s = testing::sheet(kSourceRes, 1.0, 0.5, 800.0, IntegratorKind::symplectic_euler, 1e-4);
+  s.cloths[0].pins = {{0, 0}, {kSourceRes - 1, 0}};
   s.springs.damping = damped ? 0.07 : 0.0;
   s.forces.drag = 0.05;
   s.forces.wind = WindSpec{wind, {1.0, 0.0, 4.0}, 0.5, 3, 0.3, 1.2};
@@ -78,7 +78,8 @@ void run_a_while(Solver& s) {
 template <class T>
 void expect_sources_sum_to_total(SpringKernel kernel, bool damped, double tolerance) {
   SCOPED_TRACE(::testing::Message() << "kernel " << int(kernel) << ", damped " << damped);
-  const auto s_owner = testing::solver<T>(windy_sheet(damped, true, precision_of<T>()), kernel);
+  const auto s_owner =
+      testing::solver<T>(source_windy_sheet(damped, true, precision_of<T>()), kernel);
   Solver& s = *s_owner;
   run_a_while(s);
   std::array<std::vector<Vec3d>, kAllForceSources.size()> f;
@@ -119,11 +120,12 @@ TEST(ForceSource, SourcesSumToTheTotalInFloat) {
 template <class T>
 void expect_exact_body_forces(SpringKernel kernel) {
   SCOPED_TRACE(::testing::Message() << "kernel " << int(kernel));
-  const auto s_owner = testing::solver<T>(windy_sheet(true, true, precision_of<T>()), kernel);
+  const auto s_owner =
+      testing::solver<T>(source_windy_sheet(true, true, precision_of<T>()), kernel);
   Solver& s = *s_owner;
   run_a_while(s);
   // The model's values in its precision T (sim/model/model.cpp casts the scene's).
-  const ForceSpec& forces = windy_sheet(true, true, precision_of<T>()).forces;
+  const ForceSpec& forces = source_windy_sheet(true, true, precision_of<T>()).forces;
   const T drag_c = static_cast<T>(forces.drag);
   const std::vector<Vec3d> gravity = field(s, ForceSource::gravity);
   const std::vector<Vec3d> drag = field(s, ForceSource::drag);
@@ -158,7 +160,8 @@ TEST(ForceSource, GravityAndDragAreExact) {
 
 template <class T>
 void expect_no_wind_without_wind(SpringKernel kernel) {
-  const auto s_owner = testing::solver<T>(windy_sheet(true, false, precision_of<T>()), kernel);
+  const auto s_owner =
+      testing::solver<T>(source_windy_sheet(true, false, precision_of<T>()), kernel);
   Solver& s = *s_owner;
   run_a_while(s);
   for (const Vec3d& w : field(s, ForceSource::wind))
@@ -186,7 +189,8 @@ TEST(ForceSource, WindIsZeroWithTheWindOff) {
 // |x_j - x_i| - L, far below the smallest real load (one vertex's weight).
 template <class T>
 void expect_springs_vanish_at_rest(SpringKernel kernel, double tolerance) {
-  const auto s_owner = testing::solver<T>(windy_sheet(true, true, precision_of<T>()), kernel);
+  const auto s_owner =
+      testing::solver<T>(source_windy_sheet(true, true, precision_of<T>()), kernel);
   Solver& s = *s_owner;
   const std::vector<Vec3d> gravity = field(s, ForceSource::gravity);
   const double weight = largest_component(gravity);
@@ -210,7 +214,7 @@ TEST(ForceSource, SpringsVanishAtRest) {
 }
 
 TEST(ForceSource, ReportsTheLastSourceThroughTheSolverInterface) {
-  const std::unique_ptr<Solver> s = make_solver(windy_sheet(true, true, Precision::f32));
+  const std::unique_ptr<Solver> s = make_solver(source_windy_sheet(true, true, Precision::f32));
   EXPECT_EQ(s->force_field_source(), ForceSource::total);  // before any update
   ASSERT_TRUE(s->step(100).ok());
   s->update_force_field(ForceSource::drag);
@@ -226,8 +230,8 @@ TEST(ForceSource, ReportsTheLastSourceThroughTheSolverInterface) {
 }
 
 template <class T>
-void expect_no_allocation() {
-  const auto s_owner = testing::solver<T>(windy_sheet(true, true, precision_of<T>()));
+void expect_source_allocates_nothing() {
+  const auto s_owner = testing::solver<T>(source_windy_sheet(true, true, precision_of<T>()));
   Solver& s = *s_owner;
   run_a_while(s);
   for (ForceSource source : kAllForceSources) s.update_force_field(source);  // warm-up
@@ -238,8 +242,8 @@ void expect_no_allocation() {
 }
 
 TEST(ForceSource, UpdatingAllocatesNothing) {
-  expect_no_allocation<float>();
-  expect_no_allocation<double>();
+  expect_source_allocates_nothing<float>();
+  expect_source_allocates_nothing<double>();
 }
 
 TEST(ForceSource, NamesRoundTrip) {

@@ -25,15 +25,15 @@
 namespace clothlab {
 namespace {
 
-constexpr int kRes = 64;
+constexpr int kGpuClothRes = 64;
 
 // A soft 1 m sheet (1 kg, stiffness 50 N/m) lying horizontal, pinned at the two corners of one
 // edge, released at rest: in 200 steps it falls and starts to fold, so every term of the force is
 // exercised. dt = "auto" (0.8 of the stability limit; soft, so the steps cover 0.1 s or more).
 Scene sheet_scene(IntegratorKind kind) {
-  Scene s = testing::sheet(kRes, 1.0, 1.0, 50.0, kind, 1e-3);
+  Scene s = testing::sheet(kGpuClothRes, 1.0, 1.0, 50.0, kind, 1e-3);
   s.cloths[0].v_axis = {0.0, 0.0, 1.0};
-  s.cloths[0].pins = {{0, 0}, {kRes - 1, 0}};
+  s.cloths[0].pins = {{0, 0}, {kGpuClothRes - 1, 0}};
   s.springs.damping = 0.05;
   s.forces.drag = 0.01;
   s.solver.dt_auto = true;
@@ -206,7 +206,7 @@ double max_distance(const std::vector<float>& a, const std::vector<float>& b) {
 struct Readback {
   std::vector<float> x, v;
 };
-Readback read(const gpu::GpuCloth& gpu) {
+Readback read_text(const gpu::GpuCloth& gpu) {
   Readback r{std::vector<float>(3 * gpu.vertex_count()),
              std::vector<float>(3 * gpu.vertex_count())};
   gpu.read_positions(r.x.data());
@@ -238,7 +238,7 @@ class GpuClothTest : public testing::GlContextTest {
     const auto t2 = Clock::now();
     for (int k = 0; k < kSteps; ++k) reference.step(h, kind);
 
-    const Readback g = read(gpu);
+    const Readback g = read_text(gpu);
     const std::vector<float> cx = sheet.positions(), cv = sheet.velocities();
     const std::vector<float> rx = interleave(reference.state().pos);
     const std::vector<float> rv = interleave(reference.state().vel);
@@ -249,8 +249,9 @@ class GpuClothTest : public testing::GlContextTest {
         "[gpu_cloth] %s, %d x %d, h = %.3g s, %d steps: max |x_gpu - x_cpu| = %.3g m, "
         "|v_gpu - v_cpu| = %.3g m/s; against the -ffp-contract=off reference %.3g m, %.3g m/s "
         "(%s); %.3f ms/step GPU, %.3f ms/step CPU, 1 thread (shared machine: noisy)\n",
-        kind == IntegratorKind::verlet ? "verlet" : "symplectic_euler", kRes, kRes, double(h),
-        kSteps, dx, dv, rdx, rdv, context().renderer().c_str(), ms(t2 - t1), ms(t1 - t0));
+        kind == IntegratorKind::verlet ? "verlet" : "symplectic_euler", kGpuClothRes, kGpuClothRes,
+        double(h), kSteps, dx, dv, rdx, rdv, context().renderer().c_str(), ms(t2 - t1),
+        ms(t1 - t0));
     EXPECT_LT(dx, 1e-5);
     EXPECT_LT(dv, 1e-4);
     // The cloth moved (by 6 mm or more), 100 times the tolerance: not two resting sheets.
@@ -333,7 +334,7 @@ TEST_F(GpuClothTest, DifferencesAfter2000StepsArePrinted) {
     ASSERT_TRUE(cpu.step(kSteps).ok());
     gpu.step(kSteps, h, kind);
     for (int k = 0; k < kSteps; ++k) reference.step(h, kind);
-    const Readback g = read(gpu);
+    const Readback g = read_text(gpu);
     std::printf(
         "[gpu_cloth] %s, %d steps (%.3g s): max |x_gpu - x_cpu| = %.3g m, |v_gpu - v_cpu| "
         "= %.3g m/s; against the -ffp-contract=off reference %.3g m, %.3g m/s\n",

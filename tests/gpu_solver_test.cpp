@@ -28,13 +28,13 @@
 namespace clothlab {
 namespace {
 
-constexpr int kRes = 24;
+constexpr int kGpuSolverRes = 24;
 
 // A 1 m hanging sheet (0.3 kg, 300 N/m, damped, drag) pinned at its top corners.
-Scene hanging(IntegratorKind kind) {
-  Scene s = testing::sheet(kRes, 1.0, 0.3, 300.0, kind, 1e-3);
+Scene gpu_hanging(IntegratorKind kind) {
+  Scene s = testing::sheet(kGpuSolverRes, 1.0, 0.3, 300.0, kind, 1e-3);
   s.cloths[0].origin = {-0.5, 1.5, 0.0};
-  s.cloths[0].pins = {{0, 0}, {kRes - 1, 0}};
+  s.cloths[0].pins = {{0, 0}, {kGpuSolverRes - 1, 0}};
   s.springs.damping = 0.05;
   s.forces.drag = 0.005;
   s.solver.dt_auto = true;
@@ -44,7 +44,7 @@ Scene hanging(IntegratorKind kind) {
 // Wind across the sheet with gusts: the force depends on the surface normals, the velocities and
 // the seeded noise, all of which the GPU must reproduce.
 Scene windy(IntegratorKind kind) {
-  Scene s = hanging(kind);
+  Scene s = gpu_hanging(kind);
   s.forces.wind.enabled = true;
   s.forces.wind.velocity = {2.0, 0.0, 3.0};
   s.forces.wind.gust = 0.6;
@@ -92,7 +92,7 @@ class GpuSolverTest : public testing::GlContextTest {
     EXPECT_LT(d.velocity, 1e-3);
     EXPECT_EQ(d.pinned, 0.0);
     // The wind did move the sheet: without it the GPU's sheet is somewhere else.
-    const auto calm_owner = testing::solver<float>(hanging(kind), SpringKernel::neighbour_list);
+    const auto calm_owner = testing::solver<float>(gpu_hanging(kind), SpringKernel::neighbour_list);
     Solver& calm = *calm_owner;
     ASSERT_TRUE(calm.step(200).ok());
     EXPECT_GT(largest_move(calm, gpu), 1e-3);
@@ -133,7 +133,8 @@ TEST_F(GpuSolverTest, ForceFieldEqualsTheCpusAtTheSameState) {
   gpu.update_force_field(ForceSource::wind);
   cpu.update_force_field(ForceSource::wind);
   EXPECT_EQ(gpu.force_field_source(), ForceSource::wind);
-  EXPECT_NEAR(gpu.force(kRes * kRes / 2)[2], cpu.force(kRes * kRes / 2)[2], 1e-6);
+  EXPECT_NEAR(gpu.force(kGpuSolverRes * kGpuSolverRes / 2)[2],
+              cpu.force(kGpuSolverRes * kGpuSolverRes / 2)[2], 1e-6);
 }
 
 // Release at 0.05 s, a push at 0.08 s and a grab from 0.1 s on: the CPU-side parts of the step
@@ -153,7 +154,7 @@ void release_push_and_grab(Backend backend) {
     EXPECT_TRUE(s->pins_released());
     s->apply_impulse({0.0, 1.0, 0.0}, 0.3, {0.0, 0.0, 0.05});
     ASSERT_TRUE(s->step(steps_to(0.02)).ok());
-    ASSERT_TRUE(s->grab(kRes / 2, {0.2, 1.6, 0.3}));
+    ASSERT_TRUE(s->grab(kGpuSolverRes / 2, {0.2, 1.6, 0.3}));
     ASSERT_TRUE(s->step(steps_to(0.05)).ok());
   }
   const Difference d = compare(cpu, gpu);
@@ -164,7 +165,7 @@ void release_push_and_grab(Backend backend) {
   // The corners let go (they left their pins); the grabbed vertex went towards the hand.
   const Vec3d corner = gpu.position(0);
   EXPECT_GT(std::hypot(corner[0] + 0.5, corner[1] - 1.5, corner[2]), 0.01);
-  const Vec3d g = gpu.position(kRes / 2);
+  const Vec3d g = gpu.position(kGpuSolverRes / 2);
   EXPECT_LT(std::hypot(g[0] - 0.2, g[1] - 1.6, g[2] - 0.3), 0.1);
   gpu.reset();
   EXPECT_FALSE(gpu.pins_released());
@@ -179,7 +180,7 @@ void release_push_and_grab(Backend backend) {
 // 1e-7 m until the sheet lands at about 0.3 s and to 1e-4 m some 50 ms later, so the comparison
 // is made 30 ms after landing, and afterwards on what does not depend on round-off.
 void drop_onto_a_sphere(Backend backend) {
-  Scene scene = hanging(IntegratorKind::symplectic_euler);
+  Scene scene = gpu_hanging(IntegratorKind::symplectic_euler);
   scene.solver.backend = backend;
   scene.cloths[0].origin = {-0.5, 0.8, -0.5};
   scene.cloths[0].v_axis = {0.0, 0.0, 1.0};
@@ -250,7 +251,7 @@ INSTANTIATE_TEST_SUITE_P(Paths, GpuBackends,
 
 TEST_F(GpuSolverTest, ScenesTheGpuCannotRunStayOnTheCpuWithAReason) {
   std::string note;
-  Scene scene = hanging(IntegratorKind::symplectic_euler);
+  Scene scene = gpu_hanging(IntegratorKind::symplectic_euler);
   EXPECT_EQ(make_backend_solver(scene, note)->device_cloth(), nullptr);
   EXPECT_EQ(note, "");
   scene.solver.backend = Backend::gpu;
@@ -274,20 +275,20 @@ TEST_F(GpuSolverTest, PanelSwitchCarriesTheMotionOver) {
   const FrameStepper stepper;
   for (int f = 0; f < 5; ++f) session.advance(stepper, 1.0 / 60.0);
   const double t = session.solver().time();
-  const Vec3d p = session.solver().position(kRes * kRes - 1);
+  const Vec3d p = session.solver().position(kGpuSolverRes * kGpuSolverRes - 1);
   session.draft().solver.backend = Backend::gpu;
   session.apply_dynamics();
   ASSERT_NE(session.solver().device_cloth(), nullptr);
   EXPECT_EQ(session.backend_note(), "");
   EXPECT_EQ(session.solver().time(), t);
-  EXPECT_EQ(session.solver().position(kRes * kRes - 1), p);
+  EXPECT_EQ(session.solver().position(kGpuSolverRes * kGpuSolverRes - 1), p);
   for (int f = 0; f < 5; ++f) session.advance(stepper, 1.0 / 60.0);
   EXPECT_GT(session.solver().time(), t);
-  const Vec3d q = session.solver().position(kRes * kRes - 1);
+  const Vec3d q = session.solver().position(kGpuSolverRes * kGpuSolverRes - 1);
   session.draft().solver.backend = Backend::cpu;
   session.apply_dynamics();
   EXPECT_EQ(session.solver().device_cloth(), nullptr);
-  EXPECT_EQ(session.solver().position(kRes * kRes - 1), q);
+  EXPECT_EQ(session.solver().position(kGpuSolverRes * kGpuSolverRes - 1), q);
   session.draft().solver.backend = Backend::gpu;
   session.draft().solver.integrator = IntegratorKind::rk4;
   session.apply_dynamics();
@@ -297,7 +298,7 @@ TEST_F(GpuSolverTest, PanelSwitchCarriesTheMotionOver) {
 
 // Twice the stable step: the checks on the GPU's state stop the run with a report.
 TEST_F(GpuSolverTest, DivergenceIsCaught) {
-  Scene scene = hanging(IntegratorKind::symplectic_euler);
+  Scene scene = gpu_hanging(IntegratorKind::symplectic_euler);
   scene.solver.dt_auto = false;
   scene.solver.dt = 0.02;
   const auto gpu_owner = gpu::make_gpu_solver(scene);
@@ -311,7 +312,7 @@ TEST_F(GpuSolverTest, DivergenceIsCaught) {
 
 // Four copies of a drop onto a sphere on the GPU: every copy moves as the original, shifted.
 TEST_F(GpuSolverTest, CopiesMoveAsTheOriginal) {
-  Scene scene = hanging(IntegratorKind::verlet);
+  Scene scene = gpu_hanging(IntegratorKind::verlet);
   scene.cloths[0].origin = {-0.5, 0.8, -0.5};
   scene.cloths[0].v_axis = {0.0, 0.0, 1.0};
   scene.cloths[0].pins = {{0, 0}};
@@ -324,9 +325,9 @@ TEST_F(GpuSolverTest, CopiesMoveAsTheOriginal) {
   constexpr double kSpacing = 2.0;  // a power of two: the offsets add no rounding of their own
   const auto gpu_owner = gpu::make_gpu_solver(with_copies(scene, kCopies, kSpacing));
   Solver& gpu = *gpu_owner;
-  ASSERT_EQ(gpu.vertex_count(), std::size_t(kCopies * kRes * kRes));
+  ASSERT_EQ(gpu.vertex_count(), std::size_t(kCopies * kGpuSolverRes * kGpuSolverRes));
   ASSERT_TRUE(gpu.step(300).ok());
-  const int n = kRes * kRes;
+  const int n = kGpuSolverRes * kGpuSolverRes;
   double worst = 0.0;
   for (int k = 1; k < kCopies; ++k) {
     const Vec3d off = copy_offset(k, kCopies, kSpacing);

@@ -11,7 +11,7 @@
 namespace clothlab {
 namespace {
 
-std::string name_of(const ::testing::TestParamInfo<IntegratorKind>& info) {
+std::string grab_name_of(const ::testing::TestParamInfo<IntegratorKind>& info) {
   return to_string(info.param);
 }
 
@@ -47,7 +47,7 @@ TEST_P(Grab, GrabbedVertexFollowsTheHand) {
   EXPECT_LT(lowest, at[2] + 0.15);
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryIntegrator, Grab, ::testing::ValuesIn(kAllIntegrators), name_of);
+INSTANTIATE_TEST_SUITE_P(EveryIntegrator, Grab, ::testing::ValuesIn(kAllIntegrators), grab_name_of);
 
 }  // namespace
 }  // namespace clothlab

@@ -21,31 +21,28 @@
 namespace clothlab {
 namespace {
 
-constexpr double kMass = 0.1, kStiffness = 100.0, kRest = 0.5, kG = 9.81;
-const double kOmega = std::sqrt(kStiffness / kMass);
-const double kAmplitude = kMass * kG / kStiffness;
-
-double exact_y(double t) {
-  return -kRest - kAmplitude * (1.0 - std::cos(kOmega * t));
-}
+using testing::kGravity, testing::kSpringAmplitude, testing::kSpringMass;
+using testing::kSpringOmega, testing::kSpringRest, testing::kSpringStiffness;
+using testing::spring_exact_y;
 
 // Largest position error over [0, 0.5 s] against the closed form (as in single_spring_test.cpp).
-double max_error_over_half_second(long steps) {
-  const auto s_owner = testing::solver<double>(testing::single_spring(
-      kMass, kStiffness, kRest, IntegratorKind::implicit_euler, 0.5 / double(steps)));
+double implicit_euler_error_over_half_second(long steps) {
+  const auto s_owner = testing::solver<double>(
+      testing::single_spring(kSpringMass, kSpringStiffness, kSpringRest,
+                             IntegratorKind::implicit_euler, 0.5 / double(steps)));
   Solver& s = *s_owner;
   double worst = 0.0;
   for (long k = 0; k < steps; ++k) {
     EXPECT_TRUE(s.step(1).ok());
-    worst = std::max(worst, std::abs(s.position(1)[1] - exact_y(s.time())));
+    worst = std::max(worst, std::abs(s.position(1)[1] - spring_exact_y(s.time())));
   }
   return worst;
 }
 
 TEST(ImplicitEuler, FirstOrderOnTheSingleSpring) {
-  const double e1 = max_error_over_half_second(2000);
-  const double e2 = max_error_over_half_second(4000);
-  const double e4 = max_error_over_half_second(8000);
+  const double e1 = implicit_euler_error_over_half_second(2000);
+  const double e2 = implicit_euler_error_over_half_second(4000);
+  const double e4 = implicit_euler_error_over_half_second(8000);
   std::printf("errors %.3g %.3g %.3g: orders %.3f %.3f\n", e1, e2, e4, std::log2(e1 / e2),
               std::log2(e2 / e4));
   EXPECT_NEAR(std::log2(e1 / e2), 1.0, 0.2) << "errors " << e1 << " and " << e2;
@@ -58,8 +55,8 @@ TEST(ImplicitEuler, FirstOrderOnTheSingleSpring) {
 TEST(ImplicitEuler, OneStepOfALinearSpringIsExactBackwardEuler) {
   const double c = 0.3, drag = 0.05, y0 = -0.7, v0 = -0.4;
   for (double h : {1e-3, 0.05, 1.0}) {
-    Scene scene =
-        testing::single_spring(kMass, kStiffness, kRest, IntegratorKind::implicit_euler, h);
+    Scene scene = testing::single_spring(kSpringMass, kSpringStiffness, kSpringRest,
+                                         IntegratorKind::implicit_euler, h);
     scene.springs.damping = c;
     scene.forces.drag = drag;
     const auto s_owner = testing::solver<double>(scene);
@@ -69,8 +66,9 @@ TEST(ImplicitEuler, OneStepOfALinearSpringIsExactBackwardEuler) {
     v[1][1] = v0;
     s.set_state(x, v);
     ASSERT_TRUE(s.step(1).ok());
-    const double v1 = (kMass * v0 + h * (kStiffness * (-y0 - kRest) - kMass * kG)) /
-                      (kMass + h * (c + drag) + h * h * kStiffness);
+    const double v1 =
+        (kSpringMass * v0 + h * (kSpringStiffness * (-y0 - kSpringRest) - kSpringMass * kGravity)) /
+        (kSpringMass + h * (c + drag) + h * h * kSpringStiffness);
     EXPECT_NEAR(s.velocity(1)[1], v1, 1e-12 * (1.0 + std::abs(v1))) << "h = " << h;
     EXPECT_NEAR(s.position(1)[1], y0 + h * v1, 1e-12) << "h = " << h;
     EXPECT_EQ(s.position(1)[0], 0.0);

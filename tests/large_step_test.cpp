@@ -29,17 +29,14 @@ std::string kind_name(const ::testing::TestParamInfo<IntegratorKind>& info) {
 // ---------------------------------------------------------------------------------------------
 // Single spring: y(t) = -L - A (1 - cos(w t)) (see single_spring_test.cpp).
 
-constexpr double kMass = 0.1, kStiffness = 100.0, kRest = 0.5, kG = 9.81;
-const double kOmega = std::sqrt(kStiffness / kMass);
-const double kAmplitude = kMass * kG / kStiffness;
-
-double exact_y(double t) {
-  return -kRest - kAmplitude * (1.0 - std::cos(kOmega * t));
-}
+using testing::kGravity, testing::kSpringAmplitude, testing::kSpringMass;
+using testing::kSpringOmega, testing::kSpringRest, testing::kSpringStiffness;
+using testing::spring_exact_y;
 
 // Largest position error over [0, 0.5 s].
-double max_error_over_half_second(IntegratorKind kind, long steps) {
-  Scene scene = testing::single_spring(kMass, kStiffness, kRest, kind, 0.5 / double(steps));
+double large_step_error_over_half_second(IntegratorKind kind, long steps) {
+  Scene scene =
+      testing::single_spring(kSpringMass, kSpringStiffness, kSpringRest, kind, 0.5 / double(steps));
   scene.solver.substeps = 1;
   // local_global and vbd converged (backward Euler itself); xpbd with its one sweep.
   scene.solver.iterations = kind == IntegratorKind::xpbd ? 1 : 50;
@@ -48,7 +45,7 @@ double max_error_over_half_second(IntegratorKind kind, long steps) {
   double worst = 0.0;
   for (long k = 0; k < steps; ++k) {
     EXPECT_TRUE(s.step(1).ok());
-    worst = std::max(worst, std::abs(s.position(1)[1] - exact_y(s.time())));
+    worst = std::max(worst, std::abs(s.position(1)[1] - spring_exact_y(s.time())));
   }
   return worst;
 }
@@ -59,9 +56,9 @@ class LargeStepOrder : public ::testing::TestWithParam<IntegratorKind> {};
 // spring along a fixed direction solves the linear backward Euler equation exactly, dx = -C k h^2 /
 // (m + k h^2).
 TEST_P(LargeStepOrder, SingleSpringIsFirstOrder) {
-  const double e1 = max_error_over_half_second(GetParam(), 5000);
-  const double e2 = max_error_over_half_second(GetParam(), 10000);
-  const double e3 = max_error_over_half_second(GetParam(), 20000);
+  const double e1 = large_step_error_over_half_second(GetParam(), 5000);
+  const double e2 = large_step_error_over_half_second(GetParam(), 10000);
+  const double e3 = large_step_error_over_half_second(GetParam(), 20000);
   std::printf("[ measured ] %s errors %.4g %.4g %.4g, orders %.4f %.4f\n", to_string(GetParam()),
               e1, e2, e3, std::log2(e1 / e2), std::log2(e2 / e3));
   EXPECT_NEAR(std::log2(e1 / e2), 1.0, 0.2) << "errors " << e1 << " and " << e2;
@@ -193,7 +190,7 @@ INSTANTIATE_TEST_SUITE_P(LargeStep, Stable, ::testing::ValuesIn(kLargeStep), kin
 
 // A sheet with every force on: damped springs, drag and gusty wind; xpbd with two sweeps per
 // substep so the accumulated-lambda path runs too.
-Scene windy_sheet(IntegratorKind kind, int res) {
+Scene large_step_windy_sheet(IntegratorKind kind, int res) {
   Scene scene = testing::sheet(res, 1.0, 0.5, 400.0, kind, 1.0 / 60.0);
   scene.cloths[0].pins = {{0, 0}, {res - 1, 0}};
   scene.springs.damping = 0.02;
@@ -217,7 +214,7 @@ std::vector<Vec3d> positions_after(Scene scene, int threads, long steps) {
 
 template <class T>
 void expect_thread_count_invariant(IntegratorKind kind, int res) {
-  const Scene scene = windy_sheet(kind, res);
+  const Scene scene = large_step_windy_sheet(kind, res);
   const std::vector<Vec3d> one = positions_after<T>(scene, 1, 50);
   const std::vector<Vec3d> two = positions_after<T>(scene, 2, 50);
   ASSERT_EQ(one.size(), two.size());
@@ -233,7 +230,7 @@ TEST_P(LargeStepKind, OneAndTwoThreadsAreBitIdentical) {
 }
 
 TEST_P(LargeStepKind, PinsNeverMove) {
-  Scene scene = windy_sheet(GetParam(), 16);
+  Scene scene = large_step_windy_sheet(GetParam(), 16);
   scene.solver.precision = Precision::f32;
   const auto s_owner = testing::solver<float>(scene);
   Solver& s = *s_owner;
@@ -254,7 +251,7 @@ TEST_P(LargeStepKind, PinsNeverMove) {
   EXPECT_GT(moved, 0.1);
 }
 
-Vec3d momentum(const SolverState& s) {
+Vec3d large_step_momentum(const SolverState& s) {
   Vec3d p{0.0, 0.0, 0.0};
   for (int i = 0; i < static_cast<int>(s.vertex_count()); ++i)
     for (int a = 0; a < 3; ++a) p[a] += s.mass(i) * s.velocity(i)[a];
@@ -287,9 +284,9 @@ TEST_P(LargeStepKind, MomentumIsConservedWithoutExternalForces) {
              std::sqrt(std::pow(v[i][0], 2) + std::pow(v[i][1], 2) + std::pow(v[i][2], 2));
   }
   s.set_state(x, v);
-  const Vec3d before = momentum(s);
+  const Vec3d before = large_step_momentum(s);
   ASSERT_TRUE(s.step(vbd ? 5 : 60).ok());
-  const Vec3d after = momentum(s);
+  const Vec3d after = large_step_momentum(s);
   double worst = 0.0;
   for (int a = 0; a < 3; ++a) worst = std::max(worst, std::abs(after[a] - before[a]) / scale);
   std::printf("[ measured ] %s relative momentum change %.3g\n", to_string(GetParam()), worst);
@@ -300,7 +297,7 @@ TEST_P(LargeStepKind, MomentumIsConservedWithoutExternalForces) {
 
 // Float follows double: the same scene in both precisions.
 TEST_P(LargeStepKind, FloatFollowsDouble) {
-  Scene scene = windy_sheet(GetParam(), 16);
+  Scene scene = large_step_windy_sheet(GetParam(), 16);
   scene.solver.precision = Precision::f64;
   const auto d_owner = testing::solver<double>(scene);
   Solver& d = *d_owner;
@@ -316,7 +313,7 @@ TEST_P(LargeStepKind, FloatFollowsDouble) {
 }
 
 TEST_P(LargeStepKind, ReportsItsSweeps) {
-  Scene scene = windy_sheet(GetParam(), 8);
+  Scene scene = large_step_windy_sheet(GetParam(), 8);
   scene.solver.bdf2_solver = StepSolver::vbd;  // bdf2 reports its vbd solver's iterations
   const auto s_owner = testing::solver<double>(scene);
   Solver& s = *s_owner;
@@ -338,7 +335,7 @@ TEST_P(LargeStepKind, ReportsItsSweeps) {
 // A step of another size than the one the integrator was built for gives the same result as an
 // integrator built for that size (local_global refactors its matrix).
 TEST_P(LargeStepKind, ChangingTheStepSizeMatchesAFreshIntegrator) {
-  Scene scene = windy_sheet(GetParam(), 12);
+  Scene scene = large_step_windy_sheet(GetParam(), 12);
   scene.solver.precision = Precision::f64;
   const Model<double> model = build_model<double>(scene);
   ForceWorkspace<double> ws;

@@ -18,14 +18,14 @@
 namespace clothlab::tune {
 namespace {
 
-const char* const kSheet = testing::kTuneSheet;
+const char* const kReferenceSheet = testing::kTuneSheet;
 
 Scene sheet(std::vector<std::string> overrides = {}) {
-  return read_scene_string(kSheet, "sheet.toml", overrides);
+  return read_scene_string(kReferenceSheet, "sheet.toml", overrides);
 }
 
 // Advances `shown` by whole frames to `frames`, handing each frame's state to the reference.
-std::vector<LiveComparison> compare(Solver& shown, LiveReference& ref, int frames) {
+std::vector<LiveComparison> compare_with_reference(Solver& shown, LiveReference& ref, int frames) {
   std::vector<LiveComparison> out;
   for (int f = 0; f < frames; ++f) {
     EXPECT_TRUE(shown.advance(kFrame).ok());
@@ -44,7 +44,7 @@ TEST(LiveReference, ARunAgainstItselfIsAtDistanceZero) {
   auto shown = make_solver(scene);
   LiveReference ref(scene);
   ref.restart(*shown);
-  for (const LiveComparison& c : compare(*shown, ref, 12)) {
+  for (const LiveComparison& c : compare_with_reference(*shown, ref, 12)) {
     EXPECT_EQ(c.distance.rms, 0.0);
     EXPECT_EQ(c.distance.max, 0.0);
     ASSERT_EQ(c.per_vertex.size(), shown->vertex_count());
@@ -63,7 +63,7 @@ TEST(LiveReference, DistancesEqualThoseOfSeparateRuns) {
   auto shown = make_solver(scene);
   LiveReference ref(reference);
   ref.restart(*shown);
-  const std::vector<LiveComparison> live = compare(*shown, ref, 30);
+  const std::vector<LiveComparison> live = compare_with_reference(*shown, ref, 30);
 
   const std::vector<double> times{10 * kFrame, 20 * kFrame, 30 * kFrame};
   const SampledRun a = run_sampled(scene, times, 0.0);

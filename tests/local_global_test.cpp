@@ -13,7 +13,7 @@
 namespace clothlab {
 namespace {
 
-constexpr double kH = 1.0 / 60.0;
+constexpr double kStepH = 1.0 / 60.0;
 
 // The hanging sheet (8 x 8, k0 = 1e3) four display steps after it was released (the first step
 // from rest is almost free fall). 8 x 8 keeps the plain iteration's own convergence within reach:
@@ -23,7 +23,7 @@ State<double> fifth_step_start(const Model<double>& m, const System<double>& sys
   s.vel.resize(m.n);
   spec.iterations = 2000;
   auto integrator = make_integrator<double>(m, spec);
-  for (int k = 0; k < 4; ++k) integrator->step(sys, s, k * kH, kH);
+  for (int k = 0; k < 4; ++k) integrator->step(sys, s, k * kStepH, kStepH);
   return s;
 }
 
@@ -34,13 +34,13 @@ double rms_distance(const Vec3Array<double>& a, const Vec3Array<double>& b) {
   return std::sqrt(sum / double(a.size()));
 }
 
-struct Fixture {
-  Scene scene = testing::falling_sheet(8, IntegratorKind::local_global, kH);
+struct LocalGlobalFixture {
+  Scene scene = testing::falling_sheet(8, IntegratorKind::local_global, kStepH);
   Model<double> model = build_model<double>(scene);
   ForceWorkspace<double> ws;
   System<double> sys{model, ws, 1};
   State<double> start;
-  Fixture() {
+  LocalGlobalFixture() {
     ws.resize(model);
     SolverSpec spec = scene.solver;
     spec.chebyshev_rho = kChebyshevOff;
@@ -53,13 +53,13 @@ struct Fixture {
     spec.chebyshev_rho = rho;
     auto integrator = make_integrator<double>(model, spec);
     State<double> s = start;
-    integrator->step(sys, s, 4 * kH, kH);
+    integrator->step(sys, s, 4 * kStepH, kStepH);
     return s.pos;
   }
 };
 
 TEST(LocalGlobalChebyshev, ReachesThePlainFixedPoint) {
-  Fixture f;
+  LocalGlobalFixture f;
   const Vec3Array<double> converged = f.step(20000, kChebyshevOff);
   const double d = rms_distance(f.step(6000, 0.0), converged);  // 0: the default rho, 0.97
   std::printf("[ measured ] accelerated 6000 iterations: %.3g m from 20000 plain ones\n", d);
@@ -72,7 +72,7 @@ TEST(LocalGlobalChebyshev, ReachesThePlainFixedPoint) {
 // 5.1x). On the 32 x 32 sheet the whole 0.5 s run lands 635 mm from RK4 plain and 382 mm
 // accelerated at 10 iterations, 406 and 139 mm at 30.
 TEST(LocalGlobalChebyshev, GetsCloserInTheSameIterations) {
-  Fixture f;
+  LocalGlobalFixture f;
   const Vec3Array<double> converged = f.step(20000, kChebyshevOff);
   const struct {
     int iterations;

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <string>
 
+#include "body_box_distance.hpp"
 #include "sim/body/mannequin.hpp"
 #include "sim/body/skeleton.hpp"
 
@@ -17,7 +18,6 @@ namespace {
 using Eigen::AngleAxisd;
 using Eigen::Quaterniond;
 using Eigen::Vector3d;
-constexpr double kPi = std::numbers::pi;
 
 Quaterniond about(const Vector3d& axis, double radians) {
   return Quaterniond(AngleAxisd(radians, axis));
@@ -35,23 +35,17 @@ int index_of(const Mannequin& m, const std::string& name) {
   return -1;
 }
 
-// Signed distance from a point to a box primitive's surface (negative inside).
-double box_distance(const BodyPrimitive& box, const RigidState& f, const Vector3d& x) {
-  const Vector3d q = (f.rotation.conjugate() * (x - f.position)).cwiseAbs() - box.half_extents;
-  return q.cwiseMax(0.0).norm() + std::min(q.maxCoeff(), 0.0);
-}
-
 TEST(Skeleton, ChainOfQuarterTurnsPlacesTheTipByHand) {
   // Root at (0,0,5) turned 90 deg about +y; three joints one metre apart with quarter turns
   // about z and x. By hand: Ry90 x = -z, Rz90 x = y, Rx90 z = -y, Rz90 (-y) = x.
   Skeleton s;
   s.add("root", -1, Vector3d(0, 1, 0));
-  s.add("a", 0, Vector3d(1, 0, 0), about(Vector3d::UnitZ(), kPi / 2));
+  s.add("a", 0, Vector3d(1, 0, 0), about(Vector3d::UnitZ(), std::numbers::pi / 2));
   s.add("b", 1, Vector3d(1, 0, 0));
   SkeletonPose pose = rest_pose(s);
   pose.root_translation = Vector3d(0, 0, 5);
-  pose.root_rotation = about(Vector3d::UnitY(), kPi / 2);
-  pose.local[2] = about(Vector3d::UnitX(), kPi / 2);
+  pose.root_rotation = about(Vector3d::UnitY(), std::numbers::pi / 2);
+  pose.local[2] = about(Vector3d::UnitX(), std::numbers::pi / 2);
   std::array<JointFrame, kMaxJoints> world;
   forward_kinematics(s, pose, world);
   EXPECT_LT((world[0].position - Vector3d(0, 1, 5)).norm(), 1e-12);
@@ -73,12 +67,12 @@ TEST(Mannequin, BentElbowPutsTheWristWhereHandMathsSays) {
   SkeletonPose pose = rest_pose(m.skeleton);
   const int elbow = m.skeleton.find("left_elbow");
   ASSERT_GE(elbow, 0);
-  pose.local[elbow] = about(Vector3d::UnitX(), -kPi / 2);  // forearm straight forward
+  pose.local[elbow] = about(Vector3d::UnitX(), -std::numbers::pi / 2);  // forearm straight forward
   std::array<JointFrame, kMaxJoints> world;
   forward_kinematics(m.skeleton, pose, world);
   const JointFrame& shoulder = world[m.skeleton.find("left_shoulder")];
   // Upper arm 0.30 m down the A-pose direction (25 deg out), forearm 0.26 m along +z.
-  const double out = 25 * kPi / 180;
+  const double out = 25 * std::numbers::pi / 180;
   const Vector3d expected =
       shoulder.position + Vector3d(0.30 * std::sin(out), -0.30 * std::cos(out), 0.26);
   EXPECT_LT((world[m.skeleton.find("left_wrist")].position - expected).norm(), 1e-12);
@@ -157,7 +151,7 @@ TEST(Mannequin, ArmsHangClearOfTheTorsoInTheAPose) {
       for (double s = -1; s <= top; s += 0.01) {
         const Vector3d x =
             frames[i].rotation * Vector3d(0, s * p.half_length, 0) + frames[i].position;
-        const double d = box_distance(m.primitives[b], frames[b], x) - p.radius;
+        const double d = testing::box_distance(m.primitives[b], frames[b], x) - p.radius;
         if (upper && std::string(torso) == "chest") {
           EXPECT_GT(d, -0.003) << p.name << " in the chest at s = " << s;
         } else {

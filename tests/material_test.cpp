@@ -23,10 +23,10 @@
 namespace clothlab {
 namespace {
 
-const std::string kScenes = std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/";
+const std::string kMaterialScenes = std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/";
 
-Scene shipped(const std::string& name, const std::vector<std::string>& sets = {}) {
-  return read_scene_file(kScenes + name, sets);
+Scene shipped_material_scene(const std::string& name, const std::vector<std::string>& sets = {}) {
+  return read_scene_file(kMaterialScenes + name, sets);
 }
 
 std::string error_of(const std::string& text) {
@@ -64,7 +64,7 @@ TEST(SpringPreset, KeysBesideItOverrideIt) {
   EXPECT_EQ(SpringStiffness::of(s.springs_of(1)).bend, silk.bend);
   EXPECT_EQ(s.springs_of(1).damping, silk.damping);
 
-  const Scene set = shipped("default.toml", {"springs.preset=card"});
+  const Scene set = shipped_material_scene("default.toml", {"springs.preset=card"});
   EXPECT_EQ(SpringStiffness::of(set.springs).bend, find_spring_preset("card")->bend);
 }
 
@@ -100,9 +100,9 @@ double fold_measure(const Solver& s, int nu, int nv) {
 TEST(ShippedScenes, DefaultSheetFoldsInTheWind) {
   double rms[2];
   for (int card = 0; card < 2; ++card) {
-    const Scene scene =
-        shipped("default.toml", card ? std::vector<std::string>{"springs.preset=card"}
-                                     : std::vector<std::string>{});
+    const Scene scene = shipped_material_scene(
+        "default.toml",
+        card ? std::vector<std::string>{"springs.preset=card"} : std::vector<std::string>{});
     std::unique_ptr<Solver> s = make_solver(scene);
     ASSERT_TRUE(s->advance(3.0).ok());
     rms[card] = fold_measure(*s, 32, 32);
@@ -125,7 +125,7 @@ double share_on_floor(const Solver& s, double height) {
 // least 90 % of it lies within 3 cm of the floor (measured 92.4 %; a fold of the last edge to
 // leave the ball stands higher) and no vertex is inside the ball.
 TEST(ShippedScenes, DropSphereSheetSlidesOffOntoTheFloor) {
-  const Scene scene = shipped("drop_sphere.toml", {"cloth.release_at=0.3"});
+  const Scene scene = shipped_material_scene("drop_sphere.toml", {"cloth.release_at=0.3"});
   std::unique_ptr<Solver> s = make_solver(scene);
   ASSERT_TRUE(s->advance(5.3).ok());
   EXPECT_GE(share_on_floor(*s, 0.03), 0.9);
@@ -139,7 +139,8 @@ TEST(ShippedScenes, DropSphereSheetSlidesOffOntoTheFloor) {
 
 // The crate's sheet folds over its edge and slides off: most of it on the floor (measured 81 %).
 TEST(ShippedScenes, DropBoxSheetSlidesOffOntoTheFloor) {
-  std::unique_ptr<Solver> s = make_solver(shipped("drop_box.toml", {"cloth.release_at=0.3"}));
+  std::unique_ptr<Solver> s =
+      make_solver(shipped_material_scene("drop_box.toml", {"cloth.release_at=0.3"}));
   ASSERT_TRUE(s->advance(5.3).ok());
   EXPECT_GE(share_on_floor(*s, 0.03), 0.6);
 }
@@ -155,11 +156,11 @@ TEST(ShippedScenes, EveryClothBendsLikeCloth) {
   const std::vector<std::string> stiff_on_purpose = {"hanging_sheet.toml", "steady_flag.toml",
                                                      "single_spring.toml", "two_sheets.toml"};
   int checked = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(kScenes)) {
+  for (const auto& entry : std::filesystem::directory_iterator(kMaterialScenes)) {
     const std::string name = entry.path().filename().string();
     if (entry.path().extension() != ".toml") continue;
     SCOPED_TRACE(name);
-    const Scene scene = shipped(name);
+    const Scene scene = shipped_material_scene(name);
     const bool listed =
         std::find(stiff_on_purpose.begin(), stiff_on_purpose.end(), name) != stiff_on_purpose.end();
     if (listed) {

@@ -56,7 +56,7 @@ class MeshCollider : public ::testing::Test {
   fs::path dir_;
 };
 
-double box_distance(const V3& p, const V3& h) {
+double centred_box_distance(const V3& p, const V3& h) {
   const V3 q = p.cwiseAbs() - h;
   return q.cwiseMax(0.0).norm() + std::min(q.maxCoeff(), 0.0);
 }
@@ -73,7 +73,7 @@ TEST_F(MeshCollider, CubeDistanceMatchesTheClosedForm) {
   std::uniform_real_distribution<double> w(0.0, 1.0);
   for (int k = 0; k < 2000; ++k) {  // within the grid (beyond it the distance is an estimate)
     const V3 p = sdf.lo() + (sdf.hi() - sdf.lo()).cwiseProduct(V3(w(rng), w(rng), w(rng)));
-    worst = std::max(worst, std::abs(sdf.distance(p) - box_distance(p, h)));
+    worst = std::max(worst, std::abs(sdf.distance(p) - centred_box_distance(p, h)));
   }
   EXPECT_LT(worst, 0.5 * sdf.cell()) << "cell " << sdf.cell() << " m";
   V3 n;

@@ -18,8 +18,6 @@
 namespace clothlab::vis {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // Welded vertex ids: vertices closer than `eps` share an id (union-find over a sweep in x).
 std::vector<std::uint32_t> weld(const Mesh& mesh, float eps = 1e-6f) {
   const std::size_t n = mesh.positions.size();
@@ -125,7 +123,7 @@ double torus_knot_length(int p, int q, double radius) {
   double len = 0.0;
   glm::dvec3 prev;
   for (int i = 0; i <= n; ++i) {
-    const double t = 2.0 * kPi * i / n;
+    const double t = 2.0 * std::numbers::pi * i / n;
     const double r = 0.5 * radius * (2.0 + std::cos(q * t));
     const glm::dvec3 x(r * std::cos(p * t), r * std::sin(p * t), 0.5 * radius * std::sin(q * t));
     if (i > 0) len += glm::distance(prev, x);
@@ -139,7 +137,7 @@ TEST(MeshesTest, SphereIsClosedOutwardAndHasTheRightVolume) {
   const Mesh m = make_uv_sphere(r, 64, 32);
   check_attributes(m, 1e-6);
   check_edges(m, true);
-  const double v = signed_volume(m), exact = 4.0 / 3.0 * kPi * r * r * r;
+  const double v = signed_volume(m), exact = 4.0 / 3.0 * std::numbers::pi * r * r * r;
   std::printf("sphere 64x32: volume %.6f, analytic %.6f, rel error %.4f%%\n", v, exact,
               100.0 * (v - exact) / exact);
   EXPECT_GT(v, 0.0);
@@ -162,7 +160,8 @@ TEST(MeshesTest, SphereUvsAndTangentsFollowLongitudeAndLatitude) {
   for (std::size_t i = 0; i < m.positions.size(); ++i) {
     EXPECT_GE(m.uvs[i].x, 0.0f);
     EXPECT_LE(m.uvs[i].x, 1.0f);
-    EXPECT_NEAR(m.uvs[i].y, 1.0f - std::acos(std::clamp(m.positions[i].y, -1.0f, 1.0f)) / kPi,
+    EXPECT_NEAR(m.uvs[i].y,
+                1.0f - std::acos(std::clamp(m.positions[i].y, -1.0f, 1.0f)) / std::numbers::pi,
                 1e-5);
     // u increases eastwards seen from outside: handedness +1 everywhere.
     EXPECT_EQ(m.tangents[i].w, 1.0f);
@@ -214,7 +213,7 @@ TEST(MeshesTest, CylinderAlongXIsClosedWithCapsAndOpenWithout) {
   const Mesh m = make_cylinder(r, len, 64, true);
   check_attributes(m, 1e-9);
   check_edges(m, true);
-  const double v = signed_volume(m), exact = kPi * r * r * len;
+  const double v = signed_volume(m), exact = std::numbers::pi * r * r * len;
   std::printf("cylinder 64 slices with caps: volume %.8f, analytic %.8f, rel error %.4f%%\n", v,
               exact, 100.0 * (v - exact) / exact);
   EXPECT_GT(v, 0.0);
@@ -245,7 +244,7 @@ TEST(MeshesTest, TorusKnotTubeIsClosedAndHasTubeVolume) {
   check_edges(m, true);
   const double v = signed_volume(m);
   const double curve = torus_knot_length(p, q, radius);
-  const double exact = kPi * tube * tube * curve;
+  const double exact = std::numbers::pi * tube * tube * curve;
   std::printf("torus knot (2,3) 512x32: volume %.7f, pi t^2 L %.7f (L = %.5f), rel error %.4f%%\n",
               v, exact, curve, 100.0 * (v - exact) / exact);
   EXPECT_GT(v, 0.0);
@@ -256,7 +255,7 @@ TEST(MeshesTest, TorusKnotTubeIsClosedAndHasTubeVolume) {
   check_attributes(m2, 1e-8);
   check_edges(m2, true);
   const double v2 = signed_volume(m2);
-  const double exact2 = kPi * 0.08 * 0.08 * torus_knot_length(3, 7, 2.0);
+  const double exact2 = std::numbers::pi * 0.08 * 0.08 * torus_knot_length(3, 7, 2.0);
   std::printf("torus knot (3,7) 600x32: rel volume error %.4f%%\n", 100.0 * (v2 - exact2) / exact2);
   EXPECT_NEAR(v2 / exact2, 1.0, 0.02);
 }

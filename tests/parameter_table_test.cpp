@@ -36,7 +36,7 @@ bool in_array_of_keyframes(const Parameter& p) {
   return p.section == Section::keyframe;
 }
 
-std::string read_file(const std::string& path) {
+std::string read_table_file(const std::string& path) {
   std::ifstream in(path);
   std::ostringstream text;
   text << in.rdbuf();
@@ -44,7 +44,7 @@ std::string read_file(const std::string& path) {
 }
 
 TEST(ParameterTable, DocsKeyTableIsTheGeneratedOne) {
-  const std::string doc = read_file(CLOTHLAB_SOURCE_DIR "/docs/scene-format.md");
+  const std::string doc = read_table_file(CLOTHLAB_SOURCE_DIR "/docs/scene-format.md");
   const std::string begin = "<!-- clothlab params: begin -->\n";
   const std::string end = "<!-- clothlab params: end -->";
   const auto from = doc.find(begin);

@@ -53,7 +53,7 @@ class RenderTest : public ::testing::Test {
 std::unique_ptr<vis::HeadlessContext> RenderTest::context_;
 
 // A horizontal 1 m sheet at y = 1 whose u x v points up (u = +x, v = -z), no gravity.
-Scene flat_sheet() {
+Scene render_flat_sheet() {
   Scene s = testing::sheet(16, 1.0, 0.2, 100.0, IntegratorKind::symplectic_euler, 1e-3);
   s.cloths[0].origin = {-0.5, 1.0, 0.5};
   s.cloths[0].v_axis = {0.0, 0.0, -1.0};
@@ -62,7 +62,7 @@ Scene flat_sheet() {
 }
 
 TEST_F(RenderTest, FlatClothInNormalModeShowsTheWorldUpNormal) {
-  const auto solver_owner = testing::solver<float>(flat_sheet());
+  const auto solver_owner = testing::solver<float>(render_flat_sheet());
   Solver& solver = *solver_owner;
   vis::ViewSettings view = vis::default_view(solver);
   view.mode = DisplayMode::normals;
@@ -92,13 +92,13 @@ glm::vec2 project(const vis::ViewSettings& view, glm::vec3 p, int w, int h) {
   return {(c.x / c.w * 0.5f + 0.5f) * w, (0.5f - c.y / c.w * 0.5f) * h};
 }
 
-int luminance(const std::vector<std::uint8_t>& img, int w, glm::vec2 p) {
+int render_luminance(const std::vector<std::uint8_t>& img, int w, glm::vec2 p) {
   const std::size_t k = 4 * (static_cast<std::size_t>(p.y) * w + static_cast<std::size_t>(p.x));
   return img[k] + img[k + 1] + img[k + 2];
 }
 
 TEST_F(RenderTest, FloorIsBrighterUnderTheLightThanFarFromIt) {
-  const auto solver_owner = testing::solver<float>(flat_sheet());
+  const auto solver_owner = testing::solver<float>(render_flat_sheet());
   Solver& solver = *solver_owner;
   vis::ViewSettings view = vis::default_view(solver);
   view.camera.pitch_deg = 35.0f;
@@ -118,14 +118,14 @@ TEST_F(RenderTest, FloorIsBrighterUnderTheLightThanFarFromIt) {
   const auto over_a = render(solver, view, w, h);
   view.light_position = b + glm::vec3(0, 1.5f, 0);
   const auto over_b = render(solver, view, w, h);
-  EXPECT_GT(luminance(over_a, w, pa), luminance(over_b, w, pa) + 60);
-  EXPECT_GT(luminance(over_b, w, pb), luminance(over_a, w, pb) + 60);
+  EXPECT_GT(render_luminance(over_a, w, pa), render_luminance(over_b, w, pa) + 60);
+  EXPECT_GT(render_luminance(over_b, w, pb), render_luminance(over_a, w, pb) + 60);
 }
 
 // The window's panel covers part of the frame: nothing is shaded there (the background colour
 // stays), and every pixel outside it is the same as without the panel, in both qualities.
 TEST_F(RenderTest, NothingIsDrawnUnderACoveredRectangle) {
-  const auto solver_owner = testing::solver<float>(flat_sheet());
+  const auto solver_owner = testing::solver<float>(render_flat_sheet());
   Solver& solver = *solver_owner;
   for (const RenderQuality quality : {RenderQuality::full, RenderQuality::fast}) {
     vis::ViewSettings view = vis::default_view(solver);
@@ -165,16 +165,16 @@ TEST_F(RenderTest, NothingIsDrawnUnderACoveredRectangle) {
 }
 
 TEST_F(RenderTest, ClothIsLitByTheSameLight) {
-  const auto solver_owner = testing::solver<float>(flat_sheet());
+  const auto solver_owner = testing::solver<float>(render_flat_sheet());
   Solver& solver = *solver_owner;
   vis::ViewSettings view = vis::default_view(solver);
   view.camera.pitch_deg = 50.0f;
   const int w = 200, h = 150;
   const glm::vec2 centre = project(view, {0.0f, 1.0f, 0.0f}, w, h);
   view.light_position = {0.0f, 2.5f, 0.0f};  // above the cloth: lights the side we see
-  const int lit = luminance(render(solver, view, w, h), w, centre);
+  const int lit = render_luminance(render(solver, view, w, h), w, centre);
   view.light_position = {0.0f, -0.5f, 0.0f};  // below it: only ambient on our side
-  const int unlit = luminance(render(solver, view, w, h), w, centre);
+  const int unlit = render_luminance(render(solver, view, w, h), w, centre);
   EXPECT_GT(lit, unlit + 100) << "lit " << lit << ", unlit " << unlit;
   EXPECT_GT(unlit, 0);  // ambient keeps it visible
 }

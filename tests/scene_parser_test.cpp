@@ -29,7 +29,7 @@ dt = 0.001
 )";
 
 // Parses text and returns the SceneError it must throw.
-SceneError error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
+SceneError parse_error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
   try {
     read_scene_string(text, "t.toml", overrides);
   } catch (const SceneError& e) {
@@ -42,7 +42,7 @@ SceneError error_of(const std::string& text, const std::vector<std::string>& ove
 // Expects an error for key at line (0: do not check the line) whose message contains `words`.
 void expect_error(const std::string& text, const std::string& key, int line,
                   const std::string& words = "", const std::vector<std::string>& overrides = {}) {
-  const SceneError e = error_of(text, overrides);
+  const SceneError e = parse_error_of(text, overrides);
   const std::string what = e.what();
   EXPECT_EQ(e.key, key) << what;
   EXPECT_NE(what.find(key), std::string::npos) << what;
@@ -426,11 +426,11 @@ TEST(SceneParser, FileErrors) {
   }
   EXPECT_THROW(read_scene_file(CLOTHLAB_SOURCE_DIR), SceneError);  // a directory
 
-  const SceneError e = error_of("[cloth]\nmass = 1\nsize = [1, \n");
+  const SceneError e = parse_error_of("[cloth]\nmass = 1\nsize = [1, \n");
   EXPECT_EQ(e.loc.file, "t.toml");
   EXPECT_GE(e.loc.line, 3);
   EXPECT_NE(std::string(e.what()).find("TOML syntax error"), std::string::npos) << e.what();
-  const SceneError dup = error_of("[cloth]\nmass = 1\nmass = 2\n");
+  const SceneError dup = parse_error_of("[cloth]\nmass = 1\nmass = 2\n");
   EXPECT_EQ(dup.loc.line, 3) << dup.what();
   EXPECT_EQ(std::string(dup.what()).rfind("t.toml:3:", 0), 0u) << dup.what();
 }
@@ -487,32 +487,32 @@ TEST(SceneOverrides, ChangeValues) {
 TEST(SceneOverrides, ErrorsNameTheSetArgument) {
   const std::string file = kMinimal;
   // Range error on an overridden value.
-  SceneError e = error_of(file, {"solver.dt=-1"});
+  SceneError e = parse_error_of(file, {"solver.dt=-1"});
   EXPECT_EQ(std::string(e.what()), "--set solver.dt=-1: solver.dt: must be > 0 (got -1)");
   EXPECT_EQ(e.loc.line, 0);
   // Type error: text that is not TOML becomes a string, which is not a number.
-  e = error_of(file, {"solver.dt=fast"});
+  e = parse_error_of(file, {"solver.dt=fast"});
   EXPECT_EQ(e.key, "solver.dt");
   EXPECT_NE(std::string(e.what()).find("--set solver.dt=fast"), std::string::npos);
   EXPECT_NE(
       std::string(e.what()).find("expected a number of seconds or \"auto\", got string \"fast\""),
       std::string::npos);
-  e = error_of(file, {"cloth.resolution=[2.5, 3]"});
+  e = parse_error_of(file, {"cloth.resolution=[2.5, 3]"});
   EXPECT_EQ(e.key, "cloth.resolution[0]");
   EXPECT_EQ(e.loc.file, "--set cloth.resolution=[2.5, 3]");
   // Unknown keys, created by the override, are refused by the same check as in a file.
   expect_error(file, "solver.dtt", 0, "unknown key", {"solver.dtt=0.1"});
-  EXPECT_EQ(error_of(file, {"solver.dtt=0.1"}).loc.file, "--set solver.dtt=0.1");
+  EXPECT_EQ(parse_error_of(file, {"solver.dtt=0.1"}).loc.file, "--set solver.dtt=0.1");
   expect_error(file, "physics", 0, "unknown top-level key", {"physics.dt=0.1"});
-  EXPECT_EQ(error_of(file, {"physics.dt=0.1"}).loc.file, "--set physics.dt=0.1");
+  EXPECT_EQ(parse_error_of(file, {"physics.dt=0.1"}).loc.file, "--set physics.dt=0.1");
   expect_error(file, "music.file", 0, "no_such.wav", {"music.file=no_such.wav"});
   expect_error(file, "solver.integrator", 0, "unknown integrator", {"solver.integrator=rk5"});
   // A value error in the file is still reported at the file when another key is overridden.
-  e = error_of(file + "threads = -3\n", {"solver.dt=0.01"});
+  e = parse_error_of(file + "threads = -3\n", {"solver.dt=0.01"});
   EXPECT_EQ(e.loc.file, "t.toml");
   EXPECT_EQ(e.loc.line, 9);
   // A cross-field error names the key that is now invalid, where that key was written.
-  e = error_of(file, {"cloth.resolution=[1, 1]"});
+  e = parse_error_of(file, {"cloth.resolution=[1, 1]"});
   EXPECT_EQ(e.key, "cloth.pins");
   EXPECT_EQ(e.loc.file, "t.toml");
 }
@@ -585,10 +585,10 @@ TEST(MultiCloth, ErrorsNameTheCloth) {
   expect_error(kTwoCloths, "cloth[1].mass", 0, "> 0", {"cloth[1].mass=-1"});
   expect_error(kTwoCloths, "cloth[2]", 0, "out of range", {"cloth[2].mass=1"});
   expect_error(kTwoCloths, "cloth", 0, "array", {"cloth.mass=1"});
-  SceneError e = error_of(kTwoCloths, {"trace.vertices=[[2, 0, 0]]"});
+  SceneError e = parse_error_of(kTwoCloths, {"trace.vertices=[[2, 0, 0]]"});
   EXPECT_EQ(e.key, "trace.vertices[0]");
   EXPECT_NE(std::string(e.what()).find("cloth index 2 is out of range"), std::string::npos);
-  e = error_of(kTwoCloths, {"trace.vertices=[[1, 3, 0]]"});
+  e = parse_error_of(kTwoCloths, {"trace.vertices=[[1, 3, 0]]"});
   EXPECT_NE(std::string(e.what()).find("outside the 3 x 2 grid of cloth[1]"), std::string::npos)
       << e.what();
   expect_error(kTwoCloths, "cloth[1].springs.stiffness", 0, ">= 0",

@@ -8,7 +8,7 @@
 namespace clothlab {
 namespace {
 
-GridCloth grid(int nu, int nv, double su, double sv) {
+GridCloth seed_grid(int nu, int nv, double su, double sv) {
   ClothSpec c;
   c.resolution = {nu, nv};
   c.size = {su, sv};
@@ -21,11 +21,12 @@ GridCloth grid(int nu, int nv, double su, double sv) {
 TEST(SeedSprings, FourByFourGridHas82Springs) {
   // Offsets with di^2 + dj^2 < 8: 12 + 12 horizontal/vertical, 9 + 9 diagonal, 8 + 8 two apart,
   // 4 x 6 knight moves = 82; the (2, 2) pair at exactly 2 sqrt(2) edge is not joined.
-  EXPECT_EQ(seed_springs_grid(grid(4, 4, 1.0, 1.0), SpringStiffness::uniform(800.0)).size(), 82u);
+  EXPECT_EQ(seed_springs_grid(seed_grid(4, 4, 1.0, 1.0), SpringStiffness::uniform(800.0)).size(),
+            82u);
 }
 
 TEST(SeedSprings, InteriorVertexHasTwentyNeighbours) {
-  const auto springs = seed_springs_grid(grid(5, 5, 1.0, 1.0), SpringStiffness::uniform(1.0));
+  const auto springs = seed_springs_grid(seed_grid(5, 5, 1.0, 1.0), SpringStiffness::uniform(1.0));
   int degree = 0;
   const int centre = 2 + 2 * 5;
   for (const auto& s : springs) degree += (s.a == centre) + (s.b == centre);
@@ -33,15 +34,16 @@ TEST(SeedSprings, InteriorVertexHasTwentyNeighbours) {
 }
 
 TEST(SeedSprings, OneByTwoGridIsASingleSpring) {
-  const auto springs = seed_springs_grid(grid(1, 2, 1.0, 0.7), SpringStiffness::uniform(50.0));
+  const auto springs = seed_springs_grid(seed_grid(1, 2, 1.0, 0.7), SpringStiffness::uniform(50.0));
   ASSERT_EQ(springs.size(), 1u);
   EXPECT_DOUBLE_EQ(springs[0].rest_length, 0.7);
   EXPECT_DOUBLE_EQ(springs[0].stiffness, 50.0);  // edge / rest = 1
-  EXPECT_TRUE(seed_springs_grid(grid(1, 1, 1.0, 1.0), SpringStiffness::uniform(50.0)).empty());
+  EXPECT_TRUE(seed_springs_grid(seed_grid(1, 1, 1.0, 1.0), SpringStiffness::uniform(50.0)).empty());
 }
 
 TEST(SeedSprings, StiffnessScalesWithEdgeOverRestLength) {
-  for (const auto& s : seed_springs_grid(grid(4, 4, 3.0, 3.0), SpringStiffness::uniform(800.0)))
+  for (const auto& s :
+       seed_springs_grid(seed_grid(4, 4, 3.0, 3.0), SpringStiffness::uniform(800.0)))
     EXPECT_NEAR(s.stiffness * s.rest_length, 800.0 * 1.0, 1e-9);
 }
 
@@ -51,7 +53,7 @@ TEST(SeedSprings, GridBuilderEqualsAllPairsBuilder) {
   const double sizes[][2] = {{1.0, 1.0}, {2.0, 0.5}, {0.3, 1.7}, {1.0, 0.25}};
   for (const auto& shape : shapes) {
     for (const auto& size : sizes) {
-      const GridCloth g = grid(shape[0], shape[1], size[0], size[1]);
+      const GridCloth g = seed_grid(shape[0], shape[1], size[0], size[1]);
       const auto fast = seed_springs_grid(g, SpringStiffness::uniform(123.0));
       const auto slow =
           seed_springs_all_pairs(g.positions, g.edge, SpringStiffness::uniform(123.0));

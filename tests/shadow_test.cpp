@@ -21,23 +21,24 @@
 namespace clothlab {
 namespace {
 
-constexpr int kW = 320, kH = 240;
+constexpr int kShadowW = 320, kShadowH = 240;
 
-struct Shot {
+struct ShadowShot {
   std::vector<std::uint8_t> rgba;
   double lum(int x, int y) const {  // linear, mean of the channels
-    const std::size_t k = 4 * (static_cast<std::size_t>(y) * kW + static_cast<std::size_t>(x));
+    const std::size_t k =
+        4 * (static_cast<std::size_t>(y) * kShadowW + static_cast<std::size_t>(x));
     return (testing::srgb_byte_to_linear(rgba[k]) + testing::srgb_byte_to_linear(rgba[k + 1]) +
             testing::srgb_byte_to_linear(rgba[k + 2])) /
            3.0;
   }
   int byte(int x, int y, int c) const {
-    return rgba[4 * (static_cast<std::size_t>(y) * kW + static_cast<std::size_t>(x)) + c];
+    return rgba[4 * (static_cast<std::size_t>(y) * kShadowW + static_cast<std::size_t>(x)) + c];
   }
 };
 
 // A small cloth (the renderer needs one) hanging far off to the side at x = 3, out of the way.
-Scene side_cloth() {
+Scene shadow_side_cloth() {
   Scene s = testing::sheet(4, 0.3, 0.05, 100.0, IntegratorKind::symplectic_euler, 1e-3);
   s.cloths[0].origin = {3.0, 1.0, 0.0};
   s.cloths[0].pins = {{0, 0}, {3, 0}};
@@ -56,8 +57,8 @@ MeshSpec box(Vec3d center, Vec3d half, Vec3d color = {1.0, 1.0, 1.0}) {
 class ShadowTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    renderer_ = std::make_unique<vis::HeadlessRenderer>(kW, kH);
-    solver_ = make_solver(side_cloth());
+    renderer_ = std::make_unique<vis::HeadlessRenderer>(kShadowW, kShadowH);
+    solver_ = make_solver(shadow_side_cloth());
     renderer_->set_cloth(*solver_);
   }
   static void TearDownTestSuite() {
@@ -85,7 +86,7 @@ class ShadowTest : public ::testing::Test {
     v.shadows = filter;
     return v;
   }
-  static Shot shoot(const std::vector<MeshSpec>& meshes, const vis::ViewSettings& v) {
+  static ShadowShot shoot(const std::vector<MeshSpec>& meshes, const vis::ViewSettings& v) {
     RenderSpec spec;
     spec.pole.enabled = false;
     spec.meshes = meshes;
@@ -93,7 +94,7 @@ class ShadowTest : public ::testing::Test {
     return {test::render_frame(*renderer_, *solver_, v)};
   }
   static glm::vec2 pixel(const vis::ViewSettings& v, glm::vec3 p) {
-    return testing::screen_position(v.camera, kW, kH, p);
+    return testing::screen_position(v.camera, kShadowW, kShadowH, p);
   }
 
   static std::unique_ptr<vis::HeadlessRenderer> renderer_;
@@ -124,11 +125,11 @@ TEST_F(ShadowTest, LitFloorHasNoAcne) {
         const std::vector<MeshSpec> away = {box({-4.0, 0.2, 3.0}, {0.2, 0.2, 0.2})};
         vis::ViewSettings lit = view(angle, ShadowFilter::none), shaded = view(angle, f);
         lit.quality = shaded.quality = quality;
-        const Shot plain = shoot(away, lit);
-        const Shot shadowed = shoot(away, shaded);
+        const ShadowShot plain = shoot(away, lit);
+        const ShadowShot shadowed = shoot(away, shaded);
         long differ = 0, total = 0;
-        for (int y = kH / 4; y < 3 * kH / 4; ++y)
-          for (int x = kW / 4; x < 3 * kW / 4; ++x, ++total)
+        for (int y = kShadowH / 4; y < 3 * kShadowH / 4; ++y)
+          for (int x = kShadowW / 4; x < 3 * kShadowW / 4; ++x, ++total)
             for (int c = 0; c < 3; ++c)
               if (std::abs(plain.byte(x, y, c) - shadowed.byte(x, y, c)) > 1) {
                 ++differ;
@@ -143,9 +144,9 @@ TEST_F(ShadowTest, LitFloorHasNoAcne) {
 
 // How much light reaches the floor point p: the shadowed render over the same render without
 // shadows at p's pixel (the floor's texture cancels).
-double visibility(const Shot& shadowed, const Shot& plain, const vis::ViewSettings& v,
+double visibility(const ShadowShot& shadowed, const ShadowShot& plain, const vis::ViewSettings& v,
                   glm::vec3 p) {
-  const glm::vec2 s = testing::screen_position(v.camera, kW, kH, p);
+  const glm::vec2 s = testing::screen_position(v.camera, kShadowW, kShadowH, p);
   const int x = int(s.x), y = int(s.y);
   return shadowed.lum(x, y) / std::max(plain.lum(x, y), 1e-6);
 }
@@ -159,9 +160,9 @@ TEST_F(ShadowTest, PostShadowTouchesItsFoot) {
     SCOPED_TRACE(to_string(quality));
     vis::ViewSettings v = view(45.0f, ShadowFilter::pcf);
     v.quality = quality;
-    const Shot s = shoot(post, v);
+    const ShadowShot s = shoot(post, v);
     v.shadows = ShadowFilter::none;
-    const Shot plain = shoot(post, v);
+    const ShadowShot plain = shoot(post, v);
     EXPECT_LT(visibility(s, plain, v, {0.07f, 0.0f, 0.0f}), 0.2);
     EXPECT_LT(visibility(s, plain, v, {0.15f, 0.0f, 0.0f}), 0.2);
     EXPECT_GT(visibility(s, plain, v, {0.0f, 0.0f, 0.4f}), 0.9);
@@ -185,9 +186,9 @@ TEST_F(ShadowTest, ShadowFallsAwayFromTheLight) {
       v.light_direction = glm::normalize(away + glm::vec3(0.0f, -1.0f, 0.0f));
       v.light_position = -3.0f * away + glm::vec3(0.0f, 3.0f, 0.0f);
       v.light_target = glm::vec3(0.0f);
-      const Shot s = shoot(post, v);
+      const ShadowShot s = shoot(post, v);
       v.shadows = ShadowFilter::none;
-      const Shot plain = shoot(post, v);
+      const ShadowShot plain = shoot(post, v);
       SCOPED_TRACE(std::string(type == LightType::spot ? "spot" : "directional") +
                    " light, shadow towards (" + std::to_string(away.x) + ", " +
                    std::to_string(away.z) + ")");
@@ -215,9 +216,9 @@ TEST_F(ShadowTest, LongShadowIsNotCutOff) {
     v.camera.target = {-1.0f, 0.0f, 0.0f};
     v.camera.pitch_deg = 89.0f;
     v.camera.distance = 4.0f;
-    const Shot s = shoot(post, v);
+    const ShadowShot s = shoot(post, v);
     v.shadows = ShadowFilter::none;
-    const Shot plain = shoot(post, v);
+    const ShadowShot plain = shoot(post, v);
     EXPECT_LT(visibility(s, plain, v, {-0.5f, 0.0f, 0.0f}), 0.2);
     EXPECT_LT(visibility(s, plain, v, {-1.6f, 0.0f, 0.0f}), 0.2);
     EXPECT_GT(visibility(s, plain, v, {-2.1f, 0.0f, 0.0f}), 0.9);
@@ -226,7 +227,7 @@ TEST_F(ShadowTest, LongShadowIsNotCutOff) {
 
 // Width (m on the floor) over which the shadow of a plate's edge at x = 0 goes from 20 % to 80 %
 // of the light, measured along +x between -0.4 and 0.4 m.
-double penumbra_width(const Shot& s, const Shot& plain, const vis::ViewSettings& v) {
+double penumbra_width(const ShadowShot& s, const ShadowShot& plain, const vis::ViewSettings& v) {
   double x20 = -0.4, x80 = -0.4;
   for (float x = -0.4f; x <= 0.4f; x += 0.002f) {  // inside the image on both sides
     const double f = visibility(s, plain, v, {x, 0.0f, 0.0f});
@@ -252,7 +253,7 @@ TEST_F(ShadowTest, PcssPenumbraWidensWithDistance) {
     v.camera.yaw_deg = 0.0f;
     v.camera.distance = 1.2f;
     v.light_size = 0.1f;  // rad: penumbrae of 2 and 8 cm
-    const Shot s = shoot(plate(h), v);
+    const ShadowShot s = shoot(plate(h), v);
     v.shadows = ShadowFilter::none;
     return penumbra_width(s, shoot(plate(h), v), v);
   };
@@ -270,13 +271,14 @@ TEST_F(ShadowTest, DepthViewSeparatesFloorClothAndObject) {
   const std::vector<MeshSpec> tall = {box({2.0, 0.6, 0.0}, {0.2, 0.6, 0.2})};
   vis::ViewSettings v = view(20.0f, ShadowFilter::pcf);
   v.mode = vis::DisplayMode::light_depth;
-  const Shot s = shoot(tall, v);
+  const ShadowShot s = shoot(tall, v);
   const vis::LightRig& light = renderer_->light();
   auto colour_at = [&](glm::vec3 p) {
     const glm::vec4 c = light.view_proj * glm::vec4(p, 1.0f);
     const glm::vec2 uv = glm::vec2(c.x, c.y) / c.w * 0.5f + 0.5f;
-    const float side = 0.95f * std::min(kW, kH);
-    const float px = 0.5f * (kW - side) + uv.x * side, py = kH - (0.5f * (kH - side) + uv.y * side);
+    const float side = 0.95f * std::min(kShadowW, kShadowH);
+    const float px = 0.5f * (kShadowW - side) + uv.x * side,
+                py = kShadowH - (0.5f * (kShadowH - side) + uv.y * side);
     return std::array<int, 3>{s.byte(int(px), int(py), 0), s.byte(int(px), int(py), 1),
                               s.byte(int(px), int(py), 2)};
   };
@@ -300,19 +302,19 @@ TEST_F(ShadowTest, SkyStaysPutWhenTheCameraMoves) {
   v.camera.pitch_deg = -20.0f;  // looking up: the top half is sky
   v.camera.yaw_deg = 90.0f;     // the eye on +x looking towards -x, where the light comes from
   v.camera.target = {0.0f, 2.0f, 0.0f};
-  const Shot a = shoot({}, v);
+  const ShadowShot a = shoot({}, v);
   v.camera.target += glm::vec3(0.0f, 0.5f, 0.3f);
-  const Shot b = shoot({}, v);
+  const ShadowShot b = shoot({}, v);
   int worst = 0;
-  for (int y = 0; y < kH / 3; ++y)
-    for (int x = 0; x < kW; ++x)
+  for (int y = 0; y < kShadowH / 3; ++y)
+    for (int x = 0; x < kShadowW; ++x)
       for (int c = 0; c < 3; ++c)
         worst = std::max(worst, std::abs(a.byte(x, y, c) - b.byte(x, y, c)));
   EXPECT_LE(worst, 1);
   // Towards the light (the sun) against the opposite direction.
   v.camera.yaw_deg = -90.0f;
-  const Shot away = shoot({}, v);
-  EXPECT_GT(a.lum(kW / 2, kH / 6), 1.5 * away.lum(kW / 2, kH / 6));
+  const ShadowShot away = shoot({}, v);
+  EXPECT_GT(a.lum(kShadowW / 2, kShadowH / 6), 1.5 * away.lum(kShadowW / 2, kShadowH / 6));
 }
 
 }  // namespace

@@ -22,12 +22,12 @@
 namespace clothlab {
 namespace {
 
-constexpr int kWidth = 960, kHeight = 540;
+constexpr int kShippedWidth = 960, kShippedHeight = 540;
 
 struct Frame {
   std::vector<std::uint8_t> rgba;
   int channel(int x, int y, int c) const {
-    return rgba[4 * (static_cast<std::size_t>(y) * kWidth + static_cast<std::size_t>(x)) +
+    return rgba[4 * (static_cast<std::size_t>(y) * kShippedWidth + static_cast<std::size_t>(x)) +
                 static_cast<std::size_t>(c)];
   }
   int luma(int x, int y) const {
@@ -38,7 +38,7 @@ struct Frame {
 class ShippedView : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    renderer_ = std::make_unique<vis::HeadlessRenderer>(kWidth, kHeight);
+    renderer_ = std::make_unique<vis::HeadlessRenderer>(kShippedWidth, kShippedHeight);
   }
   static void TearDownTestSuite() { renderer_.reset(); }
 
@@ -64,13 +64,13 @@ class ShippedView : public ::testing::Test {
   static std::vector<bool> cloth_mask(double t) {
     const Frame plain = render("default.toml", vis::DisplayMode::lambert, t);
     const Frame height = render("default.toml", vis::DisplayMode::lambert, t, true);
-    std::vector<bool> mask(std::size_t(kWidth) * kHeight);
-    for (int y = 0; y < kHeight; ++y)
-      for (int x = 0; x < kWidth; ++x) {
+    std::vector<bool> mask(std::size_t(kShippedWidth) * kShippedHeight);
+    for (int y = 0; y < kShippedHeight; ++y)
+      for (int x = 0; x < kShippedWidth; ++x) {
         int d = 0;
         for (int c = 0; c < 3; ++c)
           d = std::max(d, std::abs(plain.channel(x, y, c) - height.channel(x, y, c)));
-        mask[std::size_t(y) * kWidth + std::size_t(x)] = d > 30;
+        mask[std::size_t(y) * kShippedWidth + std::size_t(x)] = d > 30;
       }
     return mask;
   }
@@ -79,9 +79,9 @@ class ShippedView : public ::testing::Test {
   static double mean_difference(const Frame& a, const Frame& b, const std::vector<bool>& mask) {
     double sum = 0.0;
     long count = 0;
-    for (int y = 0; y < kHeight; ++y)
-      for (int x = 0; x < kWidth; ++x) {
-        if (!mask[std::size_t(y) * kWidth + std::size_t(x)]) continue;
+    for (int y = 0; y < kShippedHeight; ++y)
+      for (int x = 0; x < kShippedWidth; ++x) {
+        if (!mask[std::size_t(y) * kShippedWidth + std::size_t(x)]) continue;
         for (int c = 0; c < 3; ++c) sum += std::abs(a.channel(x, y, c) - b.channel(x, y, c));
         count += 3;
       }
@@ -96,8 +96,8 @@ std::unique_ptr<vis::HeadlessRenderer> ShippedView::renderer_;
 TEST_F(ShippedView, SkyReadsBlueAboveTheDefaultScene) {
   const Frame f = render("default.toml", vis::DisplayMode::lambert);
   long blue_minus_red = 0, count = 0;
-  for (int y = 0; y < kHeight / 8; ++y)
-    for (int x = 0; x < kWidth; ++x, ++count)
+  for (int y = 0; y < kShippedHeight / 8; ++y)
+    for (int x = 0; x < kShippedWidth; ++x, ++count)
       blue_minus_red += f.channel(x, y, 2) - f.channel(x, y, 0);
   EXPECT_GE(double(blue_minus_red) / double(count), 15.0);
 }
@@ -109,8 +109,8 @@ TEST_F(ShippedView, SkyReadsBlueAboveTheDefaultScene) {
 TEST_F(ShippedView, FloorMeetsTheSkyWithoutAnEdge) {
   const Frame f = render("default.toml", vis::DisplayMode::lambert);
   int worst = 0;
-  for (int y = 1; y < kHeight * 35 / 100; ++y)
-    for (int x = 0; x < kWidth / 5; ++x)
+  for (int y = 1; y < kShippedHeight * 35 / 100; ++y)
+    for (int x = 0; x < kShippedWidth / 5; ++x)
       worst = std::max(worst, std::abs(f.luma(x, y) - f.luma(x, y - 1)));
   EXPECT_LE(worst, 12);
 }
@@ -123,7 +123,8 @@ TEST_F(ShippedView, WeaveAndThreadModesDifferFromLambertOnTheCloth) {
   const std::vector<bool> mask = cloth_mask(2.0);
   long cloth = 0;
   for (bool b : mask) cloth += b;
-  ASSERT_GT(cloth, kWidth * kHeight / 20) << "the cloth covers a twentieth of the frame";
+  ASSERT_GT(cloth, kShippedWidth * kShippedHeight / 20)
+      << "the cloth covers a twentieth of the frame";
   const Frame lambert = render("default.toml", vis::DisplayMode::lambert, 2.0);
   const double weave =
       mean_difference(lambert, render("default.toml", vis::DisplayMode::weave, 2.0), mask);
@@ -142,16 +143,16 @@ TEST_F(ShippedView, TranslucentModeTintsTheShadow) {
   const Frame lambert = render("default.toml", vis::DisplayMode::lambert);
   const Frame translucent = render("default.toml", vis::DisplayMode::translucent);
   long redder = 0;
-  for (int y = 0; y < kHeight; ++y)
-    for (int x = 0; x < kWidth; ++x) {
-      if (mask[std::size_t(y) * kWidth + std::size_t(x)]) continue;
+  for (int y = 0; y < kShippedHeight; ++y)
+    for (int x = 0; x < kShippedWidth; ++x) {
+      if (mask[std::size_t(y) * kShippedWidth + std::size_t(x)]) continue;
       const int before = lambert.channel(x, y, 0) - lambert.channel(x, y, 1);
       const int after = translucent.channel(x, y, 0) - translucent.channel(x, y, 1);
       redder += after - before > 10;
     }
   std::printf("redder floor pixels in mode 5: %.2f %% of the frame\n",
-              100.0 * double(redder) / double(kWidth * kHeight));
-  EXPECT_GE(redder, kWidth * kHeight / 100);
+              100.0 * double(redder) / double(kShippedWidth * kShippedHeight));
+  EXPECT_GE(redder, kShippedWidth * kShippedHeight / 100);
 }
 
 // Mode 1 at 2 s: the strain colours reach over the sheet, not only its pins: at least 35 % of
@@ -161,9 +162,9 @@ TEST_F(ShippedView, SpringModeColoursTheWholeSheet) {
   const std::vector<bool> mask = cloth_mask(2.0);
   const Frame springs = render("default.toml", vis::DisplayMode::springs, 2.0);
   long cloth = 0, coloured = 0;
-  for (int y = 0; y < kHeight; ++y)
-    for (int x = 0; x < kWidth; ++x) {
-      if (!mask[std::size_t(y) * kWidth + std::size_t(x)]) continue;
+  for (int y = 0; y < kShippedHeight; ++y)
+    for (int x = 0; x < kShippedWidth; ++x) {
+      if (!mask[std::size_t(y) * kShippedWidth + std::size_t(x)]) continue;
       int lo = 255, hi = 0;
       for (int c = 0; c < 3; ++c) {
         lo = std::min(lo, springs.channel(x, y, c));
@@ -189,8 +190,10 @@ TEST_F(ShippedView, SpringModeColoursTheWholeSheet) {
 std::vector<float> arrow_pixels(const vis::HeadlessRenderer& r, const vis::ViewSettings& view) {
   std::vector<float> out;
   for (const vis::ArrowInstance& a : r.diagnostics().force_arrows()) {
-    const glm::vec2 base = testing::screen_position(view.camera, kWidth, kHeight, a.base);
-    const glm::vec2 tip = testing::screen_position(view.camera, kWidth, kHeight, a.base + a.vector);
+    const glm::vec2 base =
+        testing::screen_position(view.camera, kShippedWidth, kShippedHeight, a.base);
+    const glm::vec2 tip =
+        testing::screen_position(view.camera, kShippedWidth, kShippedHeight, a.base + a.vector);
     out.push_back(glm::length(tip - base));
   }
   return out;

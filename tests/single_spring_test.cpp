@@ -14,22 +14,18 @@
 namespace clothlab {
 namespace {
 
-constexpr double kMass = 0.1, kStiffness = 100.0, kRest = 0.5, kG = 9.81;
-const double kOmega = std::sqrt(kStiffness / kMass);
-const double kPeriod = 2.0 * std::numbers::pi / kOmega;
-const double kAmplitude = kMass * kG / kStiffness;
-
-double exact_y(double t) {
-  return -kRest - kAmplitude * (1.0 - std::cos(kOmega * t));
-}
+using testing::kGravity, testing::kSpringAmplitude, testing::kSpringMass;
+using testing::kSpringOmega, testing::kSpringRest, testing::kSpringStiffness;
+using testing::spring_exact_y;
+const double kPeriod = 2.0 * std::numbers::pi / kSpringOmega;
 
 struct Trajectory {
   std::vector<double> t, y, energy;
 };
 
 Trajectory simulate(IntegratorKind kind, double dt, long steps, bool with_energy = false) {
-  const auto s_owner =
-      testing::solver<double>(testing::single_spring(kMass, kStiffness, kRest, kind, dt));
+  const auto s_owner = testing::solver<double>(
+      testing::single_spring(kSpringMass, kSpringStiffness, kSpringRest, kind, dt));
   Solver& s = *s_owner;
   Trajectory r;
   for (long k = 0; k <= steps; ++k) {
@@ -45,7 +41,7 @@ Trajectory simulate(IntegratorKind kind, double dt, long steps, bool with_energy
 
 // Mean period from the upward crossings of the equilibrium, linearly interpolated.
 double measured_period(const Trajectory& r) {
-  const double eq = -kRest - kAmplitude;
+  const double eq = -kSpringRest - kSpringAmplitude;
   std::vector<double> crossings;
   for (std::size_t k = 1; k < r.y.size(); ++k) {
     const double a = r.y[k - 1] - eq, b = r.y[k] - eq;
@@ -67,7 +63,7 @@ TEST_P(SecondOrderOrBetter, PeriodAndAmplitudeMatchClosedFormWithinATenthOfAPerc
   const double dt = kPeriod / 1000.0;
   const Trajectory r = simulate(GetParam(), dt, 10 * 1000);
   EXPECT_NEAR(measured_period(r) / kPeriod, 1.0, 1e-3);
-  EXPECT_NEAR(measured_amplitude(r) / kAmplitude, 1.0, 1e-3);
+  EXPECT_NEAR(measured_amplitude(r) / kSpringAmplitude, 1.0, 1e-3);
 }
 
 INSTANTIATE_TEST_SUITE_P(SingleSpring, SecondOrderOrBetter,
@@ -87,7 +83,7 @@ TEST(SingleSpring, SymplecticEulerEnergyStaysBoundedOverAHundredPeriods) {
   const std::size_t per_period = 1000;
   const Trajectory r =
       simulate(IntegratorKind::symplectic_euler, kPeriod / per_period, 100 * per_period, true);
-  const double oscillation_energy = 0.5 * kStiffness * kAmplitude * kAmplitude;
+  const double oscillation_energy = 0.5 * kSpringStiffness * kSpringAmplitude * kSpringAmplitude;
   const double first = period_mean(r.energy, 0, per_period);
   const double last = period_mean(r.energy, r.energy.size() - 1 - per_period, per_period);
   // No drift: the period-mean energy moves by less than 0.1 % of the oscillation energy.
@@ -100,7 +96,7 @@ TEST(SingleSpring, ExplicitEulerEnergyGrows) {
   const std::size_t per_period = 1000;
   const Trajectory r =
       simulate(IntegratorKind::explicit_euler, kPeriod / per_period, 100 * per_period, true);
-  const double oscillation_energy = 0.5 * kStiffness * kAmplitude * kAmplitude;
+  const double oscillation_energy = 0.5 * kSpringStiffness * kSpringAmplitude * kSpringAmplitude;
   // |1 + i w dt|^2 per step: (1 + (2 pi / 1000)^2)^100000 = e^3.95 = 52x the oscillation energy.
   const double gained = r.energy.back() - r.energy.front();
   EXPECT_GT(gained, 20.0 * oscillation_energy);
@@ -109,26 +105,26 @@ TEST(SingleSpring, ExplicitEulerEnergyGrows) {
 }
 
 TEST(SingleSpring, DampedSpringSettlesAtTheEquilibriumStretch) {
-  Scene scene =
-      testing::single_spring(kMass, kStiffness, kRest, IntegratorKind::symplectic_euler, 1e-4);
+  Scene scene = testing::single_spring(kSpringMass, kSpringStiffness, kSpringRest,
+                                       IntegratorKind::symplectic_euler, 1e-4);
   scene.springs.damping = 2.0;  // damping ratio 0.32: decays as e^(-10 t)
   const auto s_owner = testing::solver<double>(scene);
   Solver& s = *s_owner;
   ASSERT_TRUE(s.advance(3.0).ok());
-  EXPECT_NEAR(s.position(1)[1], -kRest - kAmplitude, 1e-9);  // stretch m g / k
+  EXPECT_NEAR(s.position(1)[1], -kSpringRest - kSpringAmplitude, 1e-9);  // stretch m g / k
   EXPECT_NEAR(s.velocity(1)[1], 0.0, 1e-8);
 }
 
 // Largest position error over [0, 0.5 s] against the closed form. (The error at one instant is
 // a poor measure: its curve crosses zero, which makes the ratio of two runs erratic.)
 double max_error_over_half_second(IntegratorKind kind, long steps) {
-  const auto s_owner = testing::solver<double>(
-      testing::single_spring(kMass, kStiffness, kRest, kind, 0.5 / double(steps)));
+  const auto s_owner = testing::solver<double>(testing::single_spring(
+      kSpringMass, kSpringStiffness, kSpringRest, kind, 0.5 / double(steps)));
   Solver& s = *s_owner;
   double worst = 0.0;
   for (long k = 0; k < steps; ++k) {
     EXPECT_TRUE(s.step(1).ok());
-    worst = std::max(worst, std::abs(s.position(1)[1] - exact_y(s.time())));
+    worst = std::max(worst, std::abs(s.position(1)[1] - spring_exact_y(s.time())));
   }
   return worst;
 }

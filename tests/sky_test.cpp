@@ -14,15 +14,14 @@
 namespace clothlab::vis {
 namespace {
 
-constexpr float kPi = std::numbers::pi_v<float>;
-
 float degrees_between(glm::vec3 a, glm::vec3 b) {
   const float c = glm::dot(glm::normalize(a), glm::normalize(b));
-  return std::acos(std::clamp(c, -1.0f, 1.0f)) * 180.0f / kPi;
+  return std::acos(std::clamp(c, -1.0f, 1.0f)) * 180.0f / std::numbers::pi_v<float>;
 }
 
 glm::vec3 from_elevation_azimuth(float elevation_deg, float azimuth_deg) {
-  const float e = elevation_deg * kPi / 180.0f, a = azimuth_deg * kPi / 180.0f;
+  const float e = elevation_deg * std::numbers::pi_v<float> / 180.0f,
+              a = azimuth_deg * std::numbers::pi_v<float> / 180.0f;
   return {std::cos(e) * std::cos(a), std::sin(e), std::cos(e) * std::sin(a)};
 }
 

@@ -22,7 +22,7 @@
 namespace clothlab {
 namespace {
 
-constexpr int kW = 240, kH = 240;
+constexpr int kTangentW = 240, kTangentH = 240;
 
 struct Layout {
   const char* name;
@@ -69,7 +69,9 @@ Image tilted_map(const Layout& layout, Solver& solver, glm::vec3 seen) {
 
 class TangentFrame : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() { renderer_ = std::make_unique<vis::HeadlessRenderer>(kW, kH); }
+  static void SetUpTestSuite() {
+    renderer_ = std::make_unique<vis::HeadlessRenderer>(kTangentW, kTangentH);
+  }
   static void TearDownTestSuite() { renderer_.reset(); }
 
   // From above; mode 6 with a plain white albedo, no relief of its own, no diffusion, sky, ambient
@@ -107,7 +109,7 @@ class TangentFrame : public ::testing::Test {
     for (float x = -0.55f; x <= 0.56f; x += 0.22f)
       for (float z = -0.55f; z <= 0.56f; z += 0.22f)
         out.push_back(testing::srgb_byte_to_linear(
-            img[testing::pixel_index(v.camera, kW, kH, {x, 0.5f, z}) + 1]));
+            img[testing::pixel_index(v.camera, kTangentW, kTangentH, {x, 0.5f, z}) + 1]));
     return out;
   }
 

@@ -37,6 +37,18 @@ inline Scene single_spring(double m, double k, double L, IntegratorKind integrat
   return s;
 }
 
+// The single spring of the convergence tests: 0.1 kg on 100 N/m, rest length 0.5 m. Released at
+// rest at its rest length, the free vertex follows y(t) = -L - A (1 - cos(w t)) with
+// A = m g / k and w = sqrt(k / m).
+inline constexpr double kSpringMass = 0.1, kSpringStiffness = 100.0, kSpringRest = 0.5;
+inline constexpr double kGravity = 9.81;
+inline const double kSpringOmega = std::sqrt(kSpringStiffness / kSpringMass);
+inline const double kSpringAmplitude = kSpringMass * kGravity / kSpringStiffness;
+
+inline double spring_exact_y(double t) {
+  return -kSpringRest - kSpringAmplitude * (1.0 - std::cos(kSpringOmega * t));
+}
+
 // A square sheet in the x-y plane hanging down from y = 0.
 inline Scene sheet(int res, double size, double mass, double stiffness, IntegratorKind integrator,
                    double dt) {

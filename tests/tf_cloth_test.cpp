@@ -39,7 +39,7 @@ constexpr int kNu = 21, kNv = 14;
 // A 1.2 m x 0.8 m sheet (0.3 kg, 300 N/m, damped, drag) pinned at both top corners and the
 // middle of its top edge, in a gusty wind whose force depends on the surface normals, the
 // velocities and the seeded noise.
-Scene windy(IntegratorKind kind) {
+Scene tf_windy(IntegratorKind kind) {
   Scene s = testing::sheet(kNu, 1.0, 0.3, 300.0, kind, 1e-3);
   s.cloths[0].size = {1.2, 0.8};
   s.cloths[0].resolution = {kNu, kNv};
@@ -58,7 +58,7 @@ Scene windy(IntegratorKind kind) {
   return s;
 }
 
-double largest_difference(const Solver& a, const Solver& b) {
+double tf_largest_difference(const Solver& a, const Solver& b) {
   double d = 0.0;
   for (int i = 0; i < static_cast<int>(a.vertex_count()); ++i) {
     const Vec3d p = a.position(i), q = b.position(i);
@@ -67,7 +67,7 @@ double largest_difference(const Solver& a, const Solver& b) {
   return d;
 }
 
-Eigen::Vector3d at(const Solver& s, int i) {
+Eigen::Vector3d vertex_at(const Solver& s, int i) {
   const Vec3d p = s.position(i);
   return {p[0], p[1], p[2]};
 }
@@ -82,7 +82,7 @@ class TfClothTest : public testing::GlContextTest {
  protected:
   // 0.4 s of the windy sheet on both backends.
   static void follows_the_cpu(IntegratorKind kind) {
-    const Scene scene = windy(kind);
+    const Scene scene = tf_windy(kind);
     const auto cpu = testing::solver<float>(scene, SpringKernel::neighbour_list);
     const auto tf = tf_solver(scene);
     ASSERT_EQ(tf->dt(), cpu->dt());
@@ -90,7 +90,7 @@ class TfClothTest : public testing::GlContextTest {
     const auto start = testing::solver<float>(scene, SpringKernel::neighbour_list);
     ASSERT_TRUE(cpu->step(steps).ok());
     ASSERT_TRUE(tf->step(steps).ok());
-    const double d = largest_difference(*cpu, *tf), moved = largest_difference(*start, *tf);
+    const double d = tf_largest_difference(*cpu, *tf), moved = tf_largest_difference(*start, *tf);
     std::printf("%s, %ld steps to 0.4 s: transform feedback %.2e m from the CPU, moved %.3f m\n",
                 to_string(kind), steps, d, moved);
     EXPECT_LT(d, 1e-4);
@@ -116,7 +116,7 @@ INSTANTIATE_TEST_SUITE_P(Rules, TfClothIntegrators,
                          });
 
 TEST_F(TfClothTest, SameBytesRunToRun) {
-  const Scene scene = windy(IntegratorKind::symplectic_euler);
+  const Scene scene = tf_windy(IntegratorKind::symplectic_euler);
   const auto a = tf_solver(scene), b = tf_solver(scene);
   ASSERT_TRUE(a->step(200).ok());
   ASSERT_TRUE(b->step(200).ok());
@@ -130,7 +130,7 @@ TEST_F(TfClothTest, SameBytesRunToRun) {
 // transform feedback: every corner of every triangle carries the triangle's unit normal, equal to
 // the CPU's face normal normalize((x1 - x0) x (x2 - x0)) of the same positions.
 TEST_F(TfClothTest, GeometryShaderNormalsAreTheCpuFaceNormals) {
-  const Scene scene = windy(IntegratorKind::symplectic_euler);
+  const Scene scene = tf_windy(IntegratorKind::symplectic_euler);
   const auto tf = tf_solver(scene);
   ASSERT_TRUE(tf->step(300).ok());  // a folded, moving sheet
   const DeviceCloth& device = *tf->device_cloth();
@@ -173,8 +173,9 @@ TEST_F(TfClothTest, GeometryShaderNormalsAreTheCpuFaceNormals) {
   device.read_normals(arrows.data());
   const Eigen::Vector3d arrow_0(arrows[0], arrows[1], arrows[2]);
   for (std::size_t t = 0; t < triangles.size(); ++t) {
-    const Eigen::Vector3d p0 = at(*tf, triangles[t][0]), p1 = at(*tf, triangles[t][1]),
-                          p2 = at(*tf, triangles[t][2]);
+    const Eigen::Vector3d p0 = vertex_at(*tf, triangles[t][0]),
+                          p1 = vertex_at(*tf, triangles[t][1]),
+                          p2 = vertex_at(*tf, triangles[t][2]);
     const Eigen::Vector3d c = (p1 - p0).cross(p2 - p0);
     const Eigen::Vector3d n = c / c.norm();
     if (std::count(triangles[t].begin(), triangles[t].end(), 0) > 0)
@@ -195,7 +196,7 @@ TEST_F(TfClothTest, GeometryShaderNormalsAreTheCpuFaceNormals) {
 TEST_F(TfClothTest, CopiesMoveAsTheOriginal) {
   constexpr int kCopies = 4;
   constexpr double kSpacing = 2.0;  // a power of two: the offsets add no rounding of their own
-  Scene scene = windy(IntegratorKind::symplectic_euler);
+  Scene scene = tf_windy(IntegratorKind::symplectic_euler);
   scene.forces.wind.enabled = false;  // the gusts vary across space
   const auto tf = tf_solver(with_copies(scene, kCopies, kSpacing));
   ASSERT_TRUE(tf->step(300).ok());
@@ -214,7 +215,7 @@ TEST_F(TfClothTest, CopiesMoveAsTheOriginal) {
 // The panel's backend switch carries the motion over to transform feedback and back; an
 // integrator the path does not run is refused with the key named and the motion kept.
 TEST_F(TfClothTest, PanelSwitchCarriesTheMotionOver) {
-  Scene scene = windy(IntegratorKind::symplectic_euler);
+  Scene scene = tf_windy(IntegratorKind::symplectic_euler);
   scene.solver.backend = Backend::cpu;
   vis::SimSession session(scene, make_backend_solver);
   const FrameStepper stepper;
@@ -249,14 +250,14 @@ TEST(TfClothRefusal, UnsupportedOptionsNameTheirKey) {
     }
     return std::string();
   };
-  Scene s = windy(IntegratorKind::verlet);
+  Scene s = tf_windy(IntegratorKind::verlet);
   EXPECT_NE(message(s).find("solver.integrator"), std::string::npos) << message(s);
   EXPECT_NE(message(s).find("not verlet"), std::string::npos) << message(s);
-  s = windy(IntegratorKind::symplectic_euler);
+  s = tf_windy(IntegratorKind::symplectic_euler);
   EXPECT_EQ(message(s), "");
   s.solver.precision = Precision::f64;
   EXPECT_NE(message(s).find("solver.precision"), std::string::npos) << message(s);
-  s = windy(IntegratorKind::symplectic_euler);
+  s = tf_windy(IntegratorKind::symplectic_euler);
   s.cloths[0].shape = "tube";
   s.cloths[0].pins.clear();
   EXPECT_NE(message(s).find("cloth.shape"), std::string::npos) << message(s);
@@ -267,7 +268,7 @@ TEST(TfClothRefusal, UnsupportedOptionsNameTheirKey) {
 // included, and it shows the moved cloth; the probe picks the same vertex from it.
 TEST(TfClothRender, DrawsTheCapturedBufferAsTheCpuDrawsItsState) {
   vis::HeadlessRenderer renderer(320, 240);  // its context is current from here on
-  Scene scene = windy(IntegratorKind::symplectic_euler);
+  Scene scene = tf_windy(IntegratorKind::symplectic_euler);
   scene.forces.wind.enabled = false;
   scene = with_copies(scene, 2, 2.0);
   const auto tf = tf_solver(scene);

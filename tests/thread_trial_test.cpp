@@ -11,7 +11,7 @@ namespace {
 // Feeds frames of `steps` steps at `cost` seconds per step while the trial asks for `threads`,
 // one frame per 1/60 s from `now`, until it asks for something else or `frames` have passed;
 // returns the time reached.
-double run(ThreadTrial& trial, int threads, double cost, int frames, double now) {
+double run_trial(ThreadTrial& trial, int threads, double cost, int frames, double now) {
   for (int f = 0; f < frames && trial.threads() == threads; ++f) {
     trial.record(10, 10 * cost, now);
     now += 1.0 / 60.0;
@@ -90,9 +90,9 @@ TEST(ThreadTrial, TriesAgainWhenTheLoadMayHaveChanged) {
   ThreadTrial trial(0);
   double now = decide(trial, 1e-3, 0.5e-3, 0.0);
   ASSERT_EQ(trial.threads(), 0);
-  now = run(trial, 0, 0.5e-3, 60, now);  // a second later: still decided
+  now = run_trial(trial, 0, 0.5e-3, 60, now);  // a second later: still decided
   EXPECT_FALSE(trial.trying());
-  now = run(trial, 0, 0.5e-3, int(60 * ThreadTrial::kRetrialSeconds), now);
+  now = run_trial(trial, 0, 0.5e-3, int(60 * ThreadTrial::kRetrialSeconds), now);
   EXPECT_TRUE(trial.trying());
   EXPECT_EQ(trial.threads(), 1);
   decide(trial, 1e-3, 5e-3, now);  // another process now holds a core
@@ -106,20 +106,20 @@ TEST(ThreadTrial, AClearWinnerIsTriedAgainLessOften) {
   double now = decide(trial, 1.6e-3, 1e-3, 0.0);  // large_sheet in the window: 16 against 10 ms
   EXPECT_EQ(trial.retrial_seconds(), ThreadTrial::kRetrialSeconds);
   for (double wait : {20.0, 40.0, 80.0, 80.0}) {
-    now = run(trial, 0, 1e-3, 100000, now);  // until the next trial starts
+    now = run_trial(trial, 0, 1e-3, 100000, now);  // until the next trial starts
     EXPECT_EQ(trial.threads(), 1);
     now = decide(trial, 1.6e-3, 1e-3, now);
     EXPECT_EQ(trial.threads(), 0);
     EXPECT_EQ(trial.retrial_seconds(), wait);
   }
   // A close outcome (the parallel step only 1.2x faster) sets the wait back.
-  now = run(trial, 0, 1e-3, 100000, now);
+  now = run_trial(trial, 0, 1e-3, 100000, now);
   now = decide(trial, 1.2e-3, 1e-3, now);
   EXPECT_EQ(trial.threads(), 0);
   EXPECT_EQ(trial.retrial_seconds(), ThreadTrial::kRetrialSeconds);
   // So does a clear win of the other side.
-  now = decide(trial, 1e-3, 2e-3, run(trial, 0, 1e-3, 100000, now));
-  now = decide(trial, 1e-3, 2e-3, run(trial, 1, 1e-3, 100000, now));
+  now = decide(trial, 1e-3, 2e-3, run_trial(trial, 0, 1e-3, 100000, now));
+  now = decide(trial, 1e-3, 2e-3, run_trial(trial, 1, 1e-3, 100000, now));
   EXPECT_EQ(trial.threads(), 1);
   EXPECT_EQ(trial.retrial_seconds(), 2.0 * ThreadTrial::kRetrialSeconds);
 }

@@ -21,7 +21,7 @@
 namespace clothlab {
 namespace {
 
-constexpr int kW = 320, kH = 240;
+constexpr int kSeamW = 320, kSeamH = 240;
 constexpr float kRadius = 0.3f, kTop = 1.0f, kLength = 0.6f;
 
 // A vertical cylinder of cloth, free and weightless (it stays as built), its seam along +x.
@@ -54,7 +54,7 @@ glm::vec3 surface(float a) {
 class TubeSeam : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    renderer_ = std::make_unique<vis::HeadlessRenderer>(kW, kH);
+    renderer_ = std::make_unique<vis::HeadlessRenderer>(kSeamW, kSeamH);
     solver_ = make_solver(tube());
     renderer_->set_cloth(*solver_);
     RenderSpec spec;
@@ -83,15 +83,15 @@ class TubeSeam : public ::testing::Test {
     std::vector<std::uint8_t> img = test::render_frame(*renderer_, *solver_, v);
     if (const char* dir = std::getenv("CLOTHLAB_TEST_PNG_DIR")) {  // to look at by eye
       Image out;
-      out.width = kW;
-      out.height = kH;
+      out.width = kSeamW;
+      out.height = kSeamH;
       out.rgba = img;
       write_png(out, std::string(dir) + "/" + name + ".png");
     }
     return img;
   }
   static double luminance(const std::vector<std::uint8_t>& img, int x, int y) {
-    const std::size_t k = 4 * (static_cast<std::size_t>(y) * kW + static_cast<std::size_t>(x));
+    const std::size_t k = 4 * (static_cast<std::size_t>(y) * kSeamW + static_cast<std::size_t>(x));
     return 0.2126 * testing::srgb_byte_to_linear(img[k]) +
            0.7152 * testing::srgb_byte_to_linear(img[k + 1]) +
            0.0722 * testing::srgb_byte_to_linear(img[k + 2]);
@@ -100,7 +100,7 @@ class TubeSeam : public ::testing::Test {
   // at angle a lands: the mean absolute difference of horizontally neighbouring pixels.
   static double horizontal_detail(const std::vector<std::uint8_t>& img, const vis::ViewSettings& v,
                                   float a, int half) {
-    const glm::vec2 c = testing::screen_position(v.camera, kW, kH, surface(a));
+    const glm::vec2 c = testing::screen_position(v.camera, kSeamW, kSeamH, surface(a));
     const int cx = static_cast<int>(c.x), cy = static_cast<int>(c.y);
     double sum = 0.0;
     int count = 0;
@@ -149,7 +149,7 @@ TEST_F(TubeSeam, ColourByHeightIsSmoothAcrossTheSeam) {
   v.color.field = vis::ScalarField::height;
   v.color.shaded = false;
   const std::vector<std::uint8_t> img = shoot(v, "tube_seam_height");
-  const glm::vec2 c = testing::screen_position(v.camera, kW, kH, surface(0.0f));
+  const glm::vec2 c = testing::screen_position(v.camera, kSeamW, kSeamH, surface(0.0f));
   const int cy = static_cast<int>(c.y);
   // Along the row through the seam every pixel has the same height: the same colour.
   const double ref = luminance(img, static_cast<int>(c.x), cy);
@@ -174,10 +174,10 @@ TEST_F(TubeSeam, WeaveTangentFrameIsContinuousAcrossTheSeam) {
   const std::vector<std::uint8_t> img = shoot(v, "tube_seam_mode6");
   renderer_->renderer().set_normal_map(nullptr);
   const float quad = 2.0f * 3.14159265f / 24.0f;
-  const glm::vec2 s0 = testing::screen_position(v.camera, kW, kH, surface(-2.0f * quad));
-  const glm::vec2 s1 = testing::screen_position(v.camera, kW, kH, surface(1.0f * quad));
-  const glm::vec2 far0 = testing::screen_position(v.camera, kW, kH, surface(-5.0f * quad));
-  const glm::vec2 far1 = testing::screen_position(v.camera, kW, kH, surface(-3.0f * quad));
+  const glm::vec2 s0 = testing::screen_position(v.camera, kSeamW, kSeamH, surface(-2.0f * quad));
+  const glm::vec2 s1 = testing::screen_position(v.camera, kSeamW, kSeamH, surface(1.0f * quad));
+  const glm::vec2 far0 = testing::screen_position(v.camera, kSeamW, kSeamH, surface(-5.0f * quad));
+  const glm::vec2 far1 = testing::screen_position(v.camera, kSeamW, kSeamH, surface(-3.0f * quad));
   const int y = static_cast<int>(s0.y);
   auto largest_step = [&](float xa, float xb) {
     double m = 0.0;

@@ -19,7 +19,7 @@ using testing::Outcome;
 // `steps` steps of h from disturbed(); grid: the row-sweep model's grid path, else the
 // neighbour-list model's list path in the grid path's colours.
 template <class T>
-Outcome<T> run(const Scene& scene, bool grid, int threads, int steps, T h) {
+Outcome<T> run_vbd(const Scene& scene, bool grid, int threads, int steps, T h) {
   return testing::run_grid_or_list<T>(
       scene, grid, threads, steps, h,
       [&](const Model<T>& m) {
@@ -38,7 +38,8 @@ template <class T>
 void expect_same_as_list(Scene scene, double tolerance, double h = 1.0 / 240.0) {
   scene.solver.integrator = IntegratorKind::vbd;
   scene.solver.iterations = 12;
-  const Outcome<T> grid = run<T>(scene, true, 2, 3, T(h)), list = run<T>(scene, false, 1, 3, T(h));
+  const Outcome<T> grid = run_vbd<T>(scene, true, 2, 3, T(h)),
+                   list = run_vbd<T>(scene, false, 1, 3, T(h));
   const auto& r = scene.cloths[0].resolution;
   EXPECT_GT(grid.moved, 1e-3) << r[0] << "x" << r[1];
   EXPECT_LT(largest_difference(grid.state, list.state, false), tolerance) << r[0] << "x" << r[1];
@@ -76,9 +77,9 @@ TEST(VbdGrid, SameBitsOnOneTwoAndThreeThreads) {
   Scene s = testing::grid_sheet(70, 90);
   s.solver.integrator = IntegratorKind::vbd;
   s.solver.iterations = 8;
-  const Outcome<float> one = run<float>(s, true, 1, 2, 1.0f / 60.0f);
+  const Outcome<float> one = run_vbd<float>(s, true, 1, 2, 1.0f / 60.0f);
   for (int threads : {2, 3}) {
-    const Outcome<float> many = run<float>(s, true, threads, 2, 1.0f / 60.0f);
+    const Outcome<float> many = run_vbd<float>(s, true, threads, 2, 1.0f / 60.0f);
     EXPECT_EQ(largest_difference(one.state, many.state, false), 0.0) << threads << " threads";
     EXPECT_EQ(largest_difference(one.state, many.state, true), 0.0) << threads << " threads";
   }

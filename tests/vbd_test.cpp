@@ -15,12 +15,12 @@
 namespace clothlab {
 namespace {
 
-constexpr double kH = 1.0 / 60.0;
+constexpr double kVbdH = 1.0 / 60.0;
 
 // An 8 x 8 sheet with every implicit term on (stiff springs, along-spring damping, drag, two
 // pins), started stretched and moving so that the step is far from its initial guess.
 Scene stepped_sheet(double stiffness) {
-  Scene scene = testing::sheet(8, 1.0, 0.2, stiffness, IntegratorKind::vbd, kH);
+  Scene scene = testing::sheet(8, 1.0, 0.2, stiffness, IntegratorKind::vbd, kVbdH);
   scene.cloths[0].pins = {{0, 0}, {7, 0}};
   scene.springs.damping = 0.05;
   scene.forces.drag = 0.01;
@@ -51,7 +51,7 @@ Eigen::VectorXd residual(const Model<double>& m, ForceWorkspace<double>& ws,
   for (std::size_t i = 0; i < m.n; ++i)
     for (int a = 0; a < 3; ++a) {
       end.pos.axis(a)[i] = x[Eigen::Index(3 * i + a)];
-      end.vel.axis(a)[i] = (x[Eigen::Index(3 * i + a)] - start.pos.axis(a)[i]) / kH;
+      end.vel.axis(a)[i] = (x[Eigen::Index(3 * i + a)] - start.pos.axis(a)[i]) / kVbdH;
     }
   Vec3Array<double> f;
   f.resize(m.n);
@@ -61,8 +61,8 @@ Eigen::VectorXd residual(const Model<double>& m, ForceWorkspace<double>& ws,
     if (m.inv_mass[i] == 0.0) continue;
     for (int a = 0; a < 3; ++a)
       r[Eigen::Index(3 * i + a)] = m.mass[i] * (x[Eigen::Index(3 * i + a)] - start.pos.axis(a)[i] -
-                                                kH * start.vel.axis(a)[i]) -
-                                   kH * kH * f.axis(a)[i];
+                                                kVbdH * start.vel.axis(a)[i]) -
+                                   kVbdH * kVbdH * f.axis(a)[i];
   }
   return r;
 }
@@ -75,7 +75,7 @@ Eigen::VectorXd newton_step(const Model<double>& m, const State<double>& start) 
   Eigen::VectorXd x(n);
   for (std::size_t i = 0; i < m.n; ++i)
     for (int a = 0; a < 3; ++a)
-      x[Eigen::Index(3 * i + a)] = start.pos.axis(a)[i] + kH * start.vel.axis(a)[i];
+      x[Eigen::Index(3 * i + a)] = start.pos.axis(a)[i] + kVbdH * start.vel.axis(a)[i];
   for (int it = 0; it < 30; ++it) {
     const Eigen::VectorXd r = residual(m, ws, start, x);
     if (r.norm() < 1e-15) break;
@@ -92,7 +92,7 @@ Eigen::VectorXd newton_step(const Model<double>& m, const State<double>& start) 
   return x;
 }
 
-double rms_distance(const Vec3Array<double>& p, const Eigen::VectorXd& x) {
+double vbd_rms_distance(const Vec3Array<double>& p, const Eigen::VectorXd& x) {
   double sum = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i)
     for (int a = 0; a < 3; ++a) sum += std::pow(p.axis(a)[i] - x[Eigen::Index(3 * i + a)], 2);
@@ -114,8 +114,8 @@ std::vector<double> distances_to_backward_euler(double stiffness, const std::vec
     spec.iterations = iterations;
     auto vbd = make_integrator<double>(m, spec);
     State<double> s = start;
-    vbd->step(sys, s, 0.0, kH);
-    out.push_back(rms_distance(s.pos, converged));
+    vbd->step(sys, s, 0.0, kVbdH);
+    out.push_back(vbd_rms_distance(s.pos, converged));
   }
   return out;
 }

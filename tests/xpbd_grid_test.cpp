@@ -19,7 +19,7 @@ using testing::Outcome;
 // `steps` substeps of h from disturbed(); grid: the row-sweep model's grid path, else the
 // neighbour-list model's list path in the grid path's order.
 template <class T>
-Outcome<T> run(const Scene& scene, bool grid, int threads, int steps, T h) {
+Outcome<T> run_xpbd(const Scene& scene, bool grid, int threads, int steps, T h) {
   return testing::run_grid_or_list<T>(
       scene, grid, threads, steps, h,
       [&](const Model<T>& m) {
@@ -36,14 +36,15 @@ Outcome<T> run(const Scene& scene, bool grid, int threads, int steps, T h) {
 // Both paths do the same arithmetic per spring in the same order; only the prediction's gravity
 // term is formed differently (m g against f + drag v), so they agree to round-off.
 template <class T>
-void expect_same_as_list(Scene scene, int sweeps, double tolerance) {
+void expect_xpbd_same_as_list(Scene scene, int sweeps, double tolerance) {
   scene.solver.integrator = IntegratorKind::xpbd;
   scene.solver.iterations = sweeps;
   // The list path has neither (tests/small_steps_test.cpp has them).
   scene.solver.tethers = false;
   scene.solver.coarse_stretch = false;
   const T h = T(1.0 / 600.0);
-  const Outcome<T> grid = run<T>(scene, true, 2, 3, h), list = run<T>(scene, false, 1, 3, h);
+  const Outcome<T> grid = run_xpbd<T>(scene, true, 2, 3, h),
+                   list = run_xpbd<T>(scene, false, 1, 3, h);
   EXPECT_GT(grid.moved, 1e-3);
   EXPECT_LT(largest_difference(grid.state, list.state, false), tolerance)
       << scene.cloths[0].resolution[0] << "x" << scene.cloths[0].resolution[1] << ", " << sweeps
@@ -54,23 +55,23 @@ void expect_same_as_list(Scene scene, int sweeps, double tolerance) {
 
 TEST(XpbdGrid, SameAsTheListPathInFloat) {
   for (const Scene& s : testing::band_edge_cases()) {
-    expect_same_as_list<float>(s, 1, 2e-6);
-    expect_same_as_list<float>(s, 3, 2e-6);
+    expect_xpbd_same_as_list<float>(s, 1, 2e-6);
+    expect_xpbd_same_as_list<float>(s, 3, 2e-6);
   }
 }
 
 TEST(XpbdGrid, SameAsTheListPathInDouble) {
   for (const Scene& s : testing::band_edge_cases()) {
-    expect_same_as_list<double>(s, 1, 1e-13);
-    expect_same_as_list<double>(s, 3, 1e-13);
+    expect_xpbd_same_as_list<double>(s, 1, 1e-13);
+    expect_xpbd_same_as_list<double>(s, 3, 1e-13);
   }
 }
 
 TEST(XpbdGrid, SameAsTheListPathWithWind) {
   Scene s = testing::grid_sheet(33, 40);
   s.forces.wind = {true, {3.0, 0.0, 1.0}, 0.5, 7, 1.0, 1.0};
-  expect_same_as_list<float>(s, 2, 2e-6);
-  expect_same_as_list<double>(s, 2, 1e-13);
+  expect_xpbd_same_as_list<float>(s, 2, 2e-6);
+  expect_xpbd_same_as_list<double>(s, 2, 1e-13);
 }
 
 // Several bands in each phase, so two and three threads really share the work.
@@ -79,9 +80,9 @@ TEST(XpbdGrid, SameBitsOnOneTwoAndThreeThreads) {
   s.solver.integrator = IntegratorKind::xpbd;
   for (int sweeps : {1, 2}) {
     s.solver.iterations = sweeps;
-    const Outcome<float> one = run<float>(s, true, 1, 2, 1e-3f);
+    const Outcome<float> one = run_xpbd<float>(s, true, 1, 2, 1e-3f);
     for (int threads : {2, 3}) {
-      const Outcome<float> many = run<float>(s, true, threads, 2, 1e-3f);
+      const Outcome<float> many = run_xpbd<float>(s, true, threads, 2, 1e-3f);
       EXPECT_EQ(largest_difference(one.state, many.state, false), 0.0) << threads << " threads";
       EXPECT_EQ(largest_difference(one.state, many.state, true), 0.0) << threads << " threads";
     }

@@ -152,9 +152,9 @@ std::unique_ptr<VideoPipe> open_outputs(const RenderArgs& args, const Scene& sce
       VideoMusic{music ? &music->clip : nullptr, args.frames / args.fps});
 }
 
-void print_summary(const RenderArgs& args, const FrameTimes& t, const Solver& solver,
-                   const vis::HeadlessRenderer& renderer, const vis::ViewSettings& view,
-                   const MusicTrack* music) {
+void print_render_summary(const RenderArgs& args, const FrameTimes& t, const Solver& solver,
+                          const vis::HeadlessRenderer& renderer, const vis::ViewSettings& view,
+                          const MusicTrack* music) {
   const double frames = args.frames;
   const RenderQuality quality = renderer.renderer().quality(view);
   std::string chosen = view.quality == RenderQuality::automatic
@@ -198,7 +198,7 @@ int render_scene(const RenderArgs& args, Scene& scene) {
   if (video) video->finish();
   if (args.probe) print_probe(*solver, renderer, view, args);
   if (args.quiet) return 0;
-  print_summary(args, t, *solver, renderer, view, music);
+  print_render_summary(args, t, *solver, renderer, view, music);
   print_views(renderer.diagnostics(), view);
   return 0;
 }

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <string>
 
+#include "apps/view/message_colours.hpp"
 #include "apps/view/parameter_editors.hpp"
 #include "apps/view/scene_edit.hpp"
 #include "apps/view/views_panel.hpp"
@@ -19,9 +20,6 @@
 
 namespace clothlab::vis {
 namespace {
-
-const ImVec4 kErrorColour{1.0f, 0.45f, 0.4f, 1.0f};
-const ImVec4 kWarningColour{1.0f, 0.8f, 0.3f, 1.0f};
 
 // Integrator, dt, springs, drag, wind: applied to the running motion once an edit is finished.
 // The editors come from the parameter table; solver.backend moves the motion (load_state) to the

@@ -7,14 +7,13 @@
 #include <cstdio>
 #include <exception>
 
+#include "apps/view/message_colours.hpp"
 #include "sim/solver.hpp"
 
 namespace clothlab::vis {
 namespace {
 
 constexpr double kPaceWindowSeconds = 0.5;
-const ImVec4 kWarningColour{1.0f, 0.8f, 0.3f, 1.0f};
-const ImVec4 kErrorColour{1.0f, 0.45f, 0.4f, 1.0f};
 const ImVec4 kRmsColour{0.35f, 0.75f, 1.0f, 1.0f};
 const ImVec4 kMaxColour{1.0f, 0.6f, 0.25f, 1.0f};
 

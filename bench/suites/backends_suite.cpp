@@ -37,13 +37,13 @@ Scene sheets(int res, int copies, int threads) {
 // 1/60 s frame, the frame's substeps at that cost plus what one step() call costs beyond its
 // substep (on the GPU the read-back of the state for the CPU's checks), the median of single
 // step() calls less the batched substep.
-struct Timing {
+struct BackendTiming {
   double step = 0.0, frame = 0.0;  // s
   long steps_per_frame = 0;
 };
 
-Timing time_backend(Solver& solver, double seconds) {
-  Timing t;
+BackendTiming time_backend(Solver& solver, double seconds) {
+  BackendTiming t;
   const auto run = [&](long steps) {
     if (!solver.step(steps).ok()) throw std::runtime_error("the run diverged");
   };
@@ -76,7 +76,7 @@ std::vector<Table> backends_suite(const SuiteOptions& o) {
                "steps per s", "ms per frame", "substeps share"};
   auto add = [&](const std::string& name, const std::string& threads, int res, int copies,
                  Solver& solver) {
-    const Timing m = time_backend(solver, seconds);
+    const BackendTiming m = time_backend(solver, seconds);
     const double substeps = double(m.steps_per_frame) * m.step;
     t.add({name, threads, std::to_string(res) + "x" + std::to_string(res), std::to_string(copies),
            std::to_string(solver.vertex_count()), std::to_string(solver.spring_count()),

@@ -18,7 +18,7 @@ namespace clothlab::bench {
 
 namespace {
 
-struct Variant {
+struct FeatureVariant {
   std::string name;
   std::string kind;  // "used": a part switched on; "unused": present in the scene but inactive
   std::function<void(Scene&)> edit;
@@ -74,7 +74,7 @@ ColliderSpec far_sphere(int k) {
 
 // The parts a scene may use ("used"), the references they are measured against, and parts that
 // are present but inactive ("unused", which must cost nothing).
-std::vector<Variant> feature_variants(FieldExport& fields) {
+std::vector<FeatureVariant> feature_variants(FieldExport& fields) {
   auto none = [](Scene&) {};
   auto wind = [](bool enabled, Vec3d velocity, double gust) {
     return [=](Scene& s) { s.forces.wind = {enabled, velocity, gust, 7, 1.0, 1.0}; };
@@ -128,7 +128,7 @@ struct RoundResults {
   std::vector<double> bare_ns;
 };
 
-RoundResults measure_rounds(const std::vector<Variant>& variants, const Scene& bare_scene,
+RoundResults measure_rounds(const std::vector<FeatureVariant>& variants, const Scene& bare_scene,
                             FieldExport& fields, int rounds, double seconds, std::ostream* log) {
   RoundResults out;
   out.ratios.resize(variants.size());
@@ -155,8 +155,8 @@ RoundResults measure_rounds(const std::vector<Variant>& variants, const Scene& b
 
 // The table's rows, and a collider's cost per vertex in contact: the flat sheet on its floor
 // against the same sheet without it.
-void add_feature_rows(Table& table, const std::vector<Variant>& variants, const RoundResults& r,
-                      int res) {
+void add_feature_rows(Table& table, const std::vector<FeatureVariant>& variants,
+                      const RoundResults& r, int res) {
   for (std::size_t v = 0; v < variants.size(); ++v) {
     const double ratio = median(r.ratios[v]);
     std::string verdict = "-";
@@ -187,7 +187,7 @@ std::vector<Table> features_suite(const SuiteOptions& o) {
   FieldExport fields;
   fields.steps_per_frame = std::max(1L, std::lround(1.0 / 60.0 / bare_scene.solver.dt));
   fields.buffer.resize(3 * static_cast<std::size_t>(res) * res);
-  const std::vector<Variant> variants = feature_variants(fields);
+  const std::vector<FeatureVariant> variants = feature_variants(fields);
   const RoundResults results = measure_rounds(variants, bare_scene, fields, rounds, seconds, o.log);
 
   Table table;

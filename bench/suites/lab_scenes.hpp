@@ -6,6 +6,8 @@
 
 namespace clothlab::bench {
 
+inline constexpr double kFrame = 1.0 / 60.0;  // s, one frame at 60 Hz
+
 struct SheetParams {
   int resolution = 32;      // vertices along each side
   double size = 1.0;        // m

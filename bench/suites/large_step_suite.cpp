@@ -17,10 +17,8 @@ namespace clothlab::bench {
 
 namespace {
 
-constexpr double kFrame = 1.0 / 60.0;
-
 // One configuration of a method: what the table calls it and how the scene is set.
-struct Variant {
+struct LargeStepVariant {
   IntegratorKind kind;
   bool dt_auto = false;
   int substeps = 0;            // 0: automatic (solver.substeps = "auto")
@@ -43,7 +41,7 @@ struct Variant {
 };
 
 // Each method at its defaults, and the settings around them that show what they cost.
-std::vector<Variant> variants(bool quick) {
+std::vector<LargeStepVariant> variants(bool quick) {
   using K = IntegratorKind;
   if (quick) return {{K::symplectic_euler, true}, {K::implicit_euler}, {K::bdf2}, {K::vbd}};
   return {{K::symplectic_euler, true},
@@ -106,14 +104,14 @@ Outcome run(const Scene& scene, double horizon) {
   return o;
 }
 
-double rms(const std::vector<Vec3d>& a, const std::vector<Vec3d>& b) {
+double rms_distance(const std::vector<Vec3d>& a, const std::vector<Vec3d>& b) {
   double sum = 0.0;
   for (std::size_t i = 0; i < a.size(); ++i)
     for (int c = 0; c < 3; ++c) sum += (a[i][c] - b[i][c]) * (a[i][c] - b[i][c]);
   return std::sqrt(sum / double(a.size()));
 }
 
-Scene sheet(int resolution, double stiffness, const Variant& v, int threads) {
+Scene sheet(int resolution, double stiffness, const LargeStepVariant& v, int threads) {
   SheetParams p;
   p.resolution = resolution;
   p.stiffness = stiffness;
@@ -150,15 +148,16 @@ Table frame_table(const SuiteOptions& o) {
             " sheet, k0 = 1e3, 2 threads, float";
   t.columns = {"method",          "dt (s)",       "ms per step",
                "steps per frame", "ms per frame", "x one explicit step"};
-  const Variant explicit_step{IntegratorKind::symplectic_euler, true};
+  const LargeStepVariant explicit_step{IntegratorKind::symplectic_euler, true};
   Scene se = sheet(res, 1e3, explicit_step, 2);
   se.solver.precision = Precision::f32;
   const double explicit_dt = make_solver(se)->dt();
   const double e_ms = ms_per_step(se, 5, o.quick ? 5 : 50);
   const double e_steps = std::ceil(kFrame / explicit_dt);
   using K = IntegratorKind;
-  for (const Variant& v :
-       {Variant{K::vbd}, Variant{K::vbd, false, 1, 10}, Variant{K::xpbd}, Variant{K::bdf2}}) {
+  for (const LargeStepVariant& v :
+       {LargeStepVariant{K::vbd}, LargeStepVariant{K::vbd, false, 1, 10}, LargeStepVariant{K::xpbd},
+        LargeStepVariant{K::bdf2}}) {
     Scene sv = sheet(res, 1e3, v, 2);
     sv.solver.precision = Precision::f32;
     const double ms = ms_per_step(sv, 2, o.quick ? 3 : 5);
@@ -216,17 +215,17 @@ Table solve_table(const SuiteOptions& o) {
   return t;
 }
 
-struct Point {
+struct LadderPoint {
   std::string label;
   double rms, cost;
 };
 
 // One method's ladder at stiffness k0 into `table` and `points`: rungs until the error is below
 // 0.01 mm, the next rung would take more than `budget` wall seconds, or 6 rungs.
-void run_ladder(const Ladder& l, double k0, int res, double horizon, double budget,
-                const Outcome& reference, int threads, Table& table, std::vector<Point>& points,
-                std::ostream* log) {
-  Variant v{l.kind, l.explicit_step};
+void run_step_ladder(const Ladder& l, double k0, int res, double horizon, double budget,
+                     const Outcome& reference, int threads, Table& table,
+                     std::vector<LadderPoint>& points, std::ostream* log) {
+  LargeStepVariant v{l.kind, l.explicit_step};
   Scene base = sheet(res, k0, v, threads);
   const double start = make_solver(base)->dt();
   base.solver.dt_auto = false;
@@ -239,7 +238,7 @@ void run_ladder(const Ladder& l, double k0, int res, double horizon, double budg
     if (xpbd) s.solver.substeps = 10 << rung;
     const Outcome r = run(s, horizon);
     last_wall = r.cost * horizon;
-    const double e = r.failure.empty() ? rms(r.positions, reference.positions) : NAN;
+    const double e = r.failure.empty() ? rms_distance(r.positions, reference.positions) : NAN;
     const std::string label = std::string(to_string(l.kind)) + " dt " + for_people(num(r.dt)) +
                               (xpbd ? " x" + std::to_string(r.substeps) : "");
     table.add({num(k0), to_string(l.kind), num(r.dt), std::to_string(r.substeps), num(e),
@@ -283,12 +282,12 @@ std::vector<Table> large_step_suite(const SuiteOptions& o) {
     rs.solver.dt = reference_dt;
     const Outcome reference = run(rs, horizon);
     if (o.log) *o.log << "largestep: k0 " << k0 << " reference done\n";
-    std::vector<Point> points;
+    std::vector<LadderPoint> points;
     double explicit_cost = NAN;
-    for (const Variant& v : variants(o.quick)) {
+    for (const LargeStepVariant& v : variants(o.quick)) {
       const Scene s = sheet(res, k0, v, o.threads);
       const Outcome r = run(s, horizon);
-      const double e = r.failure.empty() ? rms(r.positions, reference.positions) : NAN;
+      const double e = r.failure.empty() ? rms_distance(r.positions, reference.positions) : NAN;
       data.add({num(k0), v.label(), num(r.dt), std::to_string(r.substeps), num(e), num(r.cost),
                 r.failure.empty() ? "ok" : "diverged: " + r.failure});
       if (o.log) *o.log << "largestep: k0 " << k0 << " " << v.label() << ": rms " << e << " m\n";
@@ -299,11 +298,11 @@ std::vector<Table> large_step_suite(const SuiteOptions& o) {
       }
     }
     for (const Ladder& l : ladders())
-      run_ladder(l, k0, res, horizon, o.quick ? 0.2 : 20.0, reference, o.threads, ladder, points,
-                 o.log);
+      run_step_ladder(l, k0, res, horizon, o.quick ? 0.2 : 20.0, reference, o.threads, ladder,
+                      points, o.log);
     for (double level : {0.06, 0.025, 0.01, 1e-3, 1e-4}) {
-      const Point* best = nullptr;
-      for (const Point& p : points)
+      const LadderPoint* best = nullptr;
+      for (const LadderPoint& p : points)
         if (p.rms <= level && (!best || p.cost < best->cost)) best = &p;
       summary.add({num(k0), num(level), best ? best->label : "none", best ? num(best->rms) : "-",
                    best ? num(best->cost) : "-", num(explicit_cost),

@@ -12,8 +12,6 @@
 namespace clothlab::bench {
 namespace {
 
-constexpr double kFrame = 1.0 / 60.0;
-
 std::vector<double> positions(const Solver& solver) {
   std::vector<double> p;
   p.reserve(3 * solver.vertex_count());

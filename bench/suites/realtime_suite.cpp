@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/suites/lab_scenes.hpp"
 #include "bench/suites/realtime_accuracy.hpp"
 #include "bench/suites/suites.hpp"
 #include "sim/solver.hpp"
@@ -20,7 +21,6 @@
 namespace clothlab::bench {
 namespace {
 
-constexpr double kFrame = 1.0 / 60.0;
 constexpr int kWindowFrames = 600;
 
 Table accuracy_table(const SuiteOptions& o) {

@@ -22,7 +22,7 @@
 namespace clothlab::bench {
 namespace {
 
-struct Variant {
+struct RenderVariant {
   std::string name;
   std::function<void(vis::ViewSettings&)> edit;
 };
@@ -37,7 +37,7 @@ MeshSpec mesh(MeshKind kind, Vec3d centre, double radius, Vec3d colour) {
   return m;
 }
 
-std::vector<Variant> render_variants() {
+std::vector<RenderVariant> render_variants() {
   auto mode = [](vis::DisplayMode m, ShadowFilter f) {
     return [m, f](vis::ViewSettings& v) {
       v.mode = m;
@@ -75,7 +75,7 @@ std::vector<Variant> render_variants() {
 }
 
 // One variant's timings over the rounds: per pass, the passes' sum, and the whole frame (ms).
-struct Series {
+struct RenderSeries {
   std::vector<double> pass[vis::kPassCount], gpu, wall;
 };
 
@@ -83,7 +83,7 @@ struct Series {
 // on its first frame), then `frames` frames as a user gets them (draw, resolve, read back) and
 // the same frames again split into passes.
 void time_variant(vis::HeadlessRenderer& renderer, Solver& solver, const vis::ViewSettings& view,
-                  int frames, Series& series) {
+                  int frames, RenderSeries& series) {
   FieldSnapshot snapshot;
   renderer.draw(solver, snapshot.take(solver, renderer.request(view)), view);
   vis::finish_gpu_work();
@@ -108,8 +108,8 @@ void time_variant(vis::HeadlessRenderer& renderer, Solver& solver, const vis::Vi
   series.wall.push_back(1e3 * wall / frames);
 }
 
-Table rendering_table(const std::vector<Variant>& variants, const std::vector<Series>& series,
-                      const std::string& title) {
+Table rendering_table(const std::vector<RenderVariant>& variants,
+                      const std::vector<RenderSeries>& series, const std::string& title) {
   Table table;
   table.title = title;
   table.columns = {"variant",           "shadow map (ms)", "diffusion (ms)",
@@ -117,7 +117,7 @@ Table rendering_table(const std::vector<Variant>& variants, const std::vector<Se
                    "passes total (ms)", "frame wall (ms)", "frame / all off"};
   const double reference = median(series[0].wall);
   for (std::size_t k = 0; k < variants.size(); ++k) {
-    const Series& s = series[k];
+    const RenderSeries& s = series[k];
     std::vector<std::string> row = {variants[k].name};
     for (std::size_t p = 0; p < vis::kPassCount; ++p) row.push_back(fixed(median(s.pass[p]), 2));
     row.push_back(fixed(median(s.gpu), 2));
@@ -129,11 +129,11 @@ Table rendering_table(const std::vector<Variant>& variants, const std::vector<Se
 }
 
 // Every variant at one render quality, round-robin over `rounds` rounds.
-std::vector<Series> measure_quality(vis::HeadlessRenderer& renderer, Solver& solver,
-                                    const vis::ViewSettings& base, RenderQuality quality,
-                                    const std::vector<Variant>& variants, int rounds, int frames,
-                                    std::ostream* log) {
-  std::vector<Series> series(variants.size());
+std::vector<RenderSeries> measure_quality(vis::HeadlessRenderer& renderer, Solver& solver,
+                                          const vis::ViewSettings& base, RenderQuality quality,
+                                          const std::vector<RenderVariant>& variants, int rounds,
+                                          int frames, std::ostream* log) {
+  std::vector<RenderSeries> series(variants.size());
   for (int round = 0; round < rounds; ++round) {
     for (std::size_t k = 0; k < variants.size(); ++k) {
       vis::ViewSettings view = base;
@@ -163,10 +163,10 @@ std::vector<Table> rendering_suite(const SuiteOptions& o) {
   renderer.set_cloth(*solver);
   renderer.set_scene(scene.render, *solver);
   const vis::ViewSettings base = vis::scene_view(scene, *solver);
-  const std::vector<Variant> variants = render_variants();
+  const std::vector<RenderVariant> variants = render_variants();
   std::vector<Table> tables;
   for (RenderQuality quality : {RenderQuality::full, RenderQuality::fast}) {
-    const std::vector<Series> series =
+    const std::vector<RenderSeries> series =
         measure_quality(renderer, *solver, base, quality, variants, rounds, frames, o.log);
     const std::string title =
         "Render cost per headless frame, quality " + std::string(to_string(quality)) + ": " +

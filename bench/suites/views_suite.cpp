@@ -25,14 +25,14 @@ namespace clothlab::bench {
 
 namespace {
 
-struct Variant {
+struct ViewVariant {
   std::string name;
   std::function<void(vis::ViewSettings&)> edit;
   bool probe = false;  // one probe at the image centre after the render
 };
 
 // Per variant, one value per round.
-struct Series {
+struct ViewSeries {
   std::vector<double> simulate, render, draw;                 // s per frame
   std::vector<double> total_ratio, render_ratio, draw_ratio;  // to the round's "all off"
   bool active = false;  // diagnostics().active() after the variant's last frame
@@ -56,7 +56,7 @@ Scene default_scene(int res, int threads) {
   return scene;
 }
 
-std::vector<Variant> view_variants() {
+std::vector<ViewVariant> view_variants() {
   return {
       {"all off", [](vis::ViewSettings&) {}},
       {"colour by |force|", [](vis::ViewSettings& v) { v.color.field = vis::ScalarField::force; }},
@@ -110,12 +110,13 @@ Table views_table(int width, int height, const std::string& gl, int threads, int
 // One variant's frames of one round: `frames` timed frames (after one untimed, which builds or
 // drops the views' state) through render() and as many through draw() + glFinish; the mean
 // seconds per frame of simulation, render and draw.
-struct Timing {
+struct ViewTiming {
   double simulate = 0.0, render = 0.0, draw = 0.0;
 };
 
-Timing time_variant(vis::HeadlessRenderer& renderer, Solver& solver, const vis::ViewSettings& view,
-                    bool probing, int frames, Series& s) {
+ViewTiming time_view_variant(vis::HeadlessRenderer& renderer, Solver& solver,
+                             const vis::ViewSettings& view, bool probing, int frames,
+                             ViewSeries& s) {
   const int width = renderer.width(), height = renderer.height();
   auto advance = [&] {
     const AdvanceResult r = solver.advance(1.0 / 60.0);
@@ -128,7 +129,7 @@ Timing time_variant(vis::HeadlessRenderer& renderer, Solver& solver, const vis::
     ++s.probes;
     if (sample) ++s.probe_hits;
   };
-  Timing t;
+  ViewTiming t;
   for (int path = 0; path < 2; ++path) {
     for (int f = 0; f <= frames; ++f) {
       Stopwatch sim_clock;
@@ -155,10 +156,10 @@ Timing time_variant(vis::HeadlessRenderer& renderer, Solver& solver, const vis::
 }
 
 // The rows of one scene: medians over rounds, and the verdicts.
-void add_rows(Table& table, const std::string& scene_name, const std::vector<Variant>& variants,
-              const std::vector<Series>& series) {
+void add_rows(Table& table, const std::string& scene_name, const std::vector<ViewVariant>& variants,
+              const std::vector<ViewSeries>& series) {
   for (std::size_t v = 0; v < variants.size(); ++v) {
-    const Series& s = series[v];
+    const ViewSeries& s = series[v];
     const double sim = median(s.simulate), ren = median(s.render);
     const double tr = median(s.total_ratio);
     std::string verdict = "-";
@@ -184,7 +185,7 @@ std::vector<Table> views_suite(const SuiteOptions& o) {
   const std::vector<int> resolutions = o.quick ? std::vector<int>{32} : std::vector<int>{32, 128};
   const int rounds = o.quick ? 2 : 5;
   const int frames = o.quick ? 2 : 3;  // timed frames per variant, round and path
-  const std::vector<Variant> variants = view_variants();
+  const std::vector<ViewVariant> variants = view_variants();
   vis::HeadlessRenderer renderer(width, height);
   const std::string gl = renderer.gl_renderer();
   if (o.log) *o.log << "views: GL renderer " << gl << "\n";
@@ -197,14 +198,15 @@ std::vector<Table> views_suite(const SuiteOptions& o) {
     const long steps_per_frame = std::max(1L, std::lround(1.0 / 60.0 / solver->dt()));
     const vis::ViewSettings base = vis::default_view(*solver);
     renderer.set_cloth(*solver);
-    std::vector<Series> series(variants.size());
+    std::vector<ViewSeries> series(variants.size());
     for (int round = 0; round < rounds; ++round) {
-      Timing ref;
+      ViewTiming ref;
       for (std::size_t v = 0; v < variants.size(); ++v) {
         vis::ViewSettings view = base;
         variants[v].edit(view);
-        Series& s = series[v];
-        const Timing t = time_variant(renderer, *solver, view, variants[v].probe, frames, s);
+        ViewSeries& s = series[v];
+        const ViewTiming t =
+            time_view_variant(renderer, *solver, view, variants[v].probe, frames, s);
         if (v == 0) ref = t;
         s.simulate.push_back(t.simulate);
         s.render.push_back(t.render);

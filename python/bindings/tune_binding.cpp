@@ -93,7 +93,7 @@ tune::Row row_of(const py::dict& d) {
   return r;
 }
 
-py::dict settings(const SceneSource& scene, int threads) {
+py::dict tune_settings(const SceneSource& scene, int threads) {
   const tune::Settings s = tune::settings_for(reader_of(scene), options_of(threads));
   py::list ladder;
   for (const tune::Setting& l : s.ladder) ladder.append(setting_dict(l));
@@ -103,8 +103,8 @@ py::dict settings(const SceneSource& scene, int threads) {
   return d;
 }
 
-py::dict run(const SceneSource& scene, const py::dict& setting, const std::vector<double>& times,
-             int threads, double wall_limit) {
+py::dict tune_run(const SceneSource& scene, const py::dict& setting,
+                  const std::vector<double>& times, int threads, double wall_limit) {
   const tune::Setting s = setting_of(setting);
   tune::SampledRun r;
   {
@@ -114,8 +114,8 @@ py::dict run(const SceneSource& scene, const py::dict& setting, const std::vecto
   return run_dict(r);
 }
 
-py::dict row(const py::dict& setting, const py::dict& run, const py::dict& reference,
-             const std::vector<double>& times) {
+py::dict tune_row(const py::dict& setting, const py::dict& run, const py::dict& reference,
+                  const std::vector<double>& times) {
   tune::SampledRun r = run_of(run["positions"].cast<py::array_t<double>>(),
                               run["energy"].cast<std::vector<double>>());
   r.wall = run["wall"].cast<double>();
@@ -152,10 +152,10 @@ void write_result(const std::string& path, const std::vector<double>& times,
 
 void bind_tune(py::module_& m) {
   m.def("tune_times", &tune::sample_times, py::arg("duration"), py::arg("samples"));
-  m.def("tune_settings", &settings, py::arg("scene"), py::arg("threads"));
-  m.def("tune_run", &run, py::arg("scene"), py::arg("setting"), py::arg("times"),
+  m.def("tune_settings", &tune_settings, py::arg("scene"), py::arg("threads"));
+  m.def("tune_run", &tune_run, py::arg("scene"), py::arg("setting"), py::arg("times"),
         py::arg("threads"), py::arg("wall_limit"));
-  m.def("tune_row", &row, py::arg("setting"), py::arg("run"), py::arg("reference"),
+  m.def("tune_row", &tune_row, py::arg("setting"), py::arg("run"), py::arg("reference"),
         py::arg("times"));
   m.def(
       "tune_distance",

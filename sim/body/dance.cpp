@@ -13,8 +13,6 @@ using Eigen::AngleAxisd;
 using Eigen::Quaterniond;
 using Eigen::Vector3d;
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
 constexpr double kVelocityStep = 1e-6;  // s, half-width of the central difference
 constexpr double kSoleSoftness = 1e-3;  // m, length scale of the soft minimum over sole corners
 
@@ -98,7 +96,7 @@ constexpr std::array<Move, 16> kLoop = {{
 constexpr int kTurnBeat = 8;  // the loop's beat the turn starts from
 
 Quaterniond about(const Vector3d& axis, double degrees) {
-  return Quaterniond(AngleAxisd(degrees * kDeg, axis));
+  return Quaterniond(AngleAxisd(degrees * std::numbers::pi / 180.0, axis));
 }
 
 // The joints' rotations for a move, as deviations from their rest rotations (identity for
@@ -168,7 +166,7 @@ void Dance::build_keyframes(const std::vector<double>& beats,
         spec_.amplitude * (amplitude.empty() ? 1.0 : std::clamp(amplitude[i], 0.0, 1.0));
     // The turn is all or nothing (half a turn would leave her facing backwards): a loop turns
     // where the music is loud enough on the beat the turn starts.
-    if (beat == 0 && turning) turns_done += 2 * kPi;
+    if (beat == 0 && turning) turns_done += 2 * std::numbers::pi;
     if (beat == 0) turning = false;
     if (beat == kTurnBeat) turning = a >= 0.5;
     const Move& m = kLoop[beat];
@@ -176,7 +174,7 @@ void Dance::build_keyframes(const std::vector<double>& beats,
     SkeletonPose key = rest_;
     for (int j = 0; j < n; ++j)  // slerp from rest by a, in the exponential map
       key.local[j] = rest_.local[j] * exp_map(a * log_map(dev[j]));
-    const double yaw = turns_done + (turning ? 2 * kPi * m.turn : 0.0);
+    const double yaw = turns_done + (turning ? 2 * std::numbers::pi * m.turn : 0.0);
     key.root_rotation = Quaterniond(AngleAxisd(yaw, Vector3d::UnitY()));
     key.root_translation = key.root_rotation * Vector3d(a * m.step, 0, 0);
     forward_kinematics(mannequin_.skeleton, key, world);

@@ -11,7 +11,7 @@
 namespace clothlab {
 namespace {
 
-Eigen::Vector3d at(const GridCloth& g, int v) {
+Eigen::Vector3d rest_position(const GridCloth& g, int v) {
   const Vec3d& p = g.positions[static_cast<std::size_t>(v)];
   return {p[0], p[1], p[2]};
 }
@@ -49,7 +49,9 @@ GridCloth build_mesh_cloth(const ClothSpec& spec) {
   g.masses.assign(g.positions.size(), 0.0);
   double area = 0.0;
   for (const auto& t : g.triangles) {
-    const double a = 0.5 * (at(g, t[1]) - at(g, t[0])).cross(at(g, t[2]) - at(g, t[0])).norm();
+    const double a = 0.5 * (rest_position(g, t[1]) - rest_position(g, t[0]))
+                               .cross(rest_position(g, t[2]) - rest_position(g, t[0]))
+                               .norm();
     for (int v : t) g.masses[static_cast<std::size_t>(v)] += a / 3.0;
     area += a;
   }
@@ -58,7 +60,7 @@ GridCloth build_mesh_cloth(const ClothSpec& spec) {
 
   std::vector<double> lengths;
   for (const auto& e : mesh_edges(g.triangles))
-    lengths.push_back((at(g, e[0]) - at(g, e[1])).norm());
+    lengths.push_back((rest_position(g, e[0]) - rest_position(g, e[1])).norm());
   std::nth_element(lengths.begin(), lengths.begin() + std::ptrdiff_t(lengths.size() / 2),
                    lengths.end());
   g.edge = lengths[lengths.size() / 2];
@@ -88,7 +90,7 @@ std::vector<Spring> mesh_springs(const GridCloth& cloth, const SpringStiffness& 
     Spring s;
     s.a = p.first;
     s.b = p.second;
-    s.rest_length = (at(cloth, s.a) - at(cloth, s.b)).norm();
+    s.rest_length = (rest_position(cloth, s.a) - rest_position(cloth, s.b)).norm();
     if (s.rest_length == 0.0) continue;  // two folded-over triangles: no direction to resist in
     s.stiffness = c * cloth.edge / s.rest_length;
     springs.push_back(s);

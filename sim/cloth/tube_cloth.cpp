@@ -2,19 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "sim/core/vec3_math.hpp"
 
 namespace clothlab {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 Vec3d cross(const Vec3d& a, const Vec3d& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
-double distance(const Vec3d& a, const Vec3d& b) {
+double point_distance(const Vec3d& a, const Vec3d& b) {
   return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
                    (a[2] - b[2]) * (a[2] - b[2]));
 }
@@ -39,7 +38,7 @@ GridCloth build_tube_cloth(const ClothSpec& spec) {
     const double s = double(j) / double(g.nv - 1);
     const double r = (1.0 - s) * spec.radius[0] + s * spec.radius[1];
     for (int i = 0; i < g.nu; ++i) {
-      const double angle = 2.0 * kPi * double(i) / double(g.nu);
+      const double angle = 2.0 * std::numbers::pi * double(i) / double(g.nu);
       Vec3d& p = g.positions[static_cast<std::size_t>(g.index(i, j))];
       for (int a = 0; a < 3; ++a)
         p[a] = spec.origin[a] + s * spec.length * axis[a] +
@@ -48,7 +47,7 @@ GridCloth build_tube_cloth(const ClothSpec& spec) {
   }
   // Spacing round the narrower ring (a chord) and along the slant.
   const double narrow = std::min(spec.radius[0], spec.radius[1]);
-  g.du = 2.0 * narrow * std::sin(kPi / g.nu);
+  g.du = 2.0 * narrow * std::sin(std::numbers::pi / g.nu);
   g.dv = std::hypot(spec.length, spec.radius[1] - spec.radius[0]) / (g.nv - 1);
   g.edge = std::min(g.du, g.dv);
   g.vertex_mass = spec.mass / g.vertex_count();
@@ -78,7 +77,8 @@ std::vector<Spring> seed_springs_tube(const GridCloth& g, const SpringStiffness&
         for (int di = -2; di <= 2; ++di) {
           if (di * di + dj * dj >= 8 || (dj == 0 && di <= 0)) continue;
           const int a = g.index(i, j), b = g.index(((i + di) % g.nu + g.nu) % g.nu, j + dj);
-          const double rest = distance(g.positions[std::size_t(a)], g.positions[std::size_t(b)]);
+          const double rest =
+              point_distance(g.positions[std::size_t(a)], g.positions[std::size_t(b)]);
           springs.push_back(
               {std::min(a, b), std::max(a, b), rest, class_stiffness(k, di, dj) * g.edge / rest});
         }

@@ -2,14 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "sim/body/body_motion.hpp"
 #include "sim/core/vec3_math.hpp"
 
 namespace clothlab {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 Eigen::Vector3d vec(const Vec3d& v) {
   return {v[0], v[1], v[2]};
@@ -20,8 +19,9 @@ Eigen::Quaterniond rotate_y_to(const Eigen::Vector3d& d) {
   const Eigen::Vector3d axis = Eigen::Vector3d::UnitY().cross(d);
   const double s = axis.norm(), c = d.y();
   if (s < 1e-12)
-    return c > 0.0 ? Eigen::Quaterniond::Identity()
-                   : Eigen::Quaterniond(Eigen::AngleAxisd(kPi, Eigen::Vector3d::UnitX()));
+    return c > 0.0
+               ? Eigen::Quaterniond::Identity()
+               : Eigen::Quaterniond(Eigen::AngleAxisd(std::numbers::pi, Eigen::Vector3d::UnitX()));
   return Eigen::Quaterniond(Eigen::AngleAxisd(std::atan2(s, c), axis / s));
 }
 
@@ -30,14 +30,14 @@ Eigen::Vector3d angular_velocity_between(const Eigen::Quaterniond& qa, const Eig
                                          double dt) {
   const Eigen::AngleAxisd turn(qb * qa.conjugate());
   double angle = turn.angle();
-  if (angle > kPi) angle -= 2.0 * kPi;  // the short way round
+  if (angle > std::numbers::pi) angle -= 2.0 * std::numbers::pi;  // the short way round
   return turn.axis() * (angle / dt);
 }
 
 }  // namespace
 
 Eigen::Quaterniond rotation_from_degrees(const Vec3d& degrees) {
-  const double k = kPi / 180.0;
+  const double k = std::numbers::pi / 180.0;
   return Eigen::AngleAxisd(degrees[2] * k, Eigen::Vector3d::UnitZ()) *
          Eigen::AngleAxisd(degrees[1] * k, Eigen::Vector3d::UnitY()) *
          Eigen::AngleAxisd(degrees[0] * k, Eigen::Vector3d::UnitX());

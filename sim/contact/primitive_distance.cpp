@@ -7,8 +7,8 @@ namespace {
 
 using V3 = Eigen::Vector3d;
 
-PointTriangleClosest at(const V3& p, const V3& a, const V3& b, const V3& c, double u, double v,
-                        double w) {
+PointTriangleClosest closest_at(const V3& p, const V3& a, const V3& b, const V3& c, double u,
+                                double v, double w) {
   PointTriangleClosest r;
   r.w[0] = u;
   r.w[1] = v;
@@ -29,9 +29,9 @@ double segment_parameter(const V3& p, const V3& a, const V3& b) {
 PointTriangleClosest closest_on_sides(const V3& p, const V3& a, const V3& b, const V3& c) {
   const double tab = segment_parameter(p, a, b), tbc = segment_parameter(p, b, c),
                tca = segment_parameter(p, c, a);
-  PointTriangleClosest best = at(p, a, b, c, 1 - tab, tab, 0);
-  const PointTriangleClosest on_bc = at(p, a, b, c, 0, 1 - tbc, tbc);
-  const PointTriangleClosest on_ca = at(p, a, b, c, tca, 0, 1 - tca);
+  PointTriangleClosest best = closest_at(p, a, b, c, 1 - tab, tab, 0);
+  const PointTriangleClosest on_bc = closest_at(p, a, b, c, 0, 1 - tbc, tbc);
+  const PointTriangleClosest on_ca = closest_at(p, a, b, c, tca, 0, 1 - tca);
   if (on_bc.dist2 < best.dist2) best = on_bc;
   if (on_ca.dist2 < best.dist2) best = on_ca;
   return best;
@@ -43,34 +43,34 @@ PointTriangleClosest closest_on_sides(const V3& p, const V3& a, const V3& b, con
 PointTriangleClosest closest_point_triangle(const V3& p, const V3& a, const V3& b, const V3& c) {
   const V3 ab = b - a, ac = c - a, ap = p - a;
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0.0 && d2 <= 0.0) return at(p, a, b, c, 1, 0, 0);
+  if (d1 <= 0.0 && d2 <= 0.0) return closest_at(p, a, b, c, 1, 0, 0);
   const V3 bp = p - b;
   const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0.0 && d4 <= d3) return at(p, a, b, c, 0, 1, 0);
+  if (d3 >= 0.0 && d4 <= d3) return closest_at(p, a, b, c, 0, 1, 0);
   const double vc = d1 * d4 - d3 * d2;
   if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 && d1 - d3 > 0.0) {
     const double v = d1 / (d1 - d3);
-    return at(p, a, b, c, 1 - v, v, 0);
+    return closest_at(p, a, b, c, 1 - v, v, 0);
   }
   const V3 cp = p - c;
   const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0.0 && d5 <= d6) return at(p, a, b, c, 0, 0, 1);
+  if (d6 >= 0.0 && d5 <= d6) return closest_at(p, a, b, c, 0, 0, 1);
   const double vb = d5 * d2 - d1 * d6;
   if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 && d2 - d6 > 0.0) {
     const double w = d2 / (d2 - d6);
-    return at(p, a, b, c, 1 - w, 0, w);
+    return closest_at(p, a, b, c, 1 - w, 0, w);
   }
   const double va = d3 * d6 - d5 * d4;
   if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0 && (d4 - d3) + (d5 - d6) > 0.0) {
     const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return at(p, a, b, c, 0, 1 - w, w);
+    return closest_at(p, a, b, c, 0, 1 - w, w);
   }
   const double sum = va + vb + vc;
   // sum is twice the squared area's worth (|ab x ac|^2): a sliver's face region is unreliable.
   if (!(sum > 1e-30 * (ab.squaredNorm() * ac.squaredNorm() + 1e-300)))
     return closest_on_sides(p, a, b, c);
   const double v = vb / sum, w = vc / sum;
-  return at(p, a, b, c, 1 - v - w, v, w);
+  return closest_at(p, a, b, c, 1 - v - w, v, w);
 }
 
 // Ericson 2005, section 5.1.9: the unclamped closest parameters of the two lines, clamped to

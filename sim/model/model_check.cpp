@@ -38,7 +38,7 @@ const ClothSpec& cloth_of(const std::vector<ClothRange>& ranges, const Scene& sc
 }
 
 template <class T>
-const char* name_of() {
+const char* precision_name() {
   return sizeof(T) == sizeof(float) ? "float" : "double";
 }
 
@@ -54,7 +54,7 @@ void check_built_model(const Model<T>& m, const Scene& scene, double energy) {
     const auto bad_position = [&] {
       const ClothSpec& cloth = cloth_of(m.cloths, scene, v);
       fail(scene, cloth.key,
-           "vertex " + std::to_string(v) + " is built at a position the " + name_of<T>() +
+           "vertex " + std::to_string(v) + " is built at a position the " + precision_name<T>() +
                " solver cannot hold (|x| <= 3.4e+38 m); check " + cloth.key + "." +
                std::string(key_of<&ClothSpec::size>()) + ", " + cloth.key + "." +
                std::string(key_of<&ClothSpec::origin>()));
@@ -64,8 +64,8 @@ void check_built_model(const Model<T>& m, const Scene& scene, double energy) {
     if (!(representable(m.mass[v]) && m.mass[v] > T(0))) {
       const ClothSpec& cloth = cloth_of(m.cloths, scene, v);
       fail(scene, cloth.key + "." + std::string(key_of<&ClothSpec::mass>()),
-           "gives vertex masses of " + format_number(double(m.mass[v])) + " kg in " + name_of<T>() +
-               " (each must be positive and finite)");
+           "gives vertex masses of " + format_number(double(m.mass[v])) + " kg in " +
+               precision_name<T>() + " (each must be positive and finite)");
     }
   }
   auto springs = [&](const auto& values, const char* what) {
@@ -73,7 +73,7 @@ void check_built_model(const Model<T>& m, const Scene& scene, double energy) {
       if (!representable(values[s]))
         fail(scene, springs_key(),
              std::string("a spring's ") + what + " is " + format_number(double(values[s])) +
-                 " in " + name_of<T>());
+                 " in " + precision_name<T>());
   };
   springs(m.stiffness, "stiffness");
   springs(m.rest_length, "rest length");
@@ -83,8 +83,9 @@ void check_built_model(const Model<T>& m, const Scene& scene, double energy) {
       if (!representable(e.stiffness) || !representable(e.rest_length) || !representable(e.damping))
         fail(scene, springs_key(),
              "a spring's stiffness, rest length or damping is not finite in " +
-                 std::string(name_of<T>()) + " (stiffness " + format_number(double(e.stiffness)) +
-                 ", rest length " + format_number(double(e.rest_length)) + ")");
+                 std::string(precision_name<T>()) + " (stiffness " +
+                 format_number(double(e.stiffness)) + ", rest length " +
+                 format_number(double(e.rest_length)) + ")");
   if (!std::isfinite(energy))
     fail(scene, scene.cloths.front().key,
          "the built cloth's energy is " + format_number(energy) +
@@ -99,9 +100,9 @@ void check_built_forces(const Vec3Array<T>& f, const Model<T>& m, const Scene& s
         const std::string& key = cloth_of(m.cloths, scene, v).key;
         fail(scene, key,
              "the force on vertex " + std::to_string(v) + " of the built cloth is not finite in " +
-                 name_of<T>() + " (its springs' squared lengths or the forces overflow); check " +
-                 key + "." + std::string(key_of<&ClothSpec::size>()) +
-                 " and the stiffness, drag and wind");
+                 precision_name<T>() +
+                 " (its springs' squared lengths or the forces overflow); check " + key + "." +
+                 std::string(key_of<&ClothSpec::size>()) + " and the stiffness, drag and wind");
       }
 }
 

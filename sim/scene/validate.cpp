@@ -30,7 +30,7 @@ namespace {
 using binding::key_of;
 
 // prefix.name: cloth[1] and mass give cloth[1].mass.
-std::string at(const std::string& prefix, std::string_view name) {
+std::string key_path(const std::string& prefix, std::string_view name) {
   return prefix + "." + std::string(name);
 }
 
@@ -98,7 +98,7 @@ class Validator {
 
   // A key given in the file for a cloth of another shape.
   bool given(const ClothSpec& cloth, std::string_view name) const {
-    return scene_.locations.count(at(cloth.key, name)) > 0;
+    return scene_.locations.count(key_path(cloth.key, name)) > 0;
   }
 
   void check_cloth(const ClothSpec& cloth) const;
@@ -253,14 +253,14 @@ inline void Validator::check_cloth(const ClothSpec& cloth) const {
   } else {
     for (std::string_view tube_key : {key_of<&ClothSpec::radius>(), key_of<&ClothSpec::length>()})
       if (given(cloth, tube_key))
-        fail(at(k, tube_key), "belongs to shape = \"tube\" (this cloth is a grid)");
+        fail(key_path(k, tube_key), "belongs to shape = \"tube\" (this cloth is a grid)");
   }
   check_resolution(cloth);
   if (cloth.shape != "mesh") check_spacing(cloth);
   check_axes(cloth);
   if (!unloaded_mesh(cloth)) check_pins(cloth);
   if (cloth.springs)
-    ranges(Section::springs, &*cloth.springs, at(k, key_of<&ClothSpec::springs>()));
+    ranges(Section::springs, &*cloth.springs, key_path(k, key_of<&ClothSpec::springs>()));
 }
 
 inline void Validator::check_transform_feedback() const {
@@ -278,7 +278,7 @@ inline void Validator::check_transform_feedback() const {
          backend + "computes in float, not double");
   for (const ClothSpec& cloth : scene_.cloths)
     if (cloth.shape != "grid")
-      fail(at(cloth.key, key_of<&ClothSpec::shape>()),
+      fail(key_path(cloth.key, key_of<&ClothSpec::shape>()),
            backend + "draws grid cloths only, not a " + cloth.shape +
                " (whose UVs may copy vertices along a seam, which the captured buffer does "
                "not hold; backend = \"gpu\" runs it)");
@@ -286,10 +286,11 @@ inline void Validator::check_transform_feedback() const {
 
 inline void Validator::check_tube(const ClothSpec& cloth) const {
   const std::string_view size = key_of<&ClothSpec::size>();
-  if (given(cloth, size)) fail(at(cloth.key, size), "a tube takes radius and length, not size");
+  if (given(cloth, size))
+    fail(key_path(cloth.key, size), "a tube takes radius and length, not size");
   const auto [nu, nv] = cloth.resolution;
   if (nu < 6 || nv < 2)
-    fail(at(cloth.key, key_of<&ClothSpec::resolution>()),
+    fail(key_path(cloth.key, key_of<&ClothSpec::resolution>()),
          "a tube needs at least 6 vertices around and 2 rings (got [" + std::to_string(nu) + ", " +
              std::to_string(nv) + "])");
 }
@@ -298,9 +299,9 @@ inline void Validator::check_spacing(const ClothSpec& cloth) const {
   const auto [nu, nv] = cloth.resolution;
   auto require = [&](std::string_view name, double spacing, const std::string& what) {
     if (!(spacing >= kMinVertexSpacing))
-      fail(at(cloth.key, name), "puts neighbouring vertices " + format_number(spacing) +
-                                    " m apart " + what + "; at least " +
-                                    format_number(kMinVertexSpacing) + " m is needed");
+      fail(key_path(cloth.key, name), "puts neighbouring vertices " + format_number(spacing) +
+                                          " m apart " + what + "; at least " +
+                                          format_number(kMinVertexSpacing) + " m is needed");
   };
   if (cloth.shape == "tube") {
     const double chord = 2.0 * std::sin(3.14159265358979323846 / std::max(nu, 1));
@@ -321,7 +322,7 @@ inline void Validator::check_resolution(const ClothSpec& cloth) const {
   const auto [nu, nv] = cloth.resolution;
   const std::int64_t vertices = std::int64_t{nu} * nv;
   if (vertices > kMaxVertices)
-    fail(at(cloth.key, key_of<&ClothSpec::resolution>()),
+    fail(key_path(cloth.key, key_of<&ClothSpec::resolution>()),
          std::to_string(nu) + " x " + std::to_string(nv) + " = " + std::to_string(vertices) +
              " vertices; at most " + std::to_string(kMaxVertices) + " are allowed");
 }
@@ -332,15 +333,15 @@ inline void Validator::check_total_vertices() const {
     if (unloaded_mesh(cloth)) continue;
     total += std::int64_t{cloth.resolution[0]} * cloth.resolution[1];
     if (total > kMaxVertices)
-      fail(at(cloth.key, key_of<&ClothSpec::resolution>()),
+      fail(key_path(cloth.key, key_of<&ClothSpec::resolution>()),
            "the scene's cloths have " + std::to_string(total) + " vertices up to this one; at " +
                "most " + std::to_string(kMaxVertices) + " are allowed in all");
   }
 }
 
 inline void Validator::check_axes(const ClothSpec& cloth) const {
-  const std::string u_key = at(cloth.key, key_of<&ClothSpec::u_axis>());
-  const std::string v_key = at(cloth.key, key_of<&ClothSpec::v_axis>());
+  const std::string u_key = key_path(cloth.key, key_of<&ClothSpec::u_axis>());
+  const std::string v_key = key_path(cloth.key, key_of<&ClothSpec::v_axis>());
   const double lu = length(cloth.u_axis);
   const double lv = length(cloth.v_axis);
   if (lu == 0.0) fail(u_key, "must not be the zero vector");
@@ -360,10 +361,10 @@ inline void Validator::check_mesh_cloth(const ClothSpec& cloth) const {
        {key_of<&ClothSpec::size>(), key_of<&ClothSpec::resolution>(), key_of<&ClothSpec::u_axis>(),
         key_of<&ClothSpec::v_axis>(), key_of<&ClothSpec::radius>(), key_of<&ClothSpec::length>()})
     if (given(cloth, grid_key))
-      fail(at(k, grid_key),
+      fail(key_path(k, grid_key),
            "belongs to a grid or tube cloth (a mesh cloth takes its shape from file)");
   if (!loaded_) return;
-  const std::string file = at(k, key_of<&ClothSpec::file>());
+  const std::string file = key_path(k, key_of<&ClothSpec::file>());
   if (!cloth.mesh || cloth.mesh->triangles.empty())
     fail(file, "no OBJ mesh was read for this mesh cloth");
   const TriangleMesh& mesh = *cloth.mesh;
@@ -424,7 +425,7 @@ inline void Validator::check_triangle_areas(const TriangleMesh& mesh, const std:
 
 inline void Validator::check_pins(const ClothSpec& cloth) const {
   const auto [nu, nv] = cloth.resolution;
-  const std::string pins_key = at(cloth.key, key_of<&ClothSpec::pins>());
+  const std::string pins_key = key_path(cloth.key, key_of<&ClothSpec::pins>());
   std::set<std::pair<int, int>> seen;
   for (std::size_t n = 0; n < cloth.pins.size(); ++n) {
     const auto [i, j] = cloth.pins[n];
@@ -453,7 +454,7 @@ inline void Validator::check_forces() const {
 
 inline void Validator::check_pins_follow(const ClothSpec& cloth) const {
   if (cloth.pins_follow.empty()) return;
-  const std::string key = at(cloth.key, key_of<&ClothSpec::pins_follow>());
+  const std::string key = key_path(cloth.key, key_of<&ClothSpec::pins_follow>());
   for (std::size_t n = 0; n < cloth.pins_follow.size(); ++n) {
     const int c = cloth.pins_follow[n];
     if (c < 0 || c >= static_cast<int>(scene_.colliders.size()))
@@ -470,36 +471,37 @@ inline void Validator::check_mannequin(const MannequinSpec& m) const {
   ColliderSpec every_part;
   every_part.static_friction = m.static_friction;
   every_part.kinetic_friction = m.kinetic_friction;
-  ranges(Section::friction, &every_part, at(key, key_of<&MannequinSpec::static_friction>()));
+  ranges(Section::friction, &every_part, key_path(key, key_of<&MannequinSpec::static_friction>()));
 }
 
 inline void Validator::check_collider(const ColliderSpec& c) const {
   const std::string& k = c.key;
   ranges(Section::collider, &c, k);
-  ranges(Section::friction, &c, at(k, key_of<&ColliderSpec::static_friction>()));
-  const std::string motion = at(k, key_of<&ColliderSpec::motion>());
+  ranges(Section::friction, &c, key_path(k, key_of<&ColliderSpec::static_friction>()));
+  const std::string motion = key_path(k, key_of<&ColliderSpec::motion>());
   ranges(Section::motion, &c.motion, motion);
   switch (c.kind) {
     case ColliderKind::plane:
       if (length(c.normal) < 1e-9)
-        fail(at(k, key_of<&ColliderSpec::normal>()), "must not be the zero vector");
+        fail(key_path(k, key_of<&ColliderSpec::normal>()), "must not be the zero vector");
       break;
     case ColliderKind::box: {
       const double smallest = std::min({c.half_extents[0], c.half_extents[1], c.half_extents[2]});
       if (!(c.rounding < smallest))
-        fail(at(k, key_of<&ColliderSpec::rounding>()),
+        fail(key_path(k, key_of<&ColliderSpec::rounding>()),
              "must be smaller than the smallest half extent (" + format_number(smallest) +
                  " m), got " + format_number(c.rounding));
       break;
     }
     case ColliderKind::mesh:
       if (loaded_ && !c.mesh)
-        fail(at(k, key_of<&ColliderSpec::file>()),
+        fail(key_path(k, key_of<&ColliderSpec::file>()),
              "no mesh was read (a mesh collider needs file = \"x.obj\")");
       break;
     case ColliderKind::capsule:
       if (length({c.b[0] - c.a[0], c.b[1] - c.a[1], c.b[2] - c.a[2]}) < 1e-9)
-        fail(at(k, key_of<&ColliderSpec::b>()), "must differ from a (a capsule needs an axis)");
+        fail(key_path(k, key_of<&ColliderSpec::b>()),
+             "must differ from a (a capsule needs an axis)");
       break;
     case ColliderKind::sphere:
       break;
@@ -508,15 +510,15 @@ inline void Validator::check_collider(const ColliderSpec& c) const {
 }
 
 inline void Validator::check_keyframes(const ColliderMotion& m, const std::string& motion) const {
-  const std::string keys = at(motion, key_of<&ColliderMotion::keys>());
+  const std::string keys = key_path(motion, key_of<&ColliderMotion::keys>());
   for (std::size_t i = 0; i < m.keys.size(); ++i) {
     const ColliderKey& key = m.keys[i];
     const std::string kk = keys + "[" + std::to_string(i) + "]";
     ranges(Section::keyframe, &key, kk);
     if (i > 0 && !(key.time > m.keys[i - 1].time))
-      fail(at(kk, key_of<&ColliderKey::time>()), "keyframe times must increase (got " +
-                                                     format_number(key.time) + " after " +
-                                                     format_number(m.keys[i - 1].time) + ")");
+      fail(key_path(kk, key_of<&ColliderKey::time>()), "keyframe times must increase (got " +
+                                                           format_number(key.time) + " after " +
+                                                           format_number(m.keys[i - 1].time) + ")");
   }
   if (!m.keys.empty() &&
       (m.velocity != Vec3d{0.0, 0.0, 0.0} || m.angular_velocity != Vec3d{0.0, 0.0, 0.0}))
@@ -530,10 +532,12 @@ inline void Validator::check_render(const RenderSpec& r) const {
   if (l.position && l.target &&
       length({(*l.target)[0] - (*l.position)[0], (*l.target)[1] - (*l.position)[1],
               (*l.target)[2] - (*l.position)[2]}) < 1e-6)
-    fail(at(section_path(Section::light), key_of<&LightSpec::target>()),
-         "must differ from " + at(section_path(Section::light), key_of<&LightSpec::position>()));
+    fail(key_path(section_path(Section::light), key_of<&LightSpec::target>()),
+         "must differ from " +
+             key_path(section_path(Section::light), key_of<&LightSpec::position>()));
   if (length(l.direction) < 1e-9)
-    fail(at(section_path(Section::light), key_of<&LightSpec::direction>()), "must not be zero");
+    fail(key_path(section_path(Section::light), key_of<&LightSpec::direction>()),
+         "must not be zero");
   ranges(Section::sky, &r.sky, section_path(Section::sky));
   ranges(Section::pole, &r.pole, section_path(Section::pole));
   ranges(Section::camera, &r.camera, section_path(Section::camera));
@@ -543,13 +547,13 @@ inline void Validator::check_render(const RenderSpec& r) const {
 
 inline void Validator::check_trace(const TraceSpec& trace) const {
   const std::string prefix = section_path(Section::trace);
-  const std::string vertices = at(prefix, key_of<&TraceSpec::vertices>());
+  const std::string vertices = key_path(prefix, key_of<&TraceSpec::vertices>());
   std::set<std::tuple<int, int, int>> seen;
   for (std::size_t n = 0; n < trace.vertices.size(); ++n)
     check_trace_vertex(trace.vertices[n], vertices + "[" + std::to_string(n) + "]", seen);
   if (!(trace.position || trace.velocity || trace.force || trace.energy)) {
     const Parameter& fields = *find_parameter(Section::trace, key_of<&TraceSpec::position>());
-    fail(at(prefix, fields.name), "name at least one of " + std::string(fields.choices));
+    fail(key_path(prefix, fields.name), "name at least one of " + std::string(fields.choices));
   }
   ranges(Section::trace, &trace, prefix);
 }

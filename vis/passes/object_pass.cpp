@@ -6,7 +6,7 @@ namespace clothlab::vis {
 namespace {
 
 // Explicit uniform locations in shaders/object.vert and object.frag.
-constexpr GLint kModel = 0, kColor = 1;
+constexpr GLint kObjectModel = 0, kObjectColor = 1;
 
 }  // namespace
 
@@ -19,8 +19,8 @@ void ObjectPass::begin(const std::string& shading) {
 }
 
 void ObjectPass::draw(const GpuMesh& mesh, const glm::mat4& model, glm::vec3 color) const {
-  glProgramUniformMatrix4fv(program_, kModel, 1, GL_FALSE, &model[0][0]);
-  glProgramUniform3f(program_, kColor, color.r, color.g, color.b);
+  glProgramUniformMatrix4fv(program_, kObjectModel, 1, GL_FALSE, &model[0][0]);
+  glProgramUniform3f(program_, kObjectColor, color.r, color.g, color.b);
   glBindVertexArray(mesh.vao.get());
   glDrawElements(GL_TRIANGLES, mesh.indices, GL_UNSIGNED_INT, nullptr);
 }

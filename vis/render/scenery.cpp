@@ -10,6 +10,7 @@
 #include "vis/meshes/shapes.hpp"
 #include "vis/passes/shadow_pass.hpp"
 #include "vis/render/gpu_mesh.hpp"
+#include "vis/render/to_glm.hpp"
 
 namespace clothlab::vis {
 namespace {
@@ -17,10 +18,6 @@ namespace {
 const glm::vec3 kPoleColor{0.42f, 0.30f, 0.20f};  // sRGB: oiled wood
 constexpr float kPoleOverhang = 0.06f;            // of the pinned span, beyond each end pin
 constexpr float kCollinear = 0.02f;               // pins this far (of the span) off the line
-
-glm::vec3 to_glm(const Vec3d& v) {
-  return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
-}
 
 // The rotation taking +x to unit d.
 glm::mat4 rotate_x_to(glm::vec3 d) {

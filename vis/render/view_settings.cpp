@@ -9,6 +9,7 @@
 #include "sim/scene/scene.hpp"
 #include "sim/solver.hpp"
 #include "vis/render/floor_collider.hpp"
+#include "vis/render/to_glm.hpp"
 
 namespace clothlab::vis {
 
@@ -50,10 +51,6 @@ void OrbitCamera::zoom(float factor) {
 }
 
 namespace {
-
-glm::vec3 to_glm(const Vec3d& v) {
-  return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
-}
 
 // Camera, floor and light around the box lo..hi (what default_view frames).
 void frame_box(ViewSettings& s, glm::vec3 lo, glm::vec3 hi) {

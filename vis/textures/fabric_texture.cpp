@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -20,7 +21,6 @@ namespace {
 
 using Rgb = std::array<float, 3>;
 
-constexpr float kPi = 3.14159265358979f;
 constexpr Rgb kWarpColour{0.56f, 0.11f, 0.12f};  // dark red
 constexpr Rgb kWeftColour{0.46f, 0.08f, 0.13f};  // slightly deeper, bluer red
 constexpr std::uint32_t kWarpTag = 1, kWeftTag = 2;
@@ -40,7 +40,7 @@ Rgb thread_colour(Rgb base, std::uint32_t seed, std::uint32_t tag, int index) {
 // Fibre twist: faint slanted stripes along a thread (period 1/3 cell along it) so single
 // threads look spun from fibres rather than flat. Periodic in whole cells, so seams match.
 float twist(float along, float across) {
-  return 0.93f + 0.07f * std::sin(2.0f * kPi * (3.0f * along + across));
+  return 0.93f + 0.07f * std::sin(2.0f * std::numbers::pi_v<float> * (3.0f * along + across));
 }
 
 struct Sample {

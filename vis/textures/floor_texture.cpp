@@ -22,7 +22,7 @@ constexpr float kMinGroutHalfPixels = 0.6f;  // so small textures still show a g
 constexpr float kBevelWidth = 0.06f;         // darkening ramp inside the grout, fraction of a tile
 constexpr std::uint32_t kToneTag = 1, kTintTag = 2, kNoiseTag = 3;
 
-float smoothstep(float t) {
+float clamped_smoothstep(float t) {
   t = std::clamp(t, 0.0f, 1.0f);
   return t * t * (3.0f - 2.0f * t);
 }
@@ -36,7 +36,7 @@ int wrap(int i, int period) {
 // with smoothstep. u, v are in lattice cells, in [0, period). Result in [0, 1).
 float periodic_value_noise(float u, float v, int period, std::uint32_t seed) {
   const int i0 = static_cast<int>(std::floor(u)), j0 = static_cast<int>(std::floor(v));
-  const float tu = smoothstep(u - float(i0)), tv = smoothstep(v - float(j0));
+  const float tu = clamped_smoothstep(u - float(i0)), tv = clamped_smoothstep(v - float(j0));
   const auto at = [&](int i, int j) {
     return hash_unit(seed, kNoiseTag, std::uint32_t(wrap(i, period)),
                      std::uint32_t(wrap(j, period)) + std::uint32_t(period) * 7919U);
@@ -91,7 +91,7 @@ Image make_floor_texture(int size, std::uint32_t seed) {
         c = {kGrout[0] * g, kGrout[1] * g, kGrout[2] * g};
       } else {
         const Rgb stone = tile_colour(tx, ty, seed);
-        const float bevel = 0.85f + 0.15f * smoothstep((edge - grout) / kBevelWidth);
+        const float bevel = 0.85f + 0.15f * clamped_smoothstep((edge - grout) / kBevelWidth);
         const float light = bevel * (1.0f + 0.10f * m);
         c = {stone[0] * light, stone[1] * light, stone[2] * light};
       }

@@ -36,7 +36,7 @@ struct StencilOffset {
 };
 
 template <class T>
-struct GridPart {
+struct BandedPart {
   int offset = 0, nu = 0, nv = 0, reach = 0, rows = 1, bands = 1;
   std::vector<StencilOffset<T>> offsets;  // first half of the stencil, in stencil order
   // Same-row offsets o: in_class[2 o + cls][i] = 1 where spring (i, i + di) is of class cls (a
@@ -48,8 +48,8 @@ struct GridPart {
 };
 
 template <class T>
-GridPart<T> grid_part(const GridStencil<T>& g) {
-  GridPart<T> p;
+BandedPart<T> banded_part(const GridStencil<T>& g) {
+  BandedPart<T> p;
   p.offset = g.offset;
   p.nu = g.nu;
   p.nv = g.nv;
@@ -232,7 +232,7 @@ class XpbdGrid final : public Integrator<T> {
   Tethers<T> tethers_;
   CoarseStretch<T> coarse_;
   bool slack_;  // solver.stretch_slack: the two above allow the slack of stretch_slack.hpp
-  std::vector<GridPart<T>> parts_;
+  std::vector<BandedPart<T>> parts_;
   std::vector<std::size_t> lambda_start_;
   std::vector<BandRef> bands_[2];  // phase 0: even bands of every cloth, phase 1: odd
   AlignedVector<T> lambda_;        // sweeps > 1: per offset, per start vertex
@@ -253,7 +253,7 @@ inline XpbdGrid<T>::XpbdGrid(const Model<T>& m, const SolverSpec& spec)
   std::size_t lambda_size = 0;
   int max_nu = 0;
   for (const GridStencil<T>& g : m.grids) {
-    parts_.push_back(grid_part(g));
+    parts_.push_back(banded_part(g));
     lambda_start_.push_back(lambda_size);
     lambda_size += parts_.back().offsets.size() * static_cast<std::size_t>(g.nu) * g.nv;
     max_nu = std::max(max_nu, g.nu);
@@ -264,7 +264,7 @@ inline XpbdGrid<T>::XpbdGrid(const Model<T>& m, const SolverSpec& spec)
         bands_[phase].push_back({static_cast<int>(c), b});
   if (sweeps_ > 1) lambda_.assign(lambda_size, T(0));
   // One scratch block per band of the larger phase: bands of a phase run at the same time.
-  for (const GridPart<T>& p : parts_)
+  for (const BandedPart<T>& p : parts_)
     for (const StencilOffset<T>& o : p.offsets)
       if (o.dj == 0) scratch_pad_ = std::max(scratch_pad_, static_cast<std::size_t>(o.di));
   scratch_stride_ = scratch_pad_ + static_cast<std::size_t>(max_nu);
@@ -325,7 +325,7 @@ inline void XpbdGrid<T>::step(const System<T>& sys, State<T>& s, double t, T h) 
 
 template <class T>
 inline void XpbdGrid<T>::predict_rows(const Model<T>& m, State<T>& s, int c, int b, T h) {
-  const GridPart<T>& p = parts_[static_cast<std::size_t>(c)];
+  const BandedPart<T>& p = parts_[static_cast<std::size_t>(c)];
   const int j1 = b + 1 < p.bands ? p.band_end(b + 1) : p.nv;
   const std::size_t begin =
       static_cast<std::size_t>(p.offset) + static_cast<std::size_t>(p.band_begin(b)) * p.nu;
@@ -353,7 +353,7 @@ inline void XpbdGrid<T>::predict_rows(const Model<T>& m, State<T>& s, int c, int
 template <class T>
 template <bool First>
 inline void XpbdGrid<T>::sweep_band(State<T>& s, int c, int b, T h, const RowScratch<T>& scratch) {
-  const GridPart<T>& p = parts_[static_cast<std::size_t>(c)];
+  const BandedPart<T>& p = parts_[static_cast<std::size_t>(c)];
   const int j0 = p.band_begin(b), j1 = p.band_end(b);
   for (std::size_t o = 0; o < p.offsets.size(); ++o) {
     const StencilOffset<T>& off = p.offsets[o];
@@ -442,17 +442,17 @@ std::unique_ptr<Integrator<T>> make_xpbd_grid(const Model<T>& m, const SolverSpe
 template <class T>
 std::vector<int> xpbd_grid_colours(const Model<T>& grid_model,
                                    const std::vector<std::array<int, 2>>& ends) {
-  std::vector<GridPart<T>> parts;
+  std::vector<BandedPart<T>> parts;
   int batches = 0;
   for (const GridStencil<T>& g : grid_model.grids) {
-    parts.push_back(grid_part(g));
+    parts.push_back(banded_part(g));
     batches = std::max(batches, 2 * static_cast<int>(parts.back().offsets.size()));
   }
   std::vector<int> colours;
   colours.reserve(ends.size());
   for (const auto& [a, b] : ends) {
     int colour = -1;
-    for (const GridPart<T>& p : parts) {
+    for (const BandedPart<T>& p : parts) {
       if (a < p.offset || a >= p.offset + p.nu * p.nv) continue;
       const int ia = (a - p.offset) % p.nu, ja = (a - p.offset) / p.nu;
       const int ib = (b - p.offset) % p.nu, jb = (b - p.offset) / p.nu;

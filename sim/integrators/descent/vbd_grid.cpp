@@ -25,7 +25,7 @@ constexpr int round_up(int n, int k) {
 }
 
 template <class T>
-struct GridPart {
+struct ColouredPart {
   int offset = 0, nu = 0, nv = 0, stride = 0;
   std::size_t base = 0;                                 // the part's first entry in the planes
   std::vector<typename GridStencil<T>::Entry> springs;  // every entry, both signs
@@ -45,8 +45,8 @@ struct GridPart {
 };
 
 template <class T>
-GridPart<T> grid_part(const GridStencil<T>& g, std::size_t base) {
-  GridPart<T> p;
+ColouredPart<T> coloured_part(const GridStencil<T>& g, std::size_t base) {
+  ColouredPart<T> p;
   p.offset = g.offset;
   p.nu = g.nu;
   p.nv = g.nv;
@@ -132,10 +132,10 @@ class VbdGrid final : public Integrator<T> {
   Chebyshev chebyshev_;
   T drag_ = 0;
   bool warm_ = false;
-  std::vector<GridPart<T>> parts_;
+  std::vector<ColouredPart<T>> parts_;
   std::vector<Row> rows_;                               // every row of every part
   std::array<std::vector<Row>, kColours> colour_rows_;  // colour 3 (j % 3) + c: rows j
-  Planes<T> x_, start_, target_, older_, previous_;     // sub-row layout (GridPart::entry)
+  Planes<T> x_, start_, target_, older_, previous_;     // sub-row layout (ColouredPart::entry)
   AlignedVector<T> mass_, free_;                        // sub-row layout; free_: 1 or 0
   Vec3Array<T> f_, last_vel_;                           // the model's vertex order
 };
@@ -147,8 +147,8 @@ inline VbdGrid<T>::VbdGrid(const Model<T>& m, const SolverSpec& spec)
       drag_(m.drag) {
   std::size_t size = 0;
   for (std::size_t c = 0; c < m.grids.size(); ++c) {
-    parts_.push_back(grid_part(m.grids[c], size));
-    const GridPart<T>& p = parts_.back();
+    parts_.push_back(coloured_part(m.grids[c], size));
+    const ColouredPart<T>& p = parts_.back();
     size += static_cast<std::size_t>(p.nv) * 3 * static_cast<std::size_t>(p.stride);
     for (int j = 0; j < p.nv; ++j) {
       rows_.push_back({static_cast<int>(c), j});
@@ -158,7 +158,7 @@ inline VbdGrid<T>::VbdGrid(const Model<T>& m, const SolverSpec& spec)
   for (Planes<T>* planes : {&x_, &start_, &target_, &older_, &previous_}) planes->assign(size);
   mass_.assign(size, T(0));
   free_.assign(size, T(0));
-  for (const GridPart<T>& p : parts_)
+  for (const ColouredPart<T>& p : parts_)
     for (int j = 0; j < p.nv; ++j)
       for (int i = 0; i < p.nu; ++i) {
         const std::size_t g = static_cast<std::size_t>(p.offset + j * p.nu + i);
@@ -198,7 +198,7 @@ inline void VbdGrid<T>::step(const System<T>& sys, State<T>& s, double t, T h) {
 
 template <class T>
 inline void VbdGrid<T>::predict_row(const Model<T>& m, const State<T>& s, Row r, T h, bool warm) {
-  const GridPart<T>& p = parts_[static_cast<std::size_t>(r.part)];
+  const ColouredPart<T>& p = parts_[static_cast<std::size_t>(r.part)];
   for (int i = 0; i < p.nu; ++i) {
     const std::size_t g = static_cast<std::size_t>(p.offset + r.j * p.nu + i);
     const std::size_t q = p.entry(r.j, i % 3, i / 3);
@@ -213,7 +213,7 @@ inline void VbdGrid<T>::predict_row(const Model<T>& m, const State<T>& s, Row r,
 
 template <class T>
 inline void VbdGrid<T>::descend_row(Row r, int c, T h) {
-  const GridPart<T>& p = parts_[static_cast<std::size_t>(r.part)];
+  const ColouredPart<T>& p = parts_[static_cast<std::size_t>(r.part)];
   const int count = p.count(c);
   for (int m0 = 0; m0 < count; m0 += kChunk) {
     Chunk k;
@@ -293,7 +293,7 @@ inline void VbdGrid<T>::end_chunk(std::size_t self, const Chunk& k) {
 
 template <class T>
 inline void VbdGrid<T>::accelerate_row(Row r, T omega, int it) {
-  const GridPart<T>& p = parts_[static_cast<std::size_t>(r.part)];
+  const ColouredPart<T>& p = parts_[static_cast<std::size_t>(r.part)];
   const std::size_t begin = p.entry(r.j, 0, -kChunk);
   const std::size_t n = 3 * static_cast<std::size_t>(p.stride);
   for (int a = 0; a < 3; ++a) {
@@ -311,7 +311,7 @@ inline void VbdGrid<T>::accelerate_row(Row r, T omega, int it) {
 
 template <class T>
 inline void VbdGrid<T>::finish_row(const Model<T>& m, State<T>& s, Row r, T h) {
-  const GridPart<T>& p = parts_[static_cast<std::size_t>(r.part)];
+  const ColouredPart<T>& p = parts_[static_cast<std::size_t>(r.part)];
   const T inv_h = T(1) / h;
   for (int a = 0; a < 3; ++a) {
     T* __restrict pos = s.pos.axis(a).data();
