@@ -96,7 +96,7 @@ constexpr std::array<Move, 16> kLoop = {{
 constexpr int kTurnBeat = 8;  // the loop's beat the turn starts from
 
 Quaterniond about(const Vector3d& axis, double degrees) {
-  return Quaterniond(AngleAxisd(degrees * std::numbers::pi / 180.0, axis));
+  return Quaterniond(AngleAxisd(degrees * (std::numbers::pi / 180.0), axis));
 }
 
 // The joints' rotations for a move, as deviations from their rest rotations (identity for
