@@ -148,7 +148,9 @@ void CoarseStretch<T>::set_substep(double h) {
 
 template <class T>
 void CoarseStretch<T>::project_rows(Level& l, int o, int cls) {
-  const auto [di, dj] = kCoarseOffsets[o];
+  // Plain variables, not a structured binding: clang before 16 cannot use one inside the
+  // `omp for` loop below (scripts/fuzz builds with clang).
+  const int di = kCoarseOffsets[o][0], dj = kCoarseOffsets[o][1];
   const int rows = l.nv - dj;
   const int first = dj > 0 ? std::max(0, -di) : cls;
   const int last = l.nu - std::max(0, di);  // exclusive end of the start column

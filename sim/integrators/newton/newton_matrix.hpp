@@ -205,7 +205,10 @@ inline void NewtonMatrix<T>::apply_block(const Model<T>& m, T h, const Vec3Array
       // arrays; outside that range the slot is empty. Empty slots inside it read a real vertex
       // and multiply by the zero block.
       const std::ptrdiff_t shift = shifts_[l.shift + k];
-      const auto [lo, hi] = diagonal_range(l, k, b, e);
+      // Plain variables, not a structured binding: clang before 16 cannot use one inside the
+      // `omp simd` loop below (scripts/fuzz builds with clang).
+      const std::pair<std::size_t, std::size_t> range = diagonal_range(l, k, b, e);
+      const std::size_t lo = range.first, hi = range.second;
       if (lo >= hi) continue;
       const std::size_t first = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(lo) + shift);
       const T* __restrict vx = ux + first;
