@@ -5,14 +5,12 @@
 
 #include "sim/solver.hpp"
 #include "vis/passes/field_pass.hpp"
+#include "vis/render/to_glm.hpp"
 #include "vis/render/view_ray.hpp"
 
 namespace clothlab::vis {
 namespace {
 
-glm::vec3 to_glm(const Vec3d& v) {
-  return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
-}
 Vec3d to_vec(glm::vec3 v) {
   return {double(v.x), double(v.y), double(v.z)};
 }

@@ -15,7 +15,6 @@ namespace clothlab::bench {
 
 namespace {
 
-constexpr double kDisplayStep = 1.0 / 60.0;
 constexpr double kCeiling = 1.0 / 30.0;  // s: the largest step the sweep tries
 
 Spectrum spectrum_of(const Scene& scene) {
@@ -38,7 +37,7 @@ constexpr Stress kStresses[] = {
 Scene stress_scene(const Stress& stress, IntegratorKind kind, int resolution, int substeps) {
   SheetParams p;
   p.resolution = resolution;
-  Scene s = hanging_sheet(p, kind, kDisplayStep);
+  Scene s = hanging_sheet(p, kind, kFrame);
   const std::string name = stress.name;
   if (name == "stiff") s.springs.stiffness = 1e5;
   if (name == "heavy") s.forces.gravity = {0.0, -981.0, 0.0};
