@@ -87,6 +87,12 @@ Collider::Collider(const ColliderSpec& spec, bool build_grid) : spec_(spec) {
 }
 
 ColliderPose Collider::pose(double t) const {
+  ColliderPose p = pose_at(t);
+  p.turned = !p.rotation.isIdentity(0.0);
+  return p;
+}
+
+ColliderPose Collider::pose_at(double t) const {
   ColliderPose p;
   if (spec_.body) {  // a part of the dancing body: its frame is the shape's own
     const RigidState s = spec_.body->state(spec_.body_part, t);

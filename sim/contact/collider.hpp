@@ -19,10 +19,19 @@ struct ColliderPose {
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();          // of the centre, m/s
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // rad/s, world axes
 
+  // Whether rotation is other than the identity (Collider::pose sets it): an unturned frame
+  // skips the products, which with the identity give the same numbers.
+  bool turned = false;
+
   Eigen::Vector3d to_local(const Eigen::Vector3d& x) const {
-    return rotation.transpose() * (x - centre);
+    return turned ? Eigen::Vector3d(rotation.transpose() * (x - centre))
+                  : Eigen::Vector3d(x - centre);
   }
-  Eigen::Vector3d to_world(const Eigen::Vector3d& p) const { return rotation * p + centre; }
+  Eigen::Vector3d to_world(const Eigen::Vector3d& p) const { return rotate(p) + centre; }
+  // A local direction in world axes.
+  Eigen::Vector3d rotate(const Eigen::Vector3d& d) const {
+    return turned ? Eigen::Vector3d(rotation * d) : d;
+  }
   // Velocity of the collider's material at world point x.
   Eigen::Vector3d surface_velocity(const Eigen::Vector3d& x) const {
     return velocity + angular_velocity.cross(x - centre);
@@ -75,6 +84,8 @@ class Collider {
   friend Collider pose_only_collider(const ColliderSpec& spec);
   // build_grid = false: a mesh collider keeps only its box (pose_only_collider).
   Collider(const ColliderSpec& spec, bool build_grid);
+  // pose() before it marks whether the frame is turned.
+  ColliderPose pose_at(double t) const;
 
   ColliderSpec spec_;
   // The built frame: plane: point and the rotation taking +y to the normal; sphere and box:

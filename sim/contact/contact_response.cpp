@@ -34,6 +34,17 @@ bool first_touch(const Collider& c, const V3& p0, const V3& p1, double thickness
   return at.phi < thickness;
 }
 
+// Whether a path from x0 (at the start pose) to x1 (at the end pose) stays farther than `reach`
+// from a plane: its signed distance is linear along the local path, so the ends decide. A path
+// that passes leaves point() with nothing to do (no contact, nothing held); taking it here saves
+// the two changes of frame and the distances that the general test pays for every vertex above
+// a floor. The slack keeps the answer on the safe side of the rounding.
+bool clear_of_plane(const ColliderSweep& sweep, const V3& x0, const V3& x1, double reach) {
+  const double slack = 1e-9 + 1e-6 * reach;
+  return sweep.start.rotation.col(1).dot(x0 - sweep.start.centre) >= reach + slack &&
+         sweep.end.rotation.col(1).dot(x1 - sweep.end.centre) >= reach + slack;
+}
+
 }  // namespace
 
 template <class T>
@@ -167,7 +178,7 @@ bool ContactResponse<T>::point(const V3& x0, V3& x1, V3& v, double h, double& de
   bool changed = false;
   // Left alone but within reach of the shell: held all the same (see hold_reach_).
   const auto note = [&](const ColliderSweep& sweep, const LocalDistance& d, double th) {
-    if (near && d.phi < th + hold_reach_) *near = sweep.end.rotation * d.normal;
+    if (near && d.phi < th + hold_reach_) *near = sweep.end.rotate(d.normal);
   };
   for (std::size_t c = 0; c < colliders_.size(); ++c) {
     const Collider& collider = colliders_[c];
@@ -176,6 +187,9 @@ bool ContactResponse<T>::point(const V3& x0, V3& x1, V3& v, double h, double& de
     const Bounds path{x0.cwiseMin(x1), x0.cwiseMax(x1)};
     if (!path.overlaps(sweep.reach_box)) continue;
     const double th = collider.thickness();
+    if (collider.spec().kind == ColliderKind::plane &&
+        clear_of_plane(sweep, x0, x1, th + hold_reach_))
+      continue;
     if (!path.overlaps(sweep.box)) {  // no contact; only the hold's reach
       if (near) note(sweep, collider.local_distance(sweep.end.to_local(x1)), th);
       continue;
@@ -206,7 +220,7 @@ bool ContactResponse<T>::point(const V3& x0, V3& x1, V3& v, double h, double& de
       }
       if (touch.phi >= th || touch.normal.dot(d0.normal) < 0.0) touch = d0;
     }
-    const V3 n = sweep.end.rotation * touch.normal;
+    const V3 n = sweep.end.rotate(touch.normal);
     normal = n;
     const V3 vc = sweep.end.surface_velocity(x1);
     V3 rel = v - vc;
@@ -231,7 +245,7 @@ bool ContactResponse<T>::point(const V3& x0, V3& x1, V3& v, double h, double& de
     LocalDistance now = collider.local_distance(sweep.end.to_local(x1));
     if (now.phi < th) {
       // Past the middle of a thin shape the nearest face is the far one: keep the contact's side.
-      const V3 out = now.normal.dot(touch.normal) >= 0.0 ? V3(sweep.end.rotation * now.normal) : n;
+      const V3 out = now.normal.dot(touch.normal) >= 0.0 ? sweep.end.rotate(now.normal) : n;
       x1 += (th - now.phi) * out;
       normal = out;
       now = collider.local_distance(sweep.end.to_local(x1));

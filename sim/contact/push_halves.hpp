@@ -38,7 +38,9 @@ struct PushSweeps {
   std::vector<Hit> hits;               // by half, each in pair order
   std::array<std::size_t, 4> begin{};  // where each half's hits begin (and where they end)
   std::vector<std::uint8_t> half;      // per pair of the list: its half (2: across the cut)
-  std::vector<T> cut_values;           // scratch for the median
+  // Per block of pairs: where its hits start in each half, counted from the half's begin.
+  std::vector<std::array<std::size_t, 3>> block_start;
+  std::vector<T> cut_values;  // scratch for the median
 };
 
 // The axis along which the positions spread widest.

@@ -9,6 +9,7 @@
 #include "sim/contact/intersections.hpp"
 #include "sim/contact/pair_spans.hpp"
 #include "sim/contact/primitive_distance.hpp"
+#include "sim/contact/push_test_batch.hpp"
 #include "sim/contact/rigid_fit.hpp"
 #include "sim/core/parallel.hpp"
 #include "sim/core/vec3_eigen.hpp"
@@ -92,6 +93,28 @@ std::array<double, 4> closest_weights(bool edge_edge, const std::array<V3, 4>& x
   }
   const PointTriangleClosest c = closest_point_triangle(x[0], x[1], x[2], x[3]);
   return {1.0, -c.w[0], -c.w[1], -c.w[2]};
+}
+
+// Lane batch.count of the batch: the pair's four vertices at x1 and at x0.
+template <class T>
+void add_lane(PushTestBatch& batch, const std::array<std::int32_t, 4>& v, const Vec3Array<T>& x1,
+              const Vec3Array<T>& x0, std::uint32_t pair) {
+  const int lane = batch.count++;
+  batch.pair[lane] = pair;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const auto i = std::size_t(v[k]);
+    for (int a = 0; a < 3; ++a) {
+      batch.x1[3 * k + std::size_t(a)][lane] = double(x1.axis(a)[i]);
+      batch.x0[3 * k + std::size_t(a)][lane] = double(x0.axis(a)[i]);
+    }
+  }
+}
+
+void copy_lane(PushTestBatch& batch, int from, int to) {
+  for (std::size_t r = 0; r < 12; ++r) {
+    batch.x1[r][to] = batch.x1[r][from];
+    batch.x0[r][to] = batch.x0[r][from];
+  }
 }
 
 [[gnu::always_inline]] inline V3 combine(const std::array<double, 4>& w,
@@ -200,6 +223,7 @@ TriangleContact<T>::TriangleContact(const Model<T>& m, const SolverSpec& spec,
   for (auto& list : push_.moved) list.reserve(m.n);
   push_.hits.reserve(pairs_.capacity());
   push_.half.reserve(pairs_.capacity());
+  push_.block_start.reserve(block_count(pairs_.capacity()));
   push_.cut_values.reserve(m.n);
 }
 
@@ -487,13 +511,17 @@ bool TriangleContact<T>::gather_pairs(int threads) {
   for (const PairPool::List& list : task_lists_) pool_.append_to(list, pairs_);
   flag_.resize(pairs_.size());
   push_.hits.reserve(pairs_.capacity());
+  push_.block_start.reserve(block_count(pairs_.capacity()));
   // The pushes' halves hold until the next collection: each pair's, once.
   const auto& along = xc_.axis(widest_axis(xc_));
   push_.cut_values.assign(along.begin(), along.end());
   const T cut = median_of(push_.cut_values);
   push_.half.resize(pairs_.size());
-  for (std::size_t k = 0; k < pairs_.size(); ++k)
-    push_.half[k] = std::uint8_t(pair_half(pairs_[k].v, along, cut));
+  for_each_block(pairs_.size(), contact_threads(pairs_.size(), threads),
+                 [&](std::size_t b, std::size_t e) {
+                   for (std::size_t k = b; k < e; ++k)
+                     push_.half[k] = std::uint8_t(pair_half(pairs_[k].v, along, cut));
+                 });
   margins_.slack.resize(pairs_.size());
   margins_.max_dist = 0.0;
   for (const Pair& p : pairs_) margins_.max_dist = std::max(margins_.max_dist, double(p.dist));
@@ -695,14 +723,7 @@ bool TriangleContact<T>::push_apart(const Model<T>& m, State<T>& s, const Pair& 
 // changes within the pass, so the try skipped would have found nothing to do.
 template <class T>
 int TriangleContact<T>::push_sweeps(const Model<T>& m, State<T>& s, int threads) {
-  std::array<std::size_t, 3> count{};
-  for (std::size_t k = 0; k < pairs_.size(); ++k)
-    if (flag_[k] == PairFlag::hit) ++count[push_.half[k]];
-  push_.hits.resize(count[0] + count[1] + count[2]);
-  push_.begin = {0, count[0], count[0] + count[1], push_.hits.size()};
-  std::array<std::size_t, 3> next{push_.begin[0], push_.begin[1], push_.begin[2]};
-  for (std::size_t k = 0; k < pairs_.size(); ++k)
-    if (flag_[k] == PairFlag::hit) push_.hits[next[push_.half[k]]++] = {std::uint32_t(k), 0};
+  list_hits(threads);
   const int sweeps = kProximityIterations * span_;
   std::array<int, 3> pushes{};
   run_team(threads_for(push_.hits.size(), threads, kParallelMinPushes) > 1 ? 2 : 1, [&] {
@@ -714,6 +735,37 @@ int TriangleContact<T>::push_sweeps(const Model<T>& m, State<T>& s, int threads)
     }
   });
   return pushes[0] + pushes[1] + pushes[2];
+}
+
+// The pairs flagged hit, by half and in pair order within each: counted per block of pairs and
+// listed from each block's offset, both in parallel (a serial pass over the list was 2 % of the
+// stack on the ball's samples on two threads, the other thread waiting meanwhile).
+template <class T>
+void TriangleContact<T>::list_hits(int threads) {
+  const std::size_t n = pairs_.size(), blocks = block_count(n);
+  const int team = contact_threads(n, threads);
+  push_.block_start.resize(blocks);
+  for_each_block_indexed(n, team, [&](std::size_t b, std::size_t lo, std::size_t hi) {
+    std::array<std::size_t, 3> c{};
+    for (std::size_t k = lo; k < hi; ++k)
+      if (flag_[k] == PairFlag::hit) ++c[push_.half[k]];
+    push_.block_start[b] = c;
+  });
+  std::array<std::size_t, 3> count{};
+  for (std::array<std::size_t, 3>& start : push_.block_start)
+    for (std::size_t h = 0; h < 3; ++h) {
+      const std::size_t here = start[h];
+      start[h] = count[h];
+      count[h] += here;
+    }
+  push_.hits.resize(count[0] + count[1] + count[2]);
+  push_.begin = {0, count[0], count[0] + count[1], push_.hits.size()};
+  for_each_block_indexed(n, team, [&](std::size_t b, std::size_t lo, std::size_t hi) {
+    std::array<std::size_t, 3> next = push_.block_start[b];
+    for (std::size_t h = 0; h < 3; ++h) next[h] += push_.begin[h];
+    for (std::size_t k = lo; k < hi; ++k)
+      if (flag_[k] == PairFlag::hit) push_.hits[next[push_.half[k]]++] = {std::uint32_t(k), 0};
+  });
 }
 
 // Stamps grow along the serial order: sweep after sweep, in each the first half, the second and
@@ -846,13 +898,42 @@ void TriangleContact<T>::flag_proximity(const State<T>& s, int threads) {
     margins_.shrink = strays_.shrink;
     margins_.valid = true;
   }
-  flag_pairs(threads, [&](std::size_t k, const Pair& p) {
-    if (!full && double(margins_.slack[k]) > limit) return PairFlag::clear;
-    const double margin = strays_.margin(p) - thickness_;
-    if (full) margins_.slack[k] = std::nextafter(float(margin), -INFINITY);
-    if (margin > 0.0) return PairFlag::clear;
-    return needs_push(p, s.pos) ? PairFlag::hit : PairFlag::near;
-  });
+  // The pairs the margins do not clear are tested in batches of one kind, one vector lane a pair
+  // (sim/contact/push_test_batch.hpp), and those it is unsure of one by one.
+  const auto run = [&](PushTestBatch& batch, bool edge_edge) {
+    if (batch.count == 0) return;
+    for (int i = batch.count; i < PushTestBatch::kLanes; ++i) copy_lane(batch, 0, i);
+    std::array<PushVerdict, PushTestBatch::kLanes> verdict;
+    if (edge_edge)
+      edge_edge_push_tests(batch, thickness_, verdict.data());
+    else
+      point_triangle_push_tests(batch, thickness_, verdict.data());
+    for (int i = 0; i < batch.count; ++i) {
+      const std::size_t k = batch.pair[i];
+      const bool hit = verdict[std::size_t(i)] == PushVerdict::unsure
+                           ? needs_push(pairs_[k], s.pos)
+                           : verdict[std::size_t(i)] == PushVerdict::push;
+      flag_[k] = hit ? PairFlag::hit : PairFlag::near;
+    }
+    batch.count = 0;
+  };
+  for_each_block(pairs_.size(), contact_threads(pairs_.size(), threads),
+                 [&](std::size_t b, std::size_t e) {
+                   std::array<PushTestBatch, 2> batches;  // point-triangle, edge-edge
+                   for (std::size_t k = b; k < e; ++k) {
+                     const Pair& p = pairs_[k];
+                     flag_[k] = PairFlag::clear;
+                     if (!full && double(margins_.slack[k]) > limit) continue;
+                     const double margin = strays_.margin(p) - thickness_;
+                     if (full) margins_.slack[k] = std::nextafter(float(margin), -INFINITY);
+                     if (margin > 0.0) continue;
+                     PushTestBatch& batch = batches[p.edge_edge ? 1 : 0];
+                     add_lane(batch, p.v, s.pos, x0_, std::uint32_t(k));
+                     if (batch.count == PushTestBatch::kLanes) run(batch, p.edge_edge);
+                   }
+                   run(batches[0], false);
+                   run(batches[1], true);
+                 });
 }
 
 template <class T>

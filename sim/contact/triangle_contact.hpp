@@ -128,15 +128,15 @@ class TriangleContact {
   enum class Gathered { all, tangle, out_of_room };
   template <class Cull>
   Gathered run_pieces(int threads, std::size_t bound, const Cull& cull);
-  // These two return false when the pool has no room left.
-  bool add_pairs(int ta, int tb, PairPool::List& out);
-  bool keep_if_close(Pair p, PairPool::List& out);
+  bool add_pairs(int ta, int tb, PairPool::List& out);  // false: the pool has no room left
+  bool keep_if_close(Pair p, PairPool::List& out);      // the same
   void feature_boxes(int threads);
   bool needs_push(const Pair& p, const Vec3Array<T>& x) const;
   // Pushes the pair apart if it needs it, stamping its vertices with `stamp` and listing those
   // pushed for the first time in this pass in `moved`; whether it did.
   bool push_apart(const Model<T>& m, State<T>& s, const Pair& p, std::uint64_t stamp,
                   std::vector<std::int32_t>& moved);
+  void list_hits(int threads);  // push_.hits and push_.begin from the flags
   // The sweeps of pushes over the pairs flagged hit; returns the pushes.
   int push_sweeps(const Model<T>& m, State<T>& s, int threads);
   // One sweep over the hits of one half (or across the cut); returns its pushes.
