@@ -60,11 +60,12 @@ struct StrayBounds {
   Eigen::Matrix3d rotation1 = Eigen::Matrix3d::Identity();
   double shrink = 1.0;
 
-  float moved_by(std::int32_t v) const {
+  [[gnu::always_inline]] float moved_by(std::int32_t v) const {
     return std::max(dev0[std::size_t(v)], dev1[std::size_t(v)]);
   }
   // A lower bound on the pair's distance over the whole substep.
-  double margin(const ContactPair& p) const {
+  // (Inlined: the proximity pass and the fail-safe call it for every pair, every pass.)
+  [[gnu::always_inline]] double margin(const ContactPair& p) const {
     const float first =
         p.edge_edge ? std::max(moved_by(p.v[0]), moved_by(p.v[1])) : moved_by(p.v[0]);
     const float other =

@@ -741,16 +741,18 @@ int TriangleContact<T>::push_sweeps(const Model<T>& m, State<T>& s, int threads)
 // listed from each block's offset, both in parallel (a serial pass over the list was 2 % of the
 // stack on the ball's samples on two threads, the other thread waiting meanwhile).
 template <class T>
+void TriangleContact<T>::count_hits(std::size_t block, std::size_t lo, std::size_t hi) {
+  std::array<std::size_t, 3> c{};
+  for (std::size_t k = lo; k < hi; ++k)
+    if (flag_[k] == PairFlag::hit) ++c[push_.half[k]];
+  push_.block_start[block] = c;
+}
+
+// After flag_proximity, which counted each block's hits (count_hits) while they were in cache.
+template <class T>
 void TriangleContact<T>::list_hits(int threads) {
-  const std::size_t n = pairs_.size(), blocks = block_count(n);
+  const std::size_t n = pairs_.size();
   const int team = contact_threads(n, threads);
-  push_.block_start.resize(blocks);
-  for_each_block_indexed(n, team, [&](std::size_t b, std::size_t lo, std::size_t hi) {
-    std::array<std::size_t, 3> c{};
-    for (std::size_t k = lo; k < hi; ++k)
-      if (flag_[k] == PairFlag::hit) ++c[push_.half[k]];
-    push_.block_start[b] = c;
-  });
   std::array<std::size_t, 3> count{};
   for (std::array<std::size_t, 3>& start : push_.block_start)
     for (std::size_t h = 0; h < 3; ++h) {
@@ -917,23 +919,25 @@ void TriangleContact<T>::flag_proximity(const State<T>& s, int threads) {
     }
     batch.count = 0;
   };
-  for_each_block(pairs_.size(), contact_threads(pairs_.size(), threads),
-                 [&](std::size_t b, std::size_t e) {
-                   std::array<PushTestBatch, 2> batches;  // point-triangle, edge-edge
-                   for (std::size_t k = b; k < e; ++k) {
-                     const Pair& p = pairs_[k];
-                     flag_[k] = PairFlag::clear;
-                     if (!full && double(margins_.slack[k]) > limit) continue;
-                     const double margin = strays_.margin(p) - thickness_;
-                     if (full) margins_.slack[k] = std::nextafter(float(margin), -INFINITY);
-                     if (margin > 0.0) continue;
-                     PushTestBatch& batch = batches[p.edge_edge ? 1 : 0];
-                     add_lane(batch, p.v, s.pos, x0_, std::uint32_t(k));
-                     if (batch.count == PushTestBatch::kLanes) run(batch, p.edge_edge);
-                   }
-                   run(batches[0], false);
-                   run(batches[1], true);
-                 });
+  push_.block_start.resize(block_count(pairs_.size()));
+  for_each_block_indexed(pairs_.size(), contact_threads(pairs_.size(), threads),
+                         [&](std::size_t block, std::size_t b, std::size_t e) {
+                           std::array<PushTestBatch, 2> batches;  // point-triangle, edge-edge
+                           for (std::size_t k = b; k < e; ++k) {
+                             const Pair& p = pairs_[k];
+                             flag_[k] = PairFlag::clear;
+                             if (!full && double(margins_.slack[k]) > limit) continue;
+                             const double margin = strays_.margin(p) - thickness_;
+                             if (full) margins_.slack[k] = std::nextafter(float(margin), -INFINITY);
+                             if (margin > 0.0) continue;
+                             PushTestBatch& batch = batches[p.edge_edge ? 1 : 0];
+                             add_lane(batch, p.v, s.pos, x0_, std::uint32_t(k));
+                             if (batch.count == PushTestBatch::kLanes) run(batch, p.edge_edge);
+                           }
+                           run(batches[0], false);
+                           run(batches[1], true);
+                           count_hits(block, b, e);
+                         });
 }
 
 template <class T>

@@ -103,8 +103,7 @@ class TriangleContact {
   bool recollect_if_needed(const State<T>& s, int threads, bool& flag);
   // Whether every flat patch of both trees is still flat over the motion x0_ -> x.
   bool still_flat(const Vec3Array<T>& x, int threads);
-  // Whether the pairs need no check against the skin (one flat patch covers every triangle).
-  bool all_flat() const { return flat_.covers_all(); }
+  bool all_flat() const { return flat_.covers_all(); }  // one flat patch covers every triangle
   // Every free vertex back to x0 with zero velocity; returns how many.
   int return_all(const Model<T>& m, State<T>& s);
   bool undo(const Model<T>& m, State<T>& s);
@@ -136,7 +135,8 @@ class TriangleContact {
   // pushed for the first time in this pass in `moved`; whether it did.
   bool push_apart(const Model<T>& m, State<T>& s, const Pair& p, std::uint64_t stamp,
                   std::vector<std::int32_t>& moved);
-  void list_hits(int threads);  // push_.hits and push_.begin from the flags
+  void count_hits(std::size_t block, std::size_t lo, std::size_t hi);  // of a block of pairs
+  void list_hits(int threads);  // push_.hits and push_.begin from the flags and counts
   // The sweeps of pushes over the pairs flagged hit; returns the pushes.
   int push_sweeps(const Model<T>& m, State<T>& s, int threads);
   // One sweep over the hits of one half (or across the cut); returns its pushes.
