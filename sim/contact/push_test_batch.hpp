@@ -1,13 +1,13 @@
 // Triangle contact's proximity test (does a pair need a push: closer than the thickness now, or
 // on the other side than at the pass's start; triangle_contact.cpp, needs_push) for a batch of
-// pairs of one kind at once, one vector lane a pair (docs/contact.md section 7, "Vector loops").
-// The closest points follow the same region tests as sim/contact/primitive_distance.hpp (Ericson
-// 2005, sections 5.1.5 and 5.1.9), every region computed and the answer selected, so that the
-// loop has no branch. Its sums run in another order than the scalar test's, so it answers only
-// where the scalar test's answer cannot differ: a pair within a tolerance of either bound, or
-// whose closest points are ill-conditioned (a sliver triangle, nearly parallel edges, a
-// degenerate side), is `unsure` and left to the scalar test. The flags are then the scalar
-// test's, bit for bit, and the traces the same bytes.
+// pairs of one kind, one vector lane a pair (docs/contact.md section 7, "The proximity test in
+// vector lanes"). The closest points follow the same region tests as
+// sim/contact/primitive_distance.hpp (Ericson 2005, sections 5.1.5 and 5.1.9), every region
+// computed and the answer selected, without a branch. Its sums run in another order than the
+// scalar test's, so it answers only where the scalar test's answer cannot differ: a pair within
+// a tolerance of either bound, or whose closest points are ill-conditioned (a sliver triangle,
+// nearly parallel edges, a degenerate side), is `unsure` and left to the scalar test. The flags
+// are then the scalar test's, bit for bit, and the traces the same bytes.
 #pragma once
 
 #include <cstdint>
