@@ -4,6 +4,8 @@
 // contact response works relative to.
 #pragma once
 
+#include <cassert>
+
 #include <Eigen/Geometry>
 #include <memory>
 
@@ -19,17 +21,20 @@ struct ColliderPose {
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();          // of the centre, m/s
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // rad/s, world axes
 
-  // Whether rotation is other than the identity (Collider::pose sets it): an unturned frame
-  // skips the products, which with the identity give the same numbers.
+  // Whether rotation is other than the identity: an unturned frame skips the products, which
+  // with the identity give the same numbers. Whoever sets rotation sets it (Collider::pose);
+  // debug builds check.
   bool turned = false;
 
   Eigen::Vector3d to_local(const Eigen::Vector3d& x) const {
+    assert(turned || rotation.isIdentity(0.0));
     return turned ? Eigen::Vector3d(rotation.transpose() * (x - centre))
                   : Eigen::Vector3d(x - centre);
   }
   Eigen::Vector3d to_world(const Eigen::Vector3d& p) const { return rotate(p) + centre; }
   // A local direction in world axes.
   Eigen::Vector3d rotate(const Eigen::Vector3d& d) const {
+    assert(turned || rotation.isIdentity(0.0));
     return turned ? Eigen::Vector3d(rotation * d) : d;
   }
   // Velocity of the collider's material at world point x.
