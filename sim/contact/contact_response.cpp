@@ -34,17 +34,6 @@ bool first_touch(const Collider& c, const V3& p0, const V3& p1, double thickness
   return at.phi < thickness;
 }
 
-// Whether a path from x0 (at the start pose) to x1 (at the end pose) stays farther than `reach`
-// from a plane: its signed distance is linear along the local path, so the ends decide. A path
-// that passes leaves point() with nothing to do (no contact, nothing held); taking it here saves
-// the two changes of frame and the distances that the general test pays for every vertex above
-// a floor. The slack keeps the answer on the safe side of the rounding.
-bool clear_of_plane(const ColliderSweep& sweep, const V3& x0, const V3& x1, double reach) {
-  const double slack = 1e-9 + 1e-6 * reach;
-  return sweep.start.rotation.col(1).dot(x0 - sweep.start.centre) >= reach + slack &&
-         sweep.end.rotation.col(1).dot(x1 - sweep.end.centre) >= reach + slack;
-}
-
 }  // namespace
 
 template <class T>
@@ -187,9 +176,16 @@ bool ContactResponse<T>::point(const V3& x0, V3& x1, V3& v, double h, double& de
     const Bounds path{x0.cwiseMin(x1), x0.cwiseMax(x1)};
     if (!path.overlaps(sweep.reach_box)) continue;
     const double th = collider.thickness();
-    if (collider.spec().kind == ColliderKind::plane &&
-        clear_of_plane(sweep, x0, x1, th + hold_reach_))
-      continue;
+    // A plane's box is unbounded: its own test of the path's box, as respond()'s blocks take it,
+    // at both poses. A path that stays farther than the shell and the hold's reach leaves
+    // nothing to do (no contact, nothing held) and skips the changes of frame and distances
+    // below, which every vertex above a floor paid; the slack keeps it clear of rounding.
+    if (collider.spec().kind == ColliderKind::plane) {
+      const double beyond = th + hold_reach_ + 1e-9 + 1e-6 * (th + hold_reach_);
+      if (!collider.reaches(path, sweep.start, beyond) &&
+          !collider.reaches(path, sweep.end, beyond))
+        continue;
+    }
     if (!path.overlaps(sweep.box)) {  // no contact; only the hold's reach
       if (near) note(sweep, collider.local_distance(sweep.end.to_local(x1)), th);
       continue;

@@ -133,7 +133,7 @@ int FeatureContacts<T>::respond(const std::vector<Collider>& colliders,
         const V3& local = f.points[std::size_t(i)];
         if ((local.array() < lo.array()).any() || (local.array() > hi.array()).any()) return;
         const Feature feature{sweep.start.to_world(local), sweep.end.to_world(local),
-                              sweep.end.rotation * f.outward[std::size_t(i)]};
+                              sweep.end.rotate(f.outward[std::size_t(i)])};
         if (touch(colliders[c], sweep.end, feature, grow, t, start_normal, m, start, s,
                   [&] { return buried(feature.end, c, colliders, sweeps); })) {
           ++contacts;
